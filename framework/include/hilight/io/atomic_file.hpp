@@ -1,0 +1,15 @@
+#pragma once
+/// Output files appear whole or not at all: written to a temporary name
+/// beside the target, renamed on success, removed on failure.
+#include <filesystem>
+#include <functional>
+
+namespace hilight {
+
+/// Calls write(temp_path), then renames temp_path to `path`. On any exception
+/// the temporary is removed and the exception continues (an unwritable folder
+/// becomes an InputError naming `path`).
+void write_atomically(const std::filesystem::path& path,
+                      const std::function<void(const std::filesystem::path& temp)>& write);
+
+} // namespace hilight

@@ -1,0 +1,24 @@
+#pragma once
+/// Loading scenes through assimp (OBJ+MTL, PLY, glTF/GLB and the rest).
+#include "hilight/scene.hpp"
+
+#include <filesystem>
+
+namespace hilight {
+
+struct SceneLoadOptions {
+  /// Longest edge allowed after tessellation, in scene units; <= 0 picks
+  /// kDefaultEdgeFraction of the scene diagonal.
+  float max_edge = 0.f;
+};
+
+constexpr float kDefaultEdgeFraction = 1.f / 40.f;
+
+/// Loads, validates and tessellates. Throws InputError naming the file.
+Scene load_scene(const std::filesystem::path& path, const SceneLoadOptions& options = {});
+
+/// Validates and tessellates an in-memory mesh (scene builders, tests); the
+/// same checks and the same deterministic tessellation as load_scene.
+Scene finish_scene(Scene raw, const SceneLoadOptions& options);
+
+} // namespace hilight

@@ -1,0 +1,75 @@
+#pragma once
+/// Finds, checks and loads plugin modules, and creates plugins by name.
+/// Modules are never unloaded: objects they created may outlive any scope.
+#include "hilight/frontend.hpp"
+#include "hilight/properties.hpp"
+#include "hilight/renderer.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hilight {
+
+using RendererFactory = std::function<std::unique_ptr<Renderer>(const Properties&)>;
+/// Returns "" when the plugin can run here, else why not (e.g. "no Vulkan device").
+using ProbeFunction = std::function<std::string()>;
+using FrontendFactory = std::function<std::unique_ptr<Frontend>()>;
+
+struct ModuleRecord {
+  std::filesystem::path path;
+  std::string kind, name, version, description;
+  bool loaded = false;
+  std::string problem;  ///< why it did not load (empty when loaded)
+
+  RendererFactory create_renderer;
+  ProbeFunction probe;
+  FrontendFactory create_frontend;
+};
+
+/// Handed to a module's register function; binds what it registers to its record.
+class PluginRegistrar {
+public:
+  explicit PluginRegistrar(ModuleRecord& record) : m_record(record) {}
+  void renderer(RendererFactory create, ProbeFunction probe = {});
+  void frontend(FrontendFactory create);
+
+private:
+  ModuleRecord& m_record;
+};
+
+class Registry {
+public:
+  /// lib/hilight beside the executable's bin/, then every entry of
+  /// HILIGHT_PLUGIN_PATH (colon-separated).
+  static std::vector<std::filesystem::path> default_search_dirs(const std::filesystem::path& executable);
+
+  /// Loads every hilight-*.so in `dir` (sorted by name, so the order is stable).
+  void load_directory(const std::filesystem::path& dir);
+  /// Loads one module; failures are recorded, never thrown.
+  const ModuleRecord& load_module(const std::filesystem::path& file);
+
+  const std::vector<std::unique_ptr<ModuleRecord>>& modules() const { return m_modules; }
+  const ModuleRecord* find(const std::string& kind, const std::string& name) const;
+  std::vector<std::string> names(const std::string& kind) const;
+
+  /// Why the renderer cannot run here ("" if it can); throws on an unknown name.
+  std::string renderer_unavailable_reason(const std::string& name) const;
+  /// Creates a renderer; InputError for an unknown or unavailable one, or an
+  /// option it did not read.
+  std::unique_ptr<Renderer> create_renderer(const std::string& name, const Properties& properties) const;
+
+  /// The frontend that owns `command`, created on first use; nullptr if none.
+  Frontend* frontend_for(const std::string& command);
+  /// All commands of all frontends, for help text.
+  std::vector<CommandInfo> all_commands();
+
+private:
+  const ModuleRecord& require(const std::string& kind, const std::string& name) const;
+  std::vector<std::unique_ptr<ModuleRecord>> m_modules;
+  std::vector<std::pair<const ModuleRecord*, std::unique_ptr<Frontend>>> m_frontends;
+};
+
+} // namespace hilight

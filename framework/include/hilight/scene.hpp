@@ -1,0 +1,42 @@
+#pragma once
+/// The immutable scene every stage works on: a tessellated triangle mesh with
+/// per-vertex normals and one diffuse albedo per triangle (from its material).
+#include "hilight/math.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hilight {
+
+struct Material {
+  std::string name;
+  Rgb albedo{0.8f};
+};
+
+struct Scene {
+  std::string source;                          ///< file it was loaded from (for messages)
+  std::vector<Vec3> positions;                 ///< per vertex
+  std::vector<Vec3> normals;                   ///< per vertex, unit length
+  std::vector<std::array<uint32_t, 3>> triangles;
+  std::vector<uint32_t> triangle_material;     ///< per triangle, index into materials
+  std::vector<Material> materials;
+  Bounds bounds;
+
+  size_t input_vertex_count = 0;               ///< before tessellation
+  size_t input_triangle_count = 0;
+  float max_edge = 0.f;                        ///< tessellation limit used
+
+  float diagonal() const { return bounds.diagonal(); }
+  Rgb triangle_albedo(size_t t) const { return materials[triangle_material[t]].albedo; }
+  /// Albedo of a vertex: that of the first triangle using it (vertices are not
+  /// shared across materials after loading, so this is unambiguous in practice).
+  std::vector<Rgb> vertex_albedo() const;
+  /// Unit geometric normal of triangle t (from its winding).
+  Vec3 face_normal(size_t t) const;
+  /// Recomputes bounds from positions.
+  void update_bounds();
+};
+
+} // namespace hilight

@@ -1,0 +1,25 @@
+#pragma once
+/// Scenes built in code, shared by tests, benchmarks and the bundled demo
+/// (OSPRay's pattern): the same scene everywhere, no files to drift.
+/// Builders return raw meshes; pass them through finish_scene() to validate
+/// and tessellate exactly as a loaded file would be.
+#include "hilight/scene.hpp"
+
+namespace hilight::builders {
+
+/// Adds an axis-aligned box with its own material. `inward` winds the faces so
+/// their normals point into the box (a room); otherwise outward (an object).
+void add_box(Scene& scene, const Vec3& lo, const Vec3& hi, const Rgb& albedo, bool inward, const std::string& name);
+/// Adds a quad (two triangles) with corners a, b, c, d in order; normal from the winding.
+void add_quad(Scene& scene, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Rgb& albedo,
+              const std::string& name);
+
+/// A square floor in y = 0, centred at the origin, normal +Y.
+Scene plane(float half_size, const Rgb& albedo = Rgb(0.8f));
+/// A closed box room [0,size], normals inward.
+Scene box_room(const Vec3& size, const Rgb& albedo = Rgb(0.8f));
+/// A 6 x 3 x 5 room with a table, a cabinet, a bench and a pillar: the
+/// interior test scene (cf. the paper's Table 1), and the bundled demo.
+Scene furnished_room();
+
+} // namespace hilight::builders

@@ -1,0 +1,53 @@
+// The `hilight` launcher: loads every plugin module, then hands the command to
+// the frontend module that owns it. It knows no command itself.
+#include "hilight/error.hpp"
+#include "hilight/registry.hpp"
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+
+namespace {
+
+void print_usage(hilight::Registry& registry) {
+  std::cout << "usage: hilight <command> [options]   (hilight <command> --help for its options)\n\ncommands:\n";
+  for (const auto& c : registry.all_commands()) std::printf("  %-10s %s\n", c.name.c_str(), c.summary.c_str());
+  if (registry.all_commands().empty())
+    std::cout << "  (no frontend module found; is lib/hilight/ beside bin/, or HILIGHT_PLUGIN_PATH set?)\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  hilight::Registry registry;
+  for (const auto& dir : hilight::Registry::default_search_dirs("/proc/self/exe")) registry.load_directory(dir);
+
+  std::string command = argc > 1 ? argv[1] : "";
+  if (command.empty() || command == "--help" || command == "-h" || command == "help") {
+    print_usage(registry);
+    return command.empty() ? hilight::kExitInputError : 0;
+  }
+  if (command == "--version") {
+    std::cout << "hilight 0.1.0\n";
+    return 0;
+  }
+  try {
+    hilight::Frontend* frontend = registry.frontend_for(command);
+    if (!frontend) {
+      std::cerr << "hilight: unknown command '" << command << "' (hilight --help lists them)\n";
+      return hilight::kExitInputError;
+    }
+    std::vector<std::string> args(argv + 2, argv + argc);
+    return frontend->run(command, args, registry);
+  } catch (const hilight::InputError& e) {
+    std::cerr << "hilight: error: " << e.what() << "\n";
+    return hilight::kExitInputError;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "hilight: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "hilight: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

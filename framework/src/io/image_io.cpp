@@ -1,0 +1,111 @@
+#include "hilight/io/image_io.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/io/atomic_file.hpp"
+
+#include <ImfArray.h>
+#include <ImfRgbaFile.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <png.h>
+
+namespace hilight {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+float srgb_encode(float linear) {
+  linear = std::clamp(linear, 0.f, 1.f);
+  return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.f / 2.4f) - 0.055f;
+}
+
+float auto_exposure(const Image& image) {
+  std::vector<float> lum;
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    if (image.covered[i]) lum.push_back(luminance(image.pixels[i]));
+  if (lum.empty()) return 1.f;
+  size_t k = std::min(lum.size() - 1, size_t(0.99 * double(lum.size())));
+  std::nth_element(lum.begin(), lum.begin() + k, lum.end());
+  return lum[k] > 0.f ? 0.9f / lum[k] : 1.f;
+}
+
+void write_png(const fs::path& path, const Image& image, float exposure) {
+  if (exposure <= 0.f) exposure = auto_exposure(image);
+  std::vector<unsigned char> rgb(size_t(image.width) * image.height * 3);
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    Rgb c = image.covered[i] ? image.pixels[i] * exposure : Rgb(0.12f); // background: dark grey, untouched by exposure
+    for (int k = 0; k < 3; ++k) rgb[3 * i + k] = (unsigned char)std::lround(255.f * srgb_encode(c[k]));
+  }
+  FILE* fp = std::fopen(path.c_str(), "wb");
+  if (!fp) throw InputError(path.string(), "cannot open for writing");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!png || !info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    std::fclose(fp);
+    throw InputError(path.string(), "PNG encoding failed");
+  }
+  png_init_io(png, fp);
+  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height; ++y) png_write_row(png, &rgb[size_t(y) * image.width * 3]);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  if (std::fclose(fp) != 0) throw InputError(path.string(), "write failed");
+}
+
+void write_exr(const fs::path& path, const Image& image) {
+  std::vector<Imf::Rgba> px(image.pixels.size());
+  for (size_t i = 0; i < px.size(); ++i) {
+    const Rgb& c = image.pixels[i];
+    px[i] = Imf::Rgba(c.r, c.g, c.b, image.covered[i] ? 1.f : 0.f);
+  }
+  try {
+    Imf::RgbaOutputFile file(path.c_str(), image.width, image.height, Imf::WRITE_RGBA);
+    file.setFrameBuffer(px.data(), 1, size_t(image.width));
+    file.writePixels(image.height);
+  } catch (const std::exception& e) {
+    throw InputError(path.string(), std::string("OpenEXR: ") + e.what());
+  }
+}
+
+} // namespace
+
+void write_image(const fs::path& path, const Image& image, float exposure) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  if (ext != ".png" && ext != ".exr") throw InputError(path.string(), "unknown image type (use .png or .exr)");
+  write_atomically(path, [&](const fs::path& temp) {
+    if (ext == ".png") write_png(temp, image, exposure);
+    else write_exr(temp, image);
+  });
+}
+
+Image read_exr(const fs::path& path) {
+  try {
+    Imf::RgbaInputFile file(path.c_str());
+    Imath::Box2i dw = file.dataWindow();
+    int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+    Imf::Array2D<Imf::Rgba> px(h, w);
+    file.setFrameBuffer(&px[0][0] - dw.min.x - dw.min.y * w, 1, size_t(w));
+    file.readPixels(dw.min.y, dw.max.y);
+    Image image(w, h);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const Imf::Rgba& p = px[y][x];
+        image.at(x, y) = Rgb(float(p.r), float(p.g), float(p.b));
+        image.covered[size_t(y) * w + x] = float(p.a) > 0.5f;
+      }
+    return image;
+  } catch (const std::exception& e) {
+    throw InputError(path.string(), std::string("cannot read OpenEXR: ") + e.what());
+  }
+}
+
+} // namespace hilight

@@ -1,0 +1,120 @@
+#include "hilight/io/lights_json.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/io/atomic_file.hpp"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace hilight {
+
+using nlohmann::json;
+
+namespace {
+
+Vec3 read_vec3(const json& obj, const char* key, const std::string& where) {
+  if (!obj.contains(key)) throw InputError(where + ": missing \"" + key + "\"");
+  const json& v = obj.at(key);
+  if (!v.is_array() || v.size() != 3) throw InputError(where + ": \"" + key + "\" must be an array of 3 numbers");
+  Vec3 out;
+  for (int i = 0; i < 3; ++i) {
+    if (!v[i].is_number()) throw InputError(where + ": \"" + key + "\" must be an array of 3 numbers");
+    out[i] = v[i].get<float>();
+    if (!std::isfinite(out[i])) throw InputError(where + ": \"" + key + "\" is not finite");
+  }
+  return out;
+}
+
+float read_number(const json& obj, const char* key, float fallback, const std::string& where) {
+  if (!obj.contains(key)) return fallback;
+  if (!obj.at(key).is_number()) throw InputError(where + ": \"" + key + "\" must be a number");
+  float v = obj.at(key).get<float>();
+  if (!std::isfinite(v)) throw InputError(where + ": \"" + key + "\" is not finite");
+  return v;
+}
+
+Light read_light(const json& obj, const std::string& where) {
+  if (!obj.is_object()) throw InputError(where + ": must be an object");
+  static const char* kKnown[] = {"type", "position", "intensity", "direction", "cutoff_deg", "falloff_deg", "name"};
+  for (const auto& [key, value] : obj.items())
+    if (std::find(std::begin(kKnown), std::end(kKnown), key) == std::end(kKnown))
+      throw InputError(where + ": unknown field \"" + key + "\"");
+  std::string type = obj.value("type", std::string("point"));
+  Light light;
+  light.position = read_vec3(obj, "position", where);
+  light.intensity = read_vec3(obj, "intensity", where);
+  if (glm::any(glm::lessThan(light.intensity, Vec3(0.f)))) throw InputError(where + ": negative intensity");
+  if (type == "point") {
+    light.type = LightType::Point;
+    if (obj.contains("direction") || obj.contains("cutoff_deg") || obj.contains("falloff_deg"))
+      throw InputError(where + ": a point light has no direction or cone (use \"type\":\"spot\")");
+  } else if (type == "spot") {
+    light.type = LightType::Spot;
+    Vec3 dir = read_vec3(obj, "direction", where);
+    if (!(glm::length(dir) > 1e-12f)) throw InputError(where + ": zero-length spot direction");
+    light.direction = glm::normalize(dir);
+    light.cutoff_deg = read_number(obj, "cutoff_deg", -1.f, where);
+    if (!obj.contains("cutoff_deg")) throw InputError(where + ": missing \"cutoff_deg\"");
+    if (!(light.cutoff_deg > 0.f && light.cutoff_deg < 180.f)) throw InputError(where + ": cutoff_deg must be in (0, 180)");
+    light.falloff_deg = read_number(obj, "falloff_deg", 0.f, where);
+    if (light.falloff_deg < 0.f || light.falloff_deg > light.cutoff_deg)
+      throw InputError(where + ": falloff_deg must be in [0, cutoff_deg]");
+  } else {
+    throw InputError(where + ": unknown light type \"" + type + "\" (point or spot)");
+  }
+  return light;
+}
+
+} // namespace
+
+Lighting parse_lights_json(const std::string& text, const std::string& source) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError(source, std::string("malformed JSON: ") + e.what());
+  }
+  if (!doc.is_object() || !doc.contains("lights") || !doc["lights"].is_array())
+    throw InputError(source, "expected an object with a \"lights\" array");
+  Lighting lights;
+  const json& arr = doc["lights"];
+  for (size_t i = 0; i < arr.size(); ++i) lights.push_back(read_light(arr[i], source + ": light " + std::to_string(i)));
+  return lights;
+}
+
+Lighting read_lights_json(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "cannot open lights file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_lights_json(ss.str(), path.string());
+}
+
+std::string lights_to_json(const Lighting& lights) {
+  json arr = json::array();
+  for (const auto& l : lights) {
+    json o;
+    o["type"] = to_string(l.type);
+    o["position"] = {l.position.x, l.position.y, l.position.z};
+    if (l.type == LightType::Spot) {
+      o["direction"] = {l.direction.x, l.direction.y, l.direction.z};
+      o["cutoff_deg"] = l.cutoff_deg;
+      o["falloff_deg"] = l.falloff_deg;
+    }
+    o["intensity"] = {l.intensity.r, l.intensity.g, l.intensity.b};
+    arr.push_back(o);
+  }
+  return json{{"lights", arr}}.dump(2) + "\n";
+}
+
+void write_lights_json(const std::filesystem::path& path, const Lighting& lights) {
+  std::string text = lights_to_json(lights);
+  write_atomically(path, [&](const std::filesystem::path& temp) {
+    std::ofstream out(temp, std::ios::binary);
+    out << text;
+    if (!out) throw InputError(path.string(), "write failed");
+  });
+}
+
+} // namespace hilight

@@ -1,0 +1,41 @@
+#include "hilight/io/ply.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/io/atomic_file.hpp"
+#include "hilight/scene.hpp"
+
+#include <bit>
+#include <fstream>
+
+namespace hilight {
+
+static_assert(std::endian::native == std::endian::little, "PLY writer assumes a little-endian host");
+
+void write_illuminated_ply(const std::filesystem::path& path, const Scene& scene, const std::vector<Rgb>& radiance) {
+  if (radiance.size() != scene.positions.size()) throw std::logic_error("write_illuminated_ply: one colour per vertex expected");
+  write_atomically(path, [&](const std::filesystem::path& temp) {
+    std::ofstream out(temp, std::ios::binary);
+    out << "ply\nformat binary_little_endian 1.0\ncomment hilight illuminated scene: linear outgoing radiance\n"
+        << "element vertex " << scene.positions.size() << "\n"
+        << "property float x\nproperty float y\nproperty float z\n"
+        << "property float nx\nproperty float ny\nproperty float nz\n"
+        << "property float red\nproperty float green\nproperty float blue\n"
+        << "element face " << scene.triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+    std::vector<float> row(9);
+    for (size_t i = 0; i < scene.positions.size(); ++i) {
+      const Vec3 &p = scene.positions[i], &n = scene.normals[i];
+      const Rgb& c = radiance[i];
+      float values[9] = {p.x, p.y, p.z, n.x, n.y, n.z, c.r, c.g, c.b};
+      out.write(reinterpret_cast<const char*>(values), sizeof(values));
+    }
+    for (const auto& t : scene.triangles) {
+      unsigned char count = 3;
+      int32_t idx[3] = {int32_t(t[0]), int32_t(t[1]), int32_t(t[2])};
+      out.write(reinterpret_cast<const char*>(&count), 1);
+      out.write(reinterpret_cast<const char*>(idx), sizeof(idx));
+    }
+    if (!out) throw InputError(path.string(), "write failed");
+  });
+}
+
+} // namespace hilight

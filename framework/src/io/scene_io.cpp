@@ -1,0 +1,149 @@
+#include "hilight/io/scene_io.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/io/tessellate.hpp"
+
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <cmath>
+#include <fstream>
+
+namespace hilight {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Scenes with more than this many triangles after tessellation are refused
+// rather than exhausting memory on a too-small --max-edge.
+constexpr size_t kMaxTriangles = 20'000'000;
+
+Rgb material_albedo(const aiMaterial& mat) {
+  aiString name;
+  mat.Get(AI_MATKEY_NAME, name);
+  aiColor4D c;
+  // glTF's baseColorFactor first, then the classic diffuse colour (OBJ Kd).
+  if (mat.Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || mat.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS) {
+    // Assimp invents "DefaultMaterial" for files without materials: treat as none.
+    if (std::string(name.C_Str()) == AI_DEFAULT_MATERIAL_NAME) return Rgb(0.8f);
+    Rgb albedo(c.r, c.g, c.b);
+    if (!is_finite(albedo)) return Rgb(0.8f);
+    return glm::clamp(albedo, Rgb(0.f), Rgb(1.f));
+  }
+  return Rgb(0.8f);
+}
+
+void validate(const Scene& scene, const std::string& file) {
+  if (scene.triangles.empty()) throw InputError(file, "the scene has no triangles");
+  size_t bad = 0;
+  for (const auto& p : scene.positions) bad += !is_finite(p);
+  if (bad) throw InputError(file, std::to_string(bad) + " vertices have NaN or infinite coordinates");
+  for (const auto& t : scene.triangles)
+    for (uint32_t v : t)
+      if (v >= scene.positions.size()) throw InputError(file, "a face refers to vertex " + std::to_string(v) + " of " + std::to_string(scene.positions.size()));
+  if (!(scene.diagonal() > 0.f)) throw InputError(file, "the scene has zero extent");
+}
+
+// Drops zero-area triangles and fills missing or degenerate normals from faces.
+void clean(Scene& scene) {
+  std::vector<std::array<uint32_t, 3>> tris;
+  std::vector<uint32_t> mats;
+  std::vector<Vec3> acc(scene.positions.size(), Vec3(0.f));
+  for (size_t t = 0; t < scene.triangles.size(); ++t) {
+    const auto& tri = scene.triangles[t];
+    Vec3 n = glm::cross(scene.positions[tri[1]] - scene.positions[tri[0]], scene.positions[tri[2]] - scene.positions[tri[0]]);
+    if (!(glm::length(n) > 0.f)) continue;
+    for (uint32_t v : tri) acc[v] += n;
+    tris.push_back(tri);
+    mats.push_back(scene.triangle_material[t]);
+  }
+  scene.triangles = std::move(tris);
+  scene.triangle_material = std::move(mats);
+  scene.normals.resize(scene.positions.size(), Vec3(0.f));
+  for (size_t v = 0; v < scene.positions.size(); ++v) {
+    float len = glm::length(scene.normals[v]);
+    if (!(len > 0.f) || !std::isfinite(len)) {
+      float alen = glm::length(acc[v]);
+      scene.normals[v] = alen > 0.f ? acc[v] / alen : Vec3(0.f, 0.f, 1.f);
+    } else {
+      scene.normals[v] /= len;
+    }
+  }
+}
+
+} // namespace
+
+Scene finish_scene(Scene scene, const SceneLoadOptions& options) {
+  scene.update_bounds();
+  validate(scene, scene.source);
+  clean(scene);
+  if (scene.triangles.empty()) throw InputError(scene.source, "the scene has no triangles of non-zero area");
+  scene.input_vertex_count = scene.positions.size();
+  scene.input_triangle_count = scene.triangles.size();
+  float diag = scene.diagonal();
+  float max_edge = options.max_edge > 0.f ? options.max_edge : diag * kDefaultEdgeFraction;
+  // Estimate the result's size before committing memory to it.
+  double estimate = 0;
+  for (const auto& t : scene.triangles) {
+    float longest = 0.f;
+    for (int k = 0; k < 3; ++k) longest = std::max(longest, glm::length(scene.positions[t[k]] - scene.positions[t[(k + 1) % 3]]));
+    double ratio = std::max(1.0, double(longest) / max_edge);
+    estimate += ratio * ratio;
+  }
+  if (estimate > double(kMaxTriangles))
+    throw InputError(scene.source, "--max-edge " + std::to_string(max_edge) + " would make about " +
+                                       std::to_string(size_t(estimate)) + " triangles (limit " + std::to_string(kMaxTriangles) + ")");
+  tessellate(scene, max_edge);
+  scene.max_edge = max_edge;
+  return scene;
+}
+
+Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
+  const std::string file = path.string();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(file, "no such file");
+  if (fs::is_directory(path, ec)) throw InputError(file, "is a folder, not a scene file");
+  if (!std::ifstream(path, std::ios::binary)) throw InputError(file, "cannot open (permission denied?)");
+
+  Assimp::Importer importer;
+  // Points and lines carry no surface: drop them during import.
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 60.f);
+  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                         aiProcess_GenSmoothNormals | aiProcess_SortByPType | aiProcess_FindDegenerates |
+                         aiProcess_ValidateDataStructure;
+  const aiScene* ai = importer.ReadFile(file, flags);
+  if (!ai) throw InputError(file, std::string("cannot read scene: ") + importer.GetErrorString());
+
+  Scene scene;
+  scene.source = file;
+  for (unsigned m = 0; m < ai->mNumMaterials; ++m) {
+    aiString name;
+    ai->mMaterials[m]->Get(AI_MATKEY_NAME, name);
+    scene.materials.push_back({name.C_Str(), material_albedo(*ai->mMaterials[m])});
+  }
+  if (scene.materials.empty()) scene.materials.push_back({"default", Rgb(0.8f)});
+  for (unsigned mi = 0; mi < ai->mNumMeshes; ++mi) {
+    const aiMesh& mesh = *ai->mMeshes[mi];
+    if (!(mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+    uint32_t base = uint32_t(scene.positions.size());
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const aiVector3D& p = mesh.mVertices[v];
+      scene.positions.emplace_back(p.x, p.y, p.z);
+      if (mesh.mNormals) scene.normals.emplace_back(mesh.mNormals[v].x, mesh.mNormals[v].y, mesh.mNormals[v].z);
+      else scene.normals.emplace_back(0.f);
+    }
+    uint32_t material = mesh.mMaterialIndex < scene.materials.size() ? mesh.mMaterialIndex : 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      scene.triangles.push_back({base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
+      scene.triangle_material.push_back(material);
+    }
+  }
+  return finish_scene(std::move(scene), options);
+}
+
+} // namespace hilight

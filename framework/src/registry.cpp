@@ -1,0 +1,161 @@
+#include "hilight/registry.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/plugin.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <dlfcn.h>
+#include <sstream>
+
+namespace hilight {
+
+namespace fs = std::filesystem;
+
+void PluginRegistrar::renderer(RendererFactory create, ProbeFunction probe) {
+  if (m_record.kind != "renderer") throw std::logic_error("module " + m_record.name + " registers a renderer but says it is a " + m_record.kind);
+  m_record.create_renderer = std::move(create);
+  m_record.probe = std::move(probe);
+}
+
+void PluginRegistrar::frontend(FrontendFactory create) {
+  if (m_record.kind != "frontend") throw std::logic_error("module " + m_record.name + " registers a frontend but says it is a " + m_record.kind);
+  m_record.create_frontend = std::move(create);
+}
+
+std::vector<fs::path> Registry::default_search_dirs(const fs::path& executable) {
+  std::vector<fs::path> dirs;
+  std::error_code ec;
+  fs::path exe = fs::weakly_canonical(executable, ec);
+  if (!ec) dirs.push_back(exe.parent_path().parent_path() / "lib" / "hilight");
+  if (const char* env = std::getenv("HILIGHT_PLUGIN_PATH")) {
+    std::stringstream ss(env);
+    std::string item;
+    while (std::getline(ss, item, ':'))
+      if (!item.empty()) dirs.emplace_back(item);
+  }
+  return dirs;
+}
+
+void Registry::load_directory(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    auto name = entry.path().filename().string();
+    if (name.rfind("hilight-", 0) == 0 && entry.path().extension() == ".so") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) load_module(f);
+}
+
+const ModuleRecord& Registry::load_module(const fs::path& file) {
+  auto record = std::make_unique<ModuleRecord>();
+  record->path = file;
+  record->name = file.stem().string();
+  auto fail = [&](const std::string& why) -> const ModuleRecord& {
+    record->problem = why;
+    m_modules.push_back(std::move(record));
+    return *m_modules.back();
+  };
+
+  void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) {
+    const char* err = dlerror();
+    return fail(std::string("cannot load: ") + (err ? err : "unknown dlopen error"));
+  }
+  auto entry_fn = reinterpret_cast<HilightPluginEntryFn>(dlsym(handle, HILIGHT_PLUGIN_ENTRY_SYMBOL));
+  if (!entry_fn) return fail("not a hilight plugin: no " HILIGHT_PLUGIN_ENTRY_SYMBOL "() symbol");
+  const HilightPluginEntry* entry = entry_fn();
+  if (!entry) return fail("entry point returned nothing");
+  // Only plain C data is read until both checks pass.
+  if (entry->abi_version != HILIGHT_ABI_VERSION)
+    return fail("built against plugin ABI version " + std::to_string(entry->abi_version) + ", this hilight uses version " +
+                std::to_string(HILIGHT_ABI_VERSION) + "; rebuild the module");
+  if (!entry->build_key || std::strcmp(entry->build_key, HILIGHT_BUILD_KEY) != 0)
+    return fail(std::string("built with ") + (entry->build_key ? entry->build_key : "(none)") + ", this hilight with " +
+                HILIGHT_BUILD_KEY + "; rebuild the module");
+  record->kind = entry->kind ? entry->kind : "";
+  record->name = entry->name ? entry->name : record->name;
+  record->version = entry->version ? entry->version : "";
+  record->description = entry->description ? entry->description : "";
+  if (record->kind != "renderer" && record->kind != "frontend" && record->kind != "optimizer")
+    return fail("unknown plugin kind '" + record->kind + "'");
+  if (const ModuleRecord* other = find(record->kind, record->name))
+    return fail("duplicate " + record->kind + " '" + record->name + "', already loaded from " + other->path.string());
+  try {
+    PluginRegistrar registrar(*record);
+    entry->register_plugin(&registrar);
+  } catch (const std::exception& e) {
+    return fail(std::string("registration failed: ") + e.what());
+  }
+  record->loaded = true;
+  m_modules.push_back(std::move(record));
+  return *m_modules.back();
+}
+
+const ModuleRecord* Registry::find(const std::string& kind, const std::string& name) const {
+  for (const auto& m : m_modules)
+    if (m->loaded && m->kind == kind && m->name == name) return m.get();
+  return nullptr;
+}
+
+std::vector<std::string> Registry::names(const std::string& kind) const {
+  std::vector<std::string> out;
+  for (const auto& m : m_modules)
+    if (m->loaded && m->kind == kind) out.push_back(m->name);
+  return out;
+}
+
+const ModuleRecord& Registry::require(const std::string& kind, const std::string& name) const {
+  if (const ModuleRecord* m = find(kind, name)) return *m;
+  std::string known;
+  for (const auto& n : names(kind)) known += (known.empty() ? "" : ", ") + n;
+  std::string why;
+  for (const auto& m : m_modules)
+    if (!m->loaded && m->name.find(name) != std::string::npos) why = " (" + m->path.filename().string() + ": " + m->problem + ")";
+  throw InputError("unknown " + kind + " '" + name + "'" + why + "; available: " + (known.empty() ? "none" : known));
+}
+
+std::string Registry::renderer_unavailable_reason(const std::string& name) const {
+  const ModuleRecord& m = require("renderer", name);
+  return m.probe ? m.probe() : std::string();
+}
+
+std::unique_ptr<Renderer> Registry::create_renderer(const std::string& name, const Properties& properties) const {
+  const ModuleRecord& m = require("renderer", name);
+  if (std::string why = m.probe ? m.probe() : std::string(); !why.empty())
+    throw InputError("renderer '" + name + "' is unavailable: " + why);
+  auto renderer = m.create_renderer(properties);
+  properties.expect_all_queried("renderer " + name);
+  return renderer;
+}
+
+Frontend* Registry::frontend_for(const std::string& command) {
+  for (const auto& m : m_modules) {
+    if (!m->loaded || m->kind != "frontend") continue;
+    auto it = std::find_if(m_frontends.begin(), m_frontends.end(), [&](const auto& p) { return p.first == m.get(); });
+    if (it == m_frontends.end()) {
+      m_frontends.emplace_back(m.get(), m->create_frontend());
+      it = std::prev(m_frontends.end());
+    }
+    for (const auto& c : it->second->commands())
+      if (c.name == command) return it->second.get();
+  }
+  return nullptr;
+}
+
+std::vector<CommandInfo> Registry::all_commands() {
+  std::vector<CommandInfo> out;
+  for (const auto& m : m_modules) {
+    if (!m->loaded || m->kind != "frontend") continue;
+    frontend_for("");  // instantiate every frontend
+    break;
+  }
+  for (const auto& [record, frontend] : m_frontends)
+    for (auto& c : frontend->commands()) out.push_back(c);
+  return out;
+}
+
+} // namespace hilight

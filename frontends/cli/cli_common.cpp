@@ -1,0 +1,55 @@
+#include "cli_common.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/threads.hpp"
+
+#include <iostream>
+#include <unistd.h>
+
+namespace hilight::cli {
+
+namespace fs = std::filesystem;
+
+std::optional<int> parse(CLI::App& app, const std::vector<std::string>& args) {
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them back to front
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    throw InputError(app.get_name() + ": " + e.what());
+  }
+  return std::nullopt;
+}
+
+void RendererOptions::add_to(CLI::App& app) {
+  app.add_option("--renderer", name, "renderer plugin (hilight plugins lists them)")->capture_default_str();
+  app.add_option("--bounces", bounces, "0 = direct light only, 1 = plus the first diffuse bounce")
+      ->check(CLI::IsMember({0, 1}))
+      ->capture_default_str();
+  app.add_option("--bounce-samples", bounce_samples, "gather rays per point for the bounce (renderer default if 0)")
+      ->check(CLI::Range(0, 65536));
+  app.add_option("--set", settings, "renderer setting key=value (repeatable)");
+  app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+}
+
+std::unique_ptr<Renderer> RendererOptions::create(const Registry& registry, std::shared_ptr<const Scene> scene) const {
+  set_thread_limit(threads);
+  Properties props = Properties::from_assignments(settings);
+  props.set("bounces", std::to_string(bounces));
+  if (bounce_samples > 0) props.set("bounce_samples", std::to_string(bounce_samples));
+  auto renderer = registry.create_renderer(name, props);
+  renderer->set_scene(std::move(scene));
+  return renderer;
+}
+
+void check_writable(const fs::path& path) {
+  fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError(path.string(), "cannot write: folder " + dir.string() + " does not exist");
+  if (fs::is_directory(path, ec)) throw InputError(path.string(), "cannot write: it is a folder");
+  if (::access(dir.c_str(), W_OK) != 0) throw InputError(path.string(), "cannot write: folder " + dir.string() + " is not writable");
+}
+
+} // namespace hilight::cli

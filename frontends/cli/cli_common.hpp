@@ -1,0 +1,36 @@
+#pragma once
+/// Helpers shared by the CLI's commands: argument parsing with CLI11, the
+/// scene/renderer options every command takes, and output-path checks.
+#include "hilight/io/scene_io.hpp"
+#include "hilight/registry.hpp"
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hilight::cli {
+
+/// Parses `args` into `app`. Returns an exit code when the command should
+/// stop here (--help printed: 0), nullopt to go on; bad arguments throw InputError.
+std::optional<int> parse(CLI::App& app, const std::vector<std::string>& args);
+
+/// Renderer choice and its settings, as every rendering command takes them.
+struct RendererOptions {
+  std::string name = "embree";
+  int bounces = 1;
+  int bounce_samples = 0;  ///< 0: the renderer's default
+  std::vector<std::string> settings;  ///< --set key=value, passed through
+  int threads = 0;
+
+  void add_to(CLI::App& app);
+  /// Creates and binds the renderer; InputError for unknown/unavailable ones.
+  std::unique_ptr<Renderer> create(const Registry& registry, std::shared_ptr<const Scene> scene) const;
+};
+
+/// Fails early (before any work) if `path` cannot be created.
+void check_writable(const std::filesystem::path& path);
+
+} // namespace hilight::cli

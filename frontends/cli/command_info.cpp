@@ -1,0 +1,46 @@
+// hilight info SCENE: size, bounds and tessellation of a scene.
+#include "cli_common.hpp"
+#include "commands.hpp"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+namespace hilight::cli {
+
+int run_info(const std::vector<std::string>& args) {
+  CLI::App app("Print a scene's triangles, vertices (before/after tessellation), bounds and diagonal", "info");
+  std::string scene_path;
+  float max_edge = 0.f;
+  bool as_json = false;
+  app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
+  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::NonNegativeNumber);
+  app.add_flag("--json", as_json, "print JSON instead of text");
+  if (auto code = parse(app, args)) return *code;
+
+  Scene scene = load_scene(scene_path, {max_edge});
+  const Bounds& b = scene.bounds;
+  if (as_json) {
+    nlohmann::json j = {{"file", scene_path},
+                        {"triangles_input", scene.input_triangle_count},
+                        {"vertices_input", scene.input_vertex_count},
+                        {"triangles", scene.triangles.size()},
+                        {"vertices", scene.positions.size()},
+                        {"materials", scene.materials.size()},
+                        {"bounds_min", {b.lo.x, b.lo.y, b.lo.z}},
+                        {"bounds_max", {b.hi.x, b.hi.y, b.hi.z}},
+                        {"diagonal", scene.diagonal()},
+                        {"max_edge", scene.max_edge}};
+    std::printf("%s\n", j.dump(2).c_str());
+    return 0;
+  }
+  std::printf("scene      %s\n", scene_path.c_str());
+  std::printf("triangles  %zu (input %zu)\n", scene.triangles.size(), scene.input_triangle_count);
+  std::printf("vertices   %zu (input %zu)\n", scene.positions.size(), scene.input_vertex_count);
+  std::printf("materials  %zu\n", scene.materials.size());
+  std::printf("bounds     [%g, %g, %g] .. [%g, %g, %g]\n", b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z);
+  std::printf("diagonal   %g\n", scene.diagonal());
+  std::printf("max edge   %g\n", scene.max_edge);
+  return 0;
+}
+
+} // namespace hilight::cli

@@ -1,0 +1,13 @@
+#pragma once
+/// One function per CLI subcommand, each in its own command_<name>.cpp.
+#include "hilight/registry.hpp"
+
+#include <string>
+#include <vector>
+
+namespace hilight::cli {
+int run_info(const std::vector<std::string>& args);
+int run_render(const std::vector<std::string>& args, Registry& registry);
+int run_plugins(const std::vector<std::string>& args, Registry& registry);
+int run_bench(const std::vector<std::string>& args, Registry& registry);
+} // namespace hilight::cli

@@ -1,0 +1,16 @@
+#include "direct_light.hpp"
+
+namespace hilight::embree {
+
+PreparedLight::PreparedLight(const Light& light) : position(light.position), intensity(light.intensity) {
+  if (light.type == LightType::Spot) {
+    spot = true;
+    direction = glm::normalize(light.direction);
+    cutoff_deg = light.cutoff_deg;
+    falloff_deg = light.falloff_deg;
+    cos_cutoff = std::cos(float(light.cutoff_deg * kPi / 180.0));
+    cos_inner = falloff_deg > 0.f ? std::cos(float((light.cutoff_deg - light.falloff_deg) * kPi / 180.0)) : cos_cutoff;
+  }
+}
+
+} // namespace hilight::embree

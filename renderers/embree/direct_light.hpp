@@ -1,0 +1,57 @@
+#pragma once
+/// Direct irradiance from one light at one surface point: inverse-square,
+/// two-sided cosine |n·ω| (docs/rendering-model.md), spot cone, shadow ray.
+#include "embree_scene.hpp"
+#include "hilight/lighting.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hilight::embree {
+
+/// A light with its cone precomputed as cosines, so the hot loop has no trig
+/// except inside a soft spot edge.
+struct PreparedLight {
+  Vec3 position;
+  bool spot = false;
+  Vec3 direction{0.f};
+  float cos_cutoff = -1.f;   ///< outside the cone below this
+  float cos_inner = -1.f;    ///< full intensity above this
+  float cutoff_deg = 180.f, falloff_deg = 0.f;
+  Rgb intensity{1.f};
+
+  explicit PreparedLight(const Light& light);
+  /// Angular factor toward unit direction `to_point` (from the light).
+  float angular(const Vec3& to_point) const {
+    if (!spot) return 1.f;
+    float c = glm::dot(direction, to_point);
+    if (c < cos_cutoff) return 0.f;
+    if (c >= cos_inner) return 1.f;
+    float angle = std::acos(std::min(1.f, c)) * float(180.0 / kPi);
+    float t = std::clamp((cutoff_deg - angle) / falloff_deg, 0.f, 1.f);
+    return t * t * (3.f - 2.f * t);
+  }
+};
+
+/// Irradiance at `p` (shading normal `n`) from `light` at unit intensity.
+/// `offset_normal` (geometric normal, or n) lifts the shadow ray's origin to
+/// the light's side. Counts the shadow ray it casts in `rays`.
+inline float unit_direct_irradiance(const EmbreeScene& es, const Vec3& p, const Vec3& n, const Vec3& offset_normal,
+                                    const PreparedLight& light, uint64_t& rays) {
+  Vec3 d = light.position - p;
+  float dist2 = glm::dot(d, d);
+  float eps = es.epsilon();
+  if (dist2 <= eps * eps) return 0.f;
+  float dist = std::sqrt(dist2);
+  Vec3 w = d / dist;
+  float cos_n = glm::dot(n, w);
+  if (cos_n == 0.f) return 0.f;
+  float angular = light.angular(-w);
+  if (angular == 0.f) return 0.f;
+  Vec3 origin = p + (glm::dot(offset_normal, w) >= 0.f ? offset_normal : -offset_normal) * eps;
+  ++rays;
+  if (es.occluded(origin, w, dist - 2.f * eps)) return 0.f;
+  return std::abs(cos_n) * angular / dist2;
+}
+
+} // namespace hilight::embree

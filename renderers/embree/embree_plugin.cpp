@@ -1,0 +1,31 @@
+// Plugin entry of the `embree` renderer (CPU ray tracing with Embree 3).
+//
+// | property        | default | meaning                                              |
+// |-----------------|---------|------------------------------------------------------|
+// | bounces         | 1       | 0 = direct light only, 1 = plus first diffuse bounce |
+// | bounce_samples  | 128     | gather rays per point for the bounce (even, >= 2)    |
+// | seed            | 1       | seed of the gather's sample stream                   |
+#include "embree_renderer.hpp"
+#include "hilight/error.hpp"
+#include "hilight/plugin.hpp"
+#include "hilight/registry.hpp"
+
+namespace {
+
+std::unique_ptr<hilight::Renderer> create(const hilight::Properties& props) {
+  hilight::embree::EmbreeSettings s;
+  s.bounces = int(props.get_int("bounces", s.bounces));
+  if (s.bounces != 0 && s.bounces != 1) throw hilight::InputError("renderer embree: bounces must be 0 or 1");
+  long long samples = props.get_int("bounce_samples", s.bounce_samples);
+  if (samples < 2 || samples > 65536) throw hilight::InputError("renderer embree: bounce_samples must be in [2, 65536]");
+  s.bounce_samples = int(samples + (samples & 1));
+  s.seed = uint64_t(props.get_int("seed", 1));
+  return std::make_unique<hilight::embree::EmbreeRenderer>(s);
+}
+
+void register_embree(hilight::PluginRegistrar& registrar) { registrar.renderer(create); }
+
+} // namespace
+
+HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, "0.1.0", "CPU ray tracing (Embree 3): direct light and first bounce by gathering",
+               register_embree)

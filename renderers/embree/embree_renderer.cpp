@@ -1,0 +1,153 @@
+#include "embree_renderer.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+namespace hilight::embree {
+
+void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
+  m_gather.reset();
+  m_embree.reset();
+  m_scene = std::move(scene);
+  m_embree = std::make_unique<EmbreeScene>(*m_scene);
+}
+
+const BounceGather& EmbreeRenderer::gather_for(const SurfacePoints& points) {
+  uint64_t key = points.content_key();
+  if (!m_gather || key != m_gather_key) {
+    m_gather.reset();
+    m_gather = std::make_unique<BounceGather>(*m_embree, points, m_settings.bounce_samples, m_settings.seed);
+    m_gather_key = key;
+    m_rays += m_gather->rays_cast();
+  }
+  return *m_gather;
+}
+
+template <class Visit>
+void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<const Light> lights, Visit&& visit) {
+  if (!m_embree) throw std::logic_error("EmbreeRenderer: set_scene was not called");
+  std::vector<PreparedLight> prepared(lights.begin(), lights.end());
+  const BounceGather* gather = m_settings.bounces > 0 ? &gather_for(points) : nullptr;
+  tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
+  // Points in chunks, lights inside: neighbouring points' rays toward one
+  // light are coherent, and the chunk's data stays in cache across lights.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 32), [&](const tbb::blocked_range<size_t>& range) {
+    uint64_t& local_rays = rays.local();
+    for (size_t j = 0; j < prepared.size(); ++j) {
+      const PreparedLight& light = prepared[j];
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        const Vec3& n = points.normals[i];
+        Rgb e(unit_direct_irradiance(*m_embree, points.positions[i], n, n, light, local_rays));
+        if (gather) e += gather->unit_indirect_irradiance(i, light, local_rays);
+        visit(i, j, points.albedo[i] * float(1.0 / kPi) * e);
+      }
+    }
+  });
+  m_rays += rays.combine(std::plus<uint64_t>());
+}
+
+std::vector<Rgb> EmbreeRenderer::illuminate(const SurfacePoints& points, std::span<const Light> lights) {
+  m_rays = 0;
+  std::vector<Rgb> out(points.size(), Rgb(0.f));
+  // Each point is owned by exactly one task, so the += below does not race.
+  for_each_response(points, lights, [&](size_t i, size_t j, const Rgb& r) { out[i] += lights[j].intensity * r; });
+  return out;
+}
+
+std::vector<Rgb> EmbreeRenderer::unit_responses(const SurfacePoints& points, std::span<const Light> lights) {
+  m_rays = 0;
+  std::vector<Rgb> out(points.size() * lights.size());
+  const size_t m = points.size();
+  for_each_response(points, lights, [&](size_t i, size_t j, const Rgb& r) { out[j * m + i] = r; });
+  return out;
+}
+
+Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> lights, int width, int height) {
+  if (!m_embree) throw std::logic_error("EmbreeRenderer: set_scene was not called");
+  m_rays = 0;
+  const Scene& scene = *m_scene;
+  // Indirect irradiance at the vertices, interpolated across each triangle;
+  // direct light is exact per pixel so shadow edges stay sharp.
+  std::vector<Rgb> vertex_indirect;
+  if (m_settings.bounces > 0) {
+    SurfacePoints vertices = SurfacePoints::from_vertices(scene);
+    const BounceGather& gather = gather_for(vertices);
+    vertex_indirect.assign(vertices.size(), Rgb(0.f));
+    std::vector<PreparedLight> prepared(lights.begin(), lights.end());
+    tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, vertices.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i != r.end(); ++i)
+        for (const auto& light : prepared) vertex_indirect[i] += light.intensity * gather.unit_indirect_irradiance(i, light, rays.local());
+    });
+    m_rays += rays.combine(std::plus<uint64_t>());
+  }
+  std::vector<PreparedLight> prepared(lights.begin(), lights.end());
+  Image image(width, height);
+  const Camera::Basis b = camera.basis();
+  const float aspect = float(width) / float(height);
+  tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
+  tbb::parallel_for(tbb::blocked_range<int>(0, height, 4), [&](const tbb::blocked_range<int>& rows) {
+    uint64_t& local_rays = rays.local();
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < width; ++x) {
+        float sx = (2.f * (float(x) + 0.5f) / float(width) - 1.f) * b.tan_half_fov * aspect;
+        float sy = (1.f - 2.f * (float(y) + 0.5f) / float(height)) * b.tan_half_fov;
+        Vec3 dir = glm::normalize(b.forward + sx * b.right + sy * b.up);
+        Hit hit = m_embree->intersect(camera.eye, dir);
+        ++local_rays;
+        if (!hit.valid()) continue;
+        Vec3 p = m_embree->hit_position(hit);
+        Vec3 n = m_embree->hit_normal(hit);
+        Vec3 ng = scene.face_normal(hit.triangle);
+        Rgb e(0.f);
+        for (const auto& light : prepared) e += light.intensity * unit_direct_irradiance(*m_embree, p, n, ng, light, local_rays);
+        if (!vertex_indirect.empty()) {
+          const auto& tri = scene.triangles[hit.triangle];
+          e += (1.f - hit.u - hit.v) * vertex_indirect[tri[0]] + hit.u * vertex_indirect[tri[1]] + hit.v * vertex_indirect[tri[2]];
+        }
+        image.at(x, y) = scene.triangle_albedo(hit.triangle) * float(1.0 / kPi) * e;
+        image.covered[size_t(y) * width + x] = 1;
+      }
+  });
+  m_rays += rays.combine(std::plus<uint64_t>());
+  return image;
+}
+
+std::vector<std::pair<std::string, double>> EmbreeRenderer::baseline_figures(const SurfacePoints& points,
+                                                                             std::span<const Light> lights) {
+  if (!m_embree) throw std::logic_error("EmbreeRenderer: set_scene was not called");
+  // The same shadow rays unit_responses casts at bounces=0, built up front so
+  // that only rtcOccluded1 is timed: the ceiling φ can approach.
+  struct Segment { Vec3 origin, dir; float tfar; };
+  std::vector<PreparedLight> prepared(lights.begin(), lights.end());
+  std::vector<Segment> segments;
+  segments.reserve(points.size() * lights.size());
+  const float eps = m_embree->epsilon();
+  for (size_t i0 = 0; i0 < points.size(); i0 += 32)
+    for (const auto& light : prepared)
+      for (size_t i = i0; i < std::min(points.size(), i0 + 32); ++i) {
+        Vec3 d = light.position - points.positions[i];
+        float dist = glm::length(d);
+        if (dist <= eps) continue;
+        Vec3 w = d / dist;
+        const Vec3& n = points.normals[i];
+        if (glm::dot(n, w) == 0.f || light.angular(-w) == 0.f) continue;
+        segments.push_back({points.positions[i] + (glm::dot(n, w) >= 0.f ? n : -n) * eps, w, dist - 2.f * eps});
+      }
+  tbb::combinable<uint64_t> blocked([] { return uint64_t(0); });
+  auto start = std::chrono::steady_clock::now();
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, segments.size(), 32 * prepared.size()), [&](const tbb::blocked_range<size_t>& r) {
+    uint64_t& local = blocked.local();
+    for (size_t s = r.begin(); s != r.end(); ++s) local += m_embree->occluded(segments[s].origin, segments[s].dir, segments[s].tfar);
+  });
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return {{"raw_occlusion_rays", double(segments.size())},
+          {"raw_occlusion_seconds", seconds},
+          {"raw_occlusion_rays_per_second", double(segments.size()) / seconds},
+          {"raw_occluded_fraction", double(blocked.combine(std::plus<uint64_t>())) / double(std::max<size_t>(1, segments.size()))}};
+}
+
+} // namespace hilight::embree

@@ -1,0 +1,45 @@
+#pragma once
+/// The Embree renderer: direct light with shadow rays and the first bounce by
+/// gathering (first_bounce.hpp). Parameters are in embree_plugin.cpp.
+#include "embree_scene.hpp"
+#include "first_bounce.hpp"
+#include "hilight/renderer.hpp"
+
+#include <memory>
+
+namespace hilight::embree {
+
+struct EmbreeSettings {
+  int bounces = 1;           ///< 0: direct only; 1: plus the first diffuse bounce
+  int bounce_samples = 128;  ///< gather rays per point (even)
+  uint64_t seed = 1;         ///< gather sample stream
+};
+
+class EmbreeRenderer final : public Renderer {
+public:
+  explicit EmbreeRenderer(const EmbreeSettings& settings) : m_settings(settings) {}
+
+  void set_scene(std::shared_ptr<const Scene> scene) override;
+  std::vector<Rgb> illuminate(const SurfacePoints& points, std::span<const Light> lights) override;
+  std::vector<Rgb> unit_responses(const SurfacePoints& points, std::span<const Light> lights) override;
+  Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) override;
+  uint64_t rays_cast() const override { return m_rays; }
+  std::vector<std::pair<std::string, double>> baseline_figures(const SurfacePoints& points,
+                                                               std::span<const Light> lights) override;
+
+private:
+  /// The gather for `points`, reused while the same point set comes back.
+  const BounceGather& gather_for(const SurfacePoints& points);
+  /// Calls visit(i, j, unit RGB response) for every point i and light j, in parallel over points.
+  template <class Visit>
+  void for_each_response(const SurfacePoints& points, std::span<const Light> lights, Visit&& visit);
+
+  EmbreeSettings m_settings;
+  std::shared_ptr<const Scene> m_scene;
+  std::unique_ptr<EmbreeScene> m_embree;
+  std::unique_ptr<BounceGather> m_gather;
+  uint64_t m_gather_key = 0;
+  uint64_t m_rays = 0;
+};
+
+} // namespace hilight::embree

@@ -1,0 +1,52 @@
+#include "first_bounce.hpp"
+
+#include "sampling.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+namespace hilight::embree {
+
+BounceGather::BounceGather(const EmbreeScene& es, const SurfacePoints& points, int samples, uint64_t seed)
+    : m_es(es), m_samples(samples), m_hits(points.size() * size_t(samples)) {
+  const Scene& scene = es.scene();
+  m_face_normals.resize(scene.triangles.size());
+  for (size_t t = 0; t < scene.triangles.size(); ++t) m_face_normals[t] = scene.face_normal(t);
+
+  const int per_side = samples / 2;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      uint64_t stream = mix64(seed ^ mix64(i));
+      const Vec3 n = points.normals[i];
+      for (int side = 0; side < 2; ++side) {
+        const Vec3 axis = side == 0 ? n : -n;
+        const Vec3 origin = points.positions[i] + axis * es.epsilon();
+        float rot1 = to_unit_float(stream = mix64(stream)), rot2 = to_unit_float(stream = mix64(stream));
+        for (int k = 0; k < per_side; ++k) {
+          float u1 = float(k + 0.5f) / float(per_side) + rot1;
+          float u2 = radical_inverse2(uint32_t(k)) + rot2;
+          u1 -= std::floor(u1);
+          u2 -= std::floor(u2);
+          m_hits[i * samples + side * per_side + k] = es.intersect(origin, cosine_direction(axis, u1, u2));
+        }
+      }
+    }
+  });
+  m_rays = uint64_t(points.size()) * uint64_t(samples);
+}
+
+Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light, uint64_t& rays) const {
+  const Scene& scene = m_es.scene();
+  Rgb sum(0.f);
+  const Hit* hits = &m_hits[i * m_samples];
+  for (int k = 0; k < m_samples; ++k) {
+    const Hit& hit = hits[k];
+    if (!hit.valid()) continue;
+    float e = unit_direct_irradiance(m_es, m_es.hit_position(hit), m_es.hit_normal(hit), m_face_normals[hit.triangle], light, rays);
+    if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
+  }
+  return sum * (2.f / float(m_samples));
+}
+
+} // namespace hilight::embree
