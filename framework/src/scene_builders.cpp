@@ -1,5 +1,9 @@
 #include "hilight/scene_builders.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+
 namespace hilight::builders {
 
 namespace {
@@ -52,6 +56,47 @@ Scene box_room(const Vec3& size, const Rgb& albedo) {
   Scene scene;
   scene.source = "builtin:box_room";
   add_box(scene, Vec3(0.f), size, albedo, true, "walls");
+  return scene;
+}
+
+Scene sphere(float radius, int subdivisions, bool inward, const Rgb& albedo) {
+  Scene scene;
+  scene.source = "builtin:sphere";
+  scene.materials.push_back({"sphere", albedo});
+  const float t = (1.f + std::sqrt(5.f)) / 2.f;
+  std::vector<Vec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                         {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<uint32_t, 3>> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                            {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                                            {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  for (auto& p : v) p = glm::normalize(p);
+  for (int s = 0; s < subdivisions; ++s) {
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
+    auto midpoint = [&](uint32_t a, uint32_t b) {
+      auto key = std::minmax(a, b);
+      auto [it, inserted] = mid.try_emplace(key, uint32_t(v.size()));
+      if (inserted) v.push_back(glm::normalize(v[a] + v[b]));
+      return it->second;
+    };
+    std::vector<std::array<uint32_t, 3>> next;
+    for (const auto& tri : f) {
+      uint32_t ab = midpoint(tri[0], tri[1]), bc = midpoint(tri[1], tri[2]), ca = midpoint(tri[2], tri[0]);
+      next.push_back({tri[0], ab, ca});
+      next.push_back({tri[1], bc, ab});
+      next.push_back({tri[2], ca, bc});
+      next.push_back({ab, bc, ca});
+    }
+    f = std::move(next);
+  }
+  for (const auto& p : v) {
+    scene.positions.push_back(p * radius);
+    scene.normals.push_back(inward ? -p : p);
+  }
+  for (auto tri : f) {
+    if (inward) std::swap(tri[1], tri[2]);
+    scene.triangles.push_back(tri);
+    scene.triangle_material.push_back(0);
+  }
   return scene;
 }
 

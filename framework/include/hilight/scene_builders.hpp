@@ -18,6 +18,9 @@ void add_quad(Scene& scene, const Vec3& a, const Vec3& b, const Vec3& c, const V
 Scene plane(float half_size, const Rgb& albedo = Rgb(0.8f));
 /// A closed box room [0,size], normals inward.
 Scene box_room(const Vec3& size, const Rgb& albedo = Rgb(0.8f));
+/// A sphere (subdivided icosahedron) of `radius` at the origin with smooth
+/// radial normals; `inward` winds it as a closed room seen from inside.
+Scene sphere(float radius, int subdivisions, bool inward, const Rgb& albedo = Rgb(0.8f));
 /// A 6 x 3 x 5 room with a table, a cabinet, a bench and a pillar: the
 /// interior test scene (cf. the paper's Table 1), and the bundled demo.
 Scene furnished_room();

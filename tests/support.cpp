@@ -1,0 +1,94 @@
+#include "support.hpp"
+
+#include <array>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace test {
+
+namespace fs = std::filesystem;
+
+hilight::Registry& registry() {
+  static hilight::Registry reg = [] {
+    hilight::Registry r;
+    r.load_directory(HILIGHT_PLUGIN_DIR);
+    return r;
+  }();
+  return reg;
+}
+
+std::unique_ptr<hilight::Renderer> make_renderer(const std::string& name, std::shared_ptr<const hilight::Scene> scene,
+                                                 const std::vector<std::string>& settings) {
+  auto renderer = registry().create_renderer(name, hilight::Properties::from_assignments(settings));
+  renderer->set_scene(std::move(scene));
+  return renderer;
+}
+
+std::shared_ptr<const hilight::Scene> finish(hilight::Scene raw, float max_edge) {
+  return std::make_shared<const hilight::Scene>(hilight::finish_scene(std::move(raw), {max_edge}));
+}
+
+namespace {
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+} // namespace
+
+RunResult run_hilight(const std::vector<std::string>& args) {
+  // Output goes through files, not pipes, so large outputs cannot deadlock.
+  static int counter = 0;
+  fs::path dir = output_dir("run_hilight_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+  fs::path out_path = dir / "stdout.txt", err_path = dir / "stderr.txt";
+  pid_t pid = ::fork();
+  if (pid == 0) {
+    int out = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    int in = ::open("/dev/null", O_RDONLY);
+    ::dup2(out, 1);
+    ::dup2(err, 2);
+    ::dup2(in, 0);
+    std::vector<char*> argv;
+    std::string bin = HILIGHT_BINARY;
+    argv.push_back(bin.data());
+    std::vector<std::string> copy = args;
+    for (auto& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(bin.c_str(), argv.data());
+    ::_exit(127);
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = slurp(out_path);
+  r.err = slurp(err_path);
+  return r;
+}
+
+fs::path output_dir(const std::string& test_name) {
+  fs::path dir = fs::path(HILIGHT_TEST_OUTPUT_DIR) / test_name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+size_t line_count(const std::string& text) {
+  size_t n = 0;
+  for (char c : text) n += c == '\n';
+  if (!text.empty() && text.back() != '\n') ++n;
+  return n;
+}
+
+} // namespace test

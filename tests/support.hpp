@@ -1,0 +1,39 @@
+#pragma once
+/// Shared by the tests: the real plugin registry, renderers bound to scenes,
+/// running the real `hilight` launcher, and small numeric helpers.
+#include "hilight/io/scene_io.hpp"
+#include "hilight/registry.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace test {
+
+/// The registry loaded from the build's plugin folder (once per process).
+hilight::Registry& registry();
+
+/// A renderer from the registry, bound to `scene`. `settings`: "key=value".
+std::unique_ptr<hilight::Renderer> make_renderer(const std::string& name, std::shared_ptr<const hilight::Scene> scene,
+                                                 const std::vector<std::string>& settings = {});
+
+/// Tessellates a builder scene the way load_scene would.
+std::shared_ptr<const hilight::Scene> finish(hilight::Scene raw, float max_edge);
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+/// Runs `hilight <args>` (no shell), capturing stdout and stderr.
+RunResult run_hilight(const std::vector<std::string>& args);
+
+/// A fresh, empty folder under the build tree for one test's files.
+std::filesystem::path output_dir(const std::string& test_name);
+/// Writes text to a file (test inputs).
+void write_text(const std::filesystem::path& path, const std::string& text);
+
+/// Number of lines in `text` (a one-line error has exactly 1).
+size_t line_count(const std::string& text);
+
+} // namespace test
