@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# hilight's one set-up script, for a fresh Debian 12 machine (as root) or an
+# existing checkout:
+#   bash setup.sh demo   install dependencies, build, run the demo on the bundled room
+#   bash setup.sh test   install dependencies, build, run the whole test suite
+#   bash setup.sh deps | build
+# BUILD_DIR (default build/) and BUILD_TYPE (default Release) may be set.
+set -euo pipefail
+cd "$(dirname "$0")"
+BUILD_DIR=${BUILD_DIR:-build}
+BUILD_TYPE=${BUILD_TYPE:-Release}
+
+PACKAGES=(
+  build-essential cmake ninja-build pkg-config python3
+  libembree-dev libassimp-dev libglm-dev libopenexr-dev libpng-dev libtbb-dev
+  nlohmann-json3-dev libcli11-dev catch2
+  assimp-testmodels   # real broken and valid models the tests load
+)
+
+install_deps() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    echo "setup: all ${#PACKAGES[@]} packages already installed"
+    return
+  fi
+  echo "setup: installing ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+build() {
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" >/dev/null
+  cmake --build "$BUILD_DIR" -j "$(nproc)"
+}
+
+demo() {
+  local out="$BUILD_DIR/demo"
+  mkdir -p "$out"
+  "$BUILD_DIR/bin/hilight" render scenes/room.obj --lights scenes/room-lights.json \
+    --camera "5.6,2.6,4.7,2,0.6,1.5,70" -o "$out/room.ply" -o "$out/room.png"
+  echo "demo: the lit room is in $out/room.ply (per-vertex radiance) and $out/room.png"
+}
+
+run_tests() {
+  (cd "$BUILD_DIR" && ctest --output-on-failure -j "$(nproc)")
+}
+
+case "${1:-}" in
+  deps) install_deps ;;
+  build) install_deps; build ;;
+  demo) install_deps; build; demo ;;
+  test) install_deps; build; run_tests ;;
+  *) echo "usage: bash setup.sh demo|test|deps|build" >&2; exit 2 ;;
+esac
