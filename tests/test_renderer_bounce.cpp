@@ -76,3 +76,34 @@ TEST_CASE("the gather is deterministic for a seed and changes with it", "[render
   CHECK(run("3") == run("3"));
   CHECK(run("3") != run("4"));
 }
+
+TEST_CASE("direct-only plus indirect-only responses equal the full response", "[renderer][bounce][phi]") {
+  auto scene = test::finish(builders::furnished_room(), 0.6f);
+  auto renderer = test::make_renderer("embree", scene, {"bounce_samples=32"});
+  auto points = SurfacePoints::from_vertices(*scene);
+  Lighting lights = {Light::point({1.f, 2.f, 1.f}, Rgb(1.f)), Light::spot({3.f, 2.9f, 2.5f}, {0.f, -1.f, 0.f}, 30.f, Rgb(1.f))};
+  auto all = renderer->unit_responses(points, lights, Transport::All);
+  auto direct = renderer->unit_responses(points, lights, Transport::DirectOnly);
+  auto indirect = renderer->unit_responses(points, lights, Transport::IndirectOnly);
+  double indirect_sum = 0;
+  for (size_t k = 0; k < all.size(); ++k) {
+    for (int c = 0; c < 3; ++c) REQUIRE(all[k][c] == Approx(direct[k][c] + indirect[k][c]).epsilon(1e-5).margin(1e-9));
+    indirect_sum += indirect[k].r;
+  }
+  CHECK(indirect_sum > 0.0);
+}
+
+TEST_CASE("the vertex-interpolated bounce agrees with the exact bounce", "[renderer][bounce]") {
+  auto scene = test::finish(builders::furnished_room(), 0.25f);
+  auto points = SurfacePoints::from_vertices(*scene);
+  Lighting lights = {Light::point({1.5f, 2.5f, 1.2f}, Rgb(1.f)), Light::point({4.5f, 1.2f, 3.f}, Rgb(1.f))};
+  auto exact = test::make_renderer("embree", scene, {"bounce_samples=64"})->unit_responses(points, lights, Transport::IndirectOnly);
+  auto interpolated = test::make_renderer("embree", scene, {"bounce_samples=64", "bounce_direct=vertex"})
+                          ->unit_responses(points, lights, Transport::IndirectOnly);
+  double error = relative_l2(interpolated, exact);
+  INFO("normalized L2 difference of the bounce: " << error);
+  // Same gather rays; only shadow edges inside hit triangles are smoothed
+  // (measured 3.5% of the bounce alone at max-edge 0.25, about 1% of the total).
+  CHECK(error < 0.05);
+  CHECK(error > 0.0);
+}

@@ -1,7 +1,7 @@
 #pragma once
 /// Direct irradiance from one light at one surface point: inverse-square,
 /// two-sided cosine |n·ω| (docs/rendering-model.md), spot cone, shadow ray.
-#include "embree_scene.hpp"
+#include "hilight/ray_scene.hpp"
 #include "hilight/lighting.hpp"
 
 #include <algorithm>
@@ -36,7 +36,7 @@ struct PreparedLight {
 /// Irradiance at `p` (shading normal `n`) from `light` at unit intensity.
 /// `offset_normal` (geometric normal, or n) lifts the shadow ray's origin to
 /// the light's side. Counts the shadow ray it casts in `rays`.
-inline float unit_direct_irradiance(const EmbreeScene& es, const Vec3& p, const Vec3& n, const Vec3& offset_normal,
+inline float unit_direct_irradiance(const RayScene& es, const Vec3& p, const Vec3& n, const Vec3& offset_normal,
                                     const PreparedLight& light, uint64_t& rays) {
   Vec3 d = light.position - p;
   float dist2 = glm::dot(d, d);

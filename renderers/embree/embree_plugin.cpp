@@ -5,6 +5,9 @@
 // | bounces         | 1       | 0 = direct light only, 1 = plus first diffuse bounce |
 // | bounce_samples  | 128     | gather rays per point for the bounce (even, >= 2)    |
 // | seed            | 1       | seed of the gather's sample stream                   |
+// | bounce_direct   | exact   | direct light at gather hits: exact shadow rays, or   |
+// |                 |         | "vertex": interpolated from the hit triangle's       |
+// |                 |         | vertices (fast for many lights; used by the cache)   |
 #include "embree_renderer.hpp"
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
@@ -20,6 +23,10 @@ std::unique_ptr<hilight::Renderer> create(const hilight::Properties& props) {
   if (samples < 2 || samples > 65536) throw hilight::InputError("renderer embree: bounce_samples must be in [2, 65536]");
   s.bounce_samples = int(samples + (samples & 1));
   s.seed = uint64_t(props.get_int("seed", 1));
+  std::string bounce_direct = props.get_string("bounce_direct", "exact");
+  if (bounce_direct != "exact" && bounce_direct != "vertex")
+    throw hilight::InputError("renderer embree: bounce_direct must be exact or vertex");
+  s.vertex_interpolated_bounce = bounce_direct == "vertex";
   return std::make_unique<hilight::embree::EmbreeRenderer>(s);
 }
 

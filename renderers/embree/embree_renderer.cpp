@@ -12,7 +12,7 @@ void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   m_gather.reset();
   m_embree.reset();
   m_scene = std::move(scene);
-  m_embree = std::make_unique<EmbreeScene>(*m_scene);
+  m_embree = std::make_unique<RayScene>(*m_scene);
 }
 
 const BounceGather& EmbreeRenderer::gather_for(const SurfacePoints& points) {
@@ -26,11 +26,36 @@ const BounceGather& EmbreeRenderer::gather_for(const SurfacePoints& points) {
   return *m_gather;
 }
 
+std::string EmbreeRenderer::settings_key() const {
+  return "embree/bounces=" + std::to_string(m_settings.bounces) + "/samples=" + std::to_string(m_settings.bounce_samples) +
+         "/seed=" + std::to_string(m_settings.seed) + "/vertex_bounce=" + std::to_string(m_settings.vertex_interpolated_bounce);
+}
+
+std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const PreparedLight> lights) {
+  const Scene& scene = *m_scene;
+  const size_t v_count = scene.positions.size();
+  std::vector<float> out(v_count * lights.size());
+  tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, v_count, 64), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t j = 0; j < lights.size(); ++j)
+      for (size_t v = r.begin(); v != r.end(); ++v)
+        out[j * v_count + v] = unit_direct_irradiance(*m_embree, scene.positions[v], scene.normals[v], scene.normals[v],
+                                                      lights[j], rays.local());
+  });
+  m_rays += rays.combine(std::plus<uint64_t>());
+  return out;
+}
+
 template <class Visit>
-void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<const Light> lights, Visit&& visit) {
+void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport,
+                                       Visit&& visit) {
   if (!m_embree) throw std::logic_error("EmbreeRenderer: set_scene was not called");
   std::vector<PreparedLight> prepared(lights.begin(), lights.end());
-  const BounceGather* gather = m_settings.bounces > 0 ? &gather_for(points) : nullptr;
+  const bool want_direct = transport != Transport::IndirectOnly;
+  const BounceGather* gather = m_settings.bounces > 0 && transport != Transport::DirectOnly ? &gather_for(points) : nullptr;
+  std::vector<float> vertex_direct;
+  if (gather && m_settings.vertex_interpolated_bounce) vertex_direct = vertex_direct_irradiance(prepared);
+  const size_t v_count = m_scene->positions.size();
   tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
   // Points in chunks, lights inside: neighbouring points' rays toward one
   // light are coherent, and the chunk's data stays in cache across lights.
@@ -40,8 +65,9 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
       const PreparedLight& light = prepared[j];
       for (size_t i = range.begin(); i != range.end(); ++i) {
         const Vec3& n = points.normals[i];
-        Rgb e(unit_direct_irradiance(*m_embree, points.positions[i], n, n, light, local_rays));
-        if (gather) e += gather->unit_indirect_irradiance(i, light, local_rays);
+        Rgb e(want_direct ? unit_direct_irradiance(*m_embree, points.positions[i], n, n, light, local_rays) : 0.f);
+        if (gather && !vertex_direct.empty()) e += gather->interpolated_indirect_irradiance(i, &vertex_direct[j * v_count]);
+        else if (gather) e += gather->unit_indirect_irradiance(i, light, local_rays);
         visit(i, j, points.albedo[i] * float(1.0 / kPi) * e);
       }
     }
@@ -53,15 +79,16 @@ std::vector<Rgb> EmbreeRenderer::illuminate(const SurfacePoints& points, std::sp
   m_rays = 0;
   std::vector<Rgb> out(points.size(), Rgb(0.f));
   // Each point is owned by exactly one task, so the += below does not race.
-  for_each_response(points, lights, [&](size_t i, size_t j, const Rgb& r) { out[i] += lights[j].intensity * r; });
+  for_each_response(points, lights, Transport::All, [&](size_t i, size_t j, const Rgb& r) { out[i] += lights[j].intensity * r; });
   return out;
 }
 
-std::vector<Rgb> EmbreeRenderer::unit_responses(const SurfacePoints& points, std::span<const Light> lights) {
+std::vector<Rgb> EmbreeRenderer::unit_responses(const SurfacePoints& points, std::span<const Light> lights,
+                                                Transport transport) {
   m_rays = 0;
   std::vector<Rgb> out(points.size() * lights.size());
   const size_t m = points.size();
-  for_each_response(points, lights, [&](size_t i, size_t j, const Rgb& r) { out[j * m + i] = r; });
+  for_each_response(points, lights, transport, [&](size_t i, size_t j, const Rgb& r) { out[j * m + i] = r; });
   return out;
 }
 
@@ -101,7 +128,7 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
         if (!hit.valid()) continue;
         Vec3 p = m_embree->hit_position(hit);
         Vec3 n = m_embree->hit_normal(hit);
-        Vec3 ng = scene.face_normal(hit.triangle);
+        const Vec3& ng = m_embree->face_normals()[hit.triangle];
         Rgb e(0.f);
         for (const auto& light : prepared) e += light.intensity * unit_direct_irradiance(*m_embree, p, n, ng, light, local_rays);
         if (!vertex_indirect.empty()) {

@@ -1,7 +1,7 @@
 #pragma once
 /// The Embree renderer: direct light with shadow rays and the first bounce by
 /// gathering (first_bounce.hpp). Parameters are in embree_plugin.cpp.
-#include "embree_scene.hpp"
+#include "hilight/ray_scene.hpp"
 #include "first_bounce.hpp"
 #include "hilight/renderer.hpp"
 
@@ -13,6 +13,11 @@ struct EmbreeSettings {
   int bounces = 1;           ///< 0: direct only; 1: plus the first diffuse bounce
   int bounce_samples = 128;  ///< gather rays per point (even)
   uint64_t seed = 1;         ///< gather sample stream
+  /// Direct light at the gather's hit points: exact shadow rays per hit, or
+  /// interpolated across each hit triangle from its vertices (one shadow ray
+  /// per scene vertex and light: much faster for many points, smooths shadow
+  /// edges within a triangle).
+  bool vertex_interpolated_bounce = false;
 };
 
 class EmbreeRenderer final : public Renderer {
@@ -21,7 +26,9 @@ public:
 
   void set_scene(std::shared_ptr<const Scene> scene) override;
   std::vector<Rgb> illuminate(const SurfacePoints& points, std::span<const Light> lights) override;
-  std::vector<Rgb> unit_responses(const SurfacePoints& points, std::span<const Light> lights) override;
+  std::vector<Rgb> unit_responses(const SurfacePoints& points, std::span<const Light> lights,
+                                  Transport transport = Transport::All) override;
+  std::string settings_key() const override;
   Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) override;
   uint64_t rays_cast() const override { return m_rays; }
   std::vector<std::pair<std::string, double>> baseline_figures(const SurfacePoints& points,
@@ -32,11 +39,13 @@ private:
   const BounceGather& gather_for(const SurfacePoints& points);
   /// Calls visit(i, j, unit RGB response) for every point i and light j, in parallel over points.
   template <class Visit>
-  void for_each_response(const SurfacePoints& points, std::span<const Light> lights, Visit&& visit);
+  void for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Visit&& visit);
+  /// Unit direct irradiance at every scene vertex for each light, light-major.
+  std::vector<float> vertex_direct_irradiance(std::span<const PreparedLight> lights);
 
   EmbreeSettings m_settings;
   std::shared_ptr<const Scene> m_scene;
-  std::unique_ptr<EmbreeScene> m_embree;
+  std::unique_ptr<RayScene> m_embree;
   std::unique_ptr<BounceGather> m_gather;
   uint64_t m_gather_key = 0;
   uint64_t m_rays = 0;

@@ -8,12 +8,8 @@
 
 namespace hilight::embree {
 
-BounceGather::BounceGather(const EmbreeScene& es, const SurfacePoints& points, int samples, uint64_t seed)
+BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, int samples, uint64_t seed)
     : m_es(es), m_samples(samples), m_hits(points.size() * size_t(samples)) {
-  const Scene& scene = es.scene();
-  m_face_normals.resize(scene.triangles.size());
-  for (size_t t = 0; t < scene.triangles.size(); ++t) m_face_normals[t] = scene.face_normal(t);
-
   const int per_side = samples / 2;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
@@ -43,7 +39,25 @@ Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light,
   for (int k = 0; k < m_samples; ++k) {
     const Hit& hit = hits[k];
     if (!hit.valid()) continue;
-    float e = unit_direct_irradiance(m_es, m_es.hit_position(hit), m_es.hit_normal(hit), m_face_normals[hit.triangle], light, rays);
+    float e = unit_direct_irradiance(m_es, m_es.hit_position(hit), m_es.hit_normal(hit), m_es.face_normals()[hit.triangle], light, rays);
+    if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
+  }
+  return sum * (2.f / float(m_samples));
+}
+
+} // namespace hilight::embree
+
+namespace hilight::embree {
+
+Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex_direct) const {
+  const Scene& scene = m_es.scene();
+  Rgb sum(0.f);
+  const Hit* hits = &m_hits[i * m_samples];
+  for (int k = 0; k < m_samples; ++k) {
+    const Hit& hit = hits[k];
+    if (!hit.valid()) continue;
+    const auto& tri = scene.triangles[hit.triangle];
+    float e = (1.f - hit.u - hit.v) * vertex_direct[tri[0]] + hit.u * vertex_direct[tri[1]] + hit.v * vertex_direct[tri[2]];
     if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
   }
   return sum * (2.f / float(m_samples));

@@ -7,7 +7,7 @@
 /// (each hemisphere's estimate is π/(N/2) Σ L, and L(y) = albedo(y)/π · E_dir(y)).
 /// Unbiased for any N; the error falls as N grows (tests show it).
 #include "direct_light.hpp"
-#include "embree_scene.hpp"
+#include "hilight/ray_scene.hpp"
 #include "hilight/surface_points.hpp"
 
 #include <vector>
@@ -16,20 +16,22 @@ namespace hilight::embree {
 
 class BounceGather {
 public:
-  BounceGather(const EmbreeScene& es, const SurfacePoints& points, int samples, uint64_t seed);
+  BounceGather(const RayScene& es, const SurfacePoints& points, int samples, uint64_t seed);
 
   int samples() const { return m_samples; }
   uint64_t rays_cast() const { return m_rays; }
 
   /// Indirect irradiance (RGB, per unit light intensity) at point i.
   Rgb unit_indirect_irradiance(size_t i, const PreparedLight& light, uint64_t& rays) const;
+  /// The same with the direct irradiance at each hit interpolated from
+  /// `vertex_direct` (one value per scene vertex) instead of shadow rays.
+  Rgb interpolated_indirect_irradiance(size_t i, const float* vertex_direct) const;
 
 private:
-  const EmbreeScene& m_es;
+  const RayScene& m_es;
   int m_samples;
   uint64_t m_rays = 0;
-  std::vector<Hit> m_hits;            ///< point-major, m * samples
-  std::vector<Vec3> m_face_normals;   ///< per triangle, for shadow-ray offsets
+  std::vector<Hit> m_hits;  ///< point-major, m * samples
 };
 
 } // namespace hilight::embree

@@ -18,6 +18,9 @@ namespace hilight {
 
 struct Scene;
 
+/// Which light paths a call computes (the light cache wants them apart).
+enum class Transport { All, DirectOnly, IndirectOnly };
+
 class Renderer {
 public:
   virtual ~Renderer() = default;
@@ -31,7 +34,12 @@ public:
   /// φ: the response of each light with unit white intensity (its own
   /// intensity is ignored; type, position, direction and cone are used).
   /// Result is light-major: element [j * points.size() + i].
-  virtual std::vector<Rgb> unit_responses(const SurfacePoints& points, std::span<const Light> lights) = 0;
+  virtual std::vector<Rgb> unit_responses(const SurfacePoints& points, std::span<const Light> lights,
+                                          Transport transport = Transport::All) = 0;
+
+  /// A string that changes whenever the renderer's settings change its
+  /// results (used to key caches of its output on disk).
+  virtual std::string settings_key() const = 0;
 
   /// An image of the scene from `camera`, shaded by the same model.
   virtual Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) = 0;

@@ -1,12 +1,14 @@
 #pragma once
-/// RAII wrapper of an Embree device and the BVH of one hilight Scene, with the
-/// two queries the renderer needs. Inline so the hot loops have no call
-/// overhead beyond Embree's own.
+/// RAII wrapper of an Embree device and the BVH of one hilight Scene: the
+/// geometric queries of the renderers and the solver (shadow rays, first hits,
+/// nearest surface point, inside-solid tests). occluded() is inline so hot
+/// loops pay nothing beyond Embree's own call.
 #include "hilight/scene.hpp"
 
 #include <embree3/rtcore.h>
+#include <vector>
 
-namespace hilight::embree {
+namespace hilight {
 
 struct Hit {
   uint32_t triangle = RTC_INVALID_GEOMETRY_ID;
@@ -14,12 +16,12 @@ struct Hit {
   bool valid() const { return triangle != RTC_INVALID_GEOMETRY_ID; }
 };
 
-class EmbreeScene {
+class RayScene {
 public:
-  explicit EmbreeScene(const Scene& scene);
-  ~EmbreeScene();
-  EmbreeScene(const EmbreeScene&) = delete;
-  EmbreeScene& operator=(const EmbreeScene&) = delete;
+  explicit RayScene(const Scene& scene);
+  ~RayScene();
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
 
   const Scene& scene() const { return m_scene; }
   /// Offset used to lift ray origins off the surface (scene-relative).
@@ -46,6 +48,16 @@ public:
   /// Surface position and shading normal at a hit.
   Vec3 hit_position(const Hit& hit) const;
   Vec3 hit_normal(const Hit& hit) const;
+  /// Unit geometric normal of every triangle (from its winding).
+  const std::vector<Vec3>& face_normals() const { return m_face_normals; }
+
+  /// The surface point nearest to `p` within `max_distance` (t = distance),
+  /// or an invalid Hit.
+  Hit closest_point(const Vec3& p, float max_distance) const;
+  /// True if `p` is enclosed by geometry that faces away from it: rays in
+  /// 14 directions all hit, and most of them hit a back face (so inside a
+  /// closed, outward-wound object; inside an inward-wound room is free space).
+  bool inside_solid(const Vec3& p) const;
 
   RTCScene rtc_scene() const { return m_rtc_scene; }
 
@@ -54,6 +66,7 @@ private:
   RTCDevice m_device = nullptr;
   RTCScene m_rtc_scene = nullptr;
   float m_epsilon = 1e-4f;
+  std::vector<Vec3> m_face_normals;
 };
 
-} // namespace hilight::embree
+} // namespace hilight

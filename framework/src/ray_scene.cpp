@@ -1,0 +1,175 @@
+#include "hilight/ray_scene.hpp"
+
+#include <algorithm>
+
+#include <stdexcept>
+#include <string>
+
+namespace hilight {
+
+namespace {
+void throw_device_error(RTCDevice device, const char* what) {
+  throw std::runtime_error(std::string("Embree: ") + what + " failed (error " + std::to_string(int(rtcGetDeviceError(device))) + ")");
+}
+} // namespace
+
+RayScene::RayScene(const Scene& scene) : m_scene(scene) {
+  m_device = rtcNewDevice(nullptr);
+  if (!m_device) throw std::runtime_error("Embree: cannot create a device");
+  m_rtc_scene = rtcNewScene(m_device);
+  rtcSetSceneBuildQuality(m_rtc_scene, RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geom = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  // Shared buffers: Embree reads hilight's arrays in place. Vertex buffers
+  // need 16 bytes of padding past the end, hence the copy with one spare float.
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                3 * sizeof(float), scene.positions.size()));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                  3 * sizeof(unsigned), scene.triangles.size()));
+  if (!vertices || !indices) throw_device_error(m_device, "buffer allocation");
+  for (size_t i = 0; i < scene.positions.size(); ++i)
+    for (int k = 0; k < 3; ++k) vertices[3 * i + k] = scene.positions[i][k];
+  for (size_t t = 0; t < scene.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) indices[3 * t + k] = scene.triangles[t][k];
+  rtcCommitGeometry(geom);
+  rtcAttachGeometry(m_rtc_scene, geom);
+  rtcReleaseGeometry(geom);
+  rtcCommitScene(m_rtc_scene);
+  if (rtcGetDeviceError(m_device) != RTC_ERROR_NONE) throw_device_error(m_device, "BVH build");
+  m_epsilon = std::max(1e-6f, 1e-5f * scene.diagonal());
+  m_face_normals.resize(scene.triangles.size());
+  for (size_t t = 0; t < scene.triangles.size(); ++t) m_face_normals[t] = scene.face_normal(t);
+}
+
+RayScene::~RayScene() {
+  if (m_rtc_scene) rtcReleaseScene(m_rtc_scene);
+  if (m_device) rtcReleaseDevice(m_device);
+}
+
+Hit RayScene::intersect(const Vec3& origin, const Vec3& dir, float tfar) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  rh.ray.org_x = origin.x; rh.ray.org_y = origin.y; rh.ray.org_z = origin.z;
+  rh.ray.dir_x = dir.x; rh.ray.dir_y = dir.y; rh.ray.dir_z = dir.z;
+  rh.ray.tnear = 0.f;
+  rh.ray.tfar = tfar;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.ray.flags = 0;
+  rh.ray.time = 0.f;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(m_rtc_scene, &context, &rh);
+  Hit hit;
+  if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+    hit.triangle = rh.hit.primID;
+    hit.u = rh.hit.u;
+    hit.v = rh.hit.v;
+    hit.t = rh.ray.tfar;
+  }
+  return hit;
+}
+
+Vec3 RayScene::hit_position(const Hit& hit) const {
+  const auto& tri = m_scene.triangles[hit.triangle];
+  const auto& p = m_scene.positions;
+  return (1.f - hit.u - hit.v) * p[tri[0]] + hit.u * p[tri[1]] + hit.v * p[tri[2]];
+}
+
+Vec3 RayScene::hit_normal(const Hit& hit) const {
+  const auto& tri = m_scene.triangles[hit.triangle];
+  const auto& n = m_scene.normals;
+  Vec3 s = (1.f - hit.u - hit.v) * n[tri[0]] + hit.u * n[tri[1]] + hit.v * n[tri[2]];
+  float len = glm::length(s);
+  return len > 0.f ? s / len : m_scene.face_normal(hit.triangle);
+}
+
+} // namespace hilight
+
+namespace hilight {
+
+namespace {
+
+// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection
+// 5.1.5), returned with its barycentric (u, v) for b and c.
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, float& u, float& v) {
+  Vec3 ab = b - a, ac = c - a, ap = p - a;
+  float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.f && d2 <= 0.f) { u = 0.f; v = 0.f; return a; }
+  Vec3 bp = p - b;
+  float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.f && d4 <= d3) { u = 1.f; v = 0.f; return b; }
+  float vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.f && d1 >= 0.f && d3 <= 0.f) { float w = d1 / (d1 - d3); u = w; v = 0.f; return a + w * ab; }
+  Vec3 cp = p - c;
+  float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.f && d5 <= d6) { u = 0.f; v = 1.f; return c; }
+  float vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.f && d2 >= 0.f && d6 <= 0.f) { float w = d2 / (d2 - d6); u = 0.f; v = w; return a + w * ac; }
+  float va = d3 * d6 - d5 * d4;
+  if (va <= 0.f && (d4 - d3) >= 0.f && (d5 - d6) >= 0.f) {
+    float w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    u = 1.f - w; v = w;
+    return b + w * (c - b);
+  }
+  float denom = 1.f / (va + vb + vc);
+  u = vb * denom;  // weight of b
+  v = vc * denom;  // weight of c
+  return a + ab * u + ac * v;
+}
+
+struct ClosestQuery {
+  const Scene* scene;
+  Vec3 p;
+  Hit best;
+  float best_d2;
+};
+
+bool closest_callback(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<ClosestQuery*>(args->userPtr);
+  const auto& tri = q->scene->triangles[args->primID];
+  const auto& pos = q->scene->positions;
+  float u, v;
+  Vec3 c = closest_on_triangle(q->p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v);
+  Vec3 d = c - q->p;
+  float d2 = glm::dot(d, d);
+  if (d2 < q->best_d2) {
+    q->best_d2 = d2;
+    q->best.triangle = args->primID;
+    q->best.u = u;
+    q->best.v = v;
+    q->best.t = std::sqrt(d2);
+    args->query->radius = q->best.t;  // shrink the search
+    return true;
+  }
+  return false;
+}
+
+} // namespace
+
+Hit RayScene::closest_point(const Vec3& p, float max_distance) const {
+  RTCPointQuery query;
+  query.x = p.x; query.y = p.y; query.z = p.z;
+  query.radius = max_distance;
+  query.time = 0.f;
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  ClosestQuery q{&m_scene, p, Hit{}, max_distance * max_distance};
+  rtcPointQuery(m_rtc_scene, &query, &context, closest_callback, &q);
+  return q.best;
+}
+
+bool RayScene::inside_solid(const Vec3& p) const {
+  static const Vec3 kDirections[14] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1},
+                                       {0.577f, 0.577f, 0.577f}, {-0.577f, 0.577f, 0.577f}, {0.577f, -0.577f, 0.577f},
+                                       {0.577f, 0.577f, -0.577f}, {-0.577f, -0.577f, 0.577f}, {-0.577f, 0.577f, -0.577f},
+                                       {0.577f, -0.577f, -0.577f}, {-0.577f, -0.577f, -0.577f}};
+  int back = 0;
+  for (const Vec3& d : kDirections) {
+    Hit hit = intersect(p, glm::normalize(d));
+    if (!hit.valid()) return false;  // open to the outside
+    back += glm::dot(m_face_normals[hit.triangle], d) > 0.f;
+  }
+  return back > 7;
+}
+
+} // namespace hilight
