@@ -119,9 +119,13 @@ Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
 
 struct ClosestQuery {
   const Scene* scene;
+  const std::vector<Vec3>* face_normals;
   Vec3 p;
+  Vec3 hint;
+  float tie;  ///< distances within this count as equal
   Hit best;
   float best_d2;
+  float best_alignment = -2.f;
 };
 
 bool closest_callback(RTCPointQueryFunctionArguments* args) {
@@ -132,13 +136,18 @@ bool closest_callback(RTCPointQueryFunctionArguments* args) {
   Vec3 c = closest_on_triangle(q->p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v);
   Vec3 d = c - q->p;
   float d2 = glm::dot(d, d);
-  if (d2 < q->best_d2) {
+  float alignment = glm::dot(q->hint, (*q->face_normals)[args->primID]);
+  float dist = std::sqrt(d2), best = q->best.valid() ? q->best.t : std::sqrt(q->best_d2);
+  bool nearer = dist < best - q->tie;
+  bool tied_better = q->best.valid() && std::abs(dist - best) <= q->tie && alignment > q->best_alignment + 1e-4f;
+  if (nearer || tied_better || (!q->best.valid() && d2 <= q->best_d2)) {
+    q->best_alignment = alignment;
     q->best_d2 = d2;
     q->best.triangle = args->primID;
     q->best.u = u;
     q->best.v = v;
-    q->best.t = std::sqrt(d2);
-    args->query->radius = q->best.t;  // shrink the search
+    q->best.t = dist;
+    args->query->radius = dist + q->tie;  // shrink the search, keeping ties in reach
     return true;
   }
   return false;
@@ -146,14 +155,14 @@ bool closest_callback(RTCPointQueryFunctionArguments* args) {
 
 } // namespace
 
-Hit RayScene::closest_point(const Vec3& p, float max_distance) const {
+Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& normal_hint) const {
   RTCPointQuery query;
   query.x = p.x; query.y = p.y; query.z = p.z;
   query.radius = max_distance;
   query.time = 0.f;
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
-  ClosestQuery q{&m_scene, p, Hit{}, max_distance * max_distance};
+  ClosestQuery q{&m_scene, &m_face_normals, p, normal_hint, m_epsilon, Hit{}, max_distance * max_distance};
   rtcPointQuery(m_rtc_scene, &query, &context, closest_callback, &q);
   return q.best;
 }

@@ -24,6 +24,11 @@ void PluginRegistrar::frontend(FrontendFactory create) {
   m_record.create_frontend = std::move(create);
 }
 
+void PluginRegistrar::optimizer(OptimizerFactory create) {
+  if (m_record.kind != "optimizer") throw std::logic_error("module " + m_record.name + " registers an optimizer but says it is a " + m_record.kind);
+  m_record.create_optimizer = std::move(create);
+}
+
 std::vector<fs::path> Registry::default_search_dirs(const fs::path& executable) {
   std::vector<fs::path> dirs;
   std::error_code ec;
@@ -130,6 +135,13 @@ std::unique_ptr<Renderer> Registry::create_renderer(const std::string& name, con
   auto renderer = m.create_renderer(properties);
   properties.expect_all_queried("renderer " + name);
   return renderer;
+}
+
+std::unique_ptr<Optimizer> Registry::create_optimizer(const std::string& name, const Properties& properties) const {
+  const ModuleRecord& m = require("optimizer", name);
+  auto optimizer = m.create_optimizer(properties);
+  properties.expect_all_queried("optimizer " + name);
+  return optimizer;
 }
 
 Frontend* Registry::frontend_for(const std::string& command) {

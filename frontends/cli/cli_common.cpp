@@ -3,12 +3,22 @@
 #include "hilight/error.hpp"
 #include "hilight/threads.hpp"
 
+#include <cmath>
 #include <iostream>
 #include <unistd.h>
 
 namespace hilight::cli {
 
 namespace fs = std::filesystem;
+
+const CLI::Validator FiniteNonNegative(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      double v = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !std::isfinite(v) || v < 0) return "'" + text + "' is not a finite number >= 0";
+      return {};
+    },
+    "NUMBER >= 0");
 
 std::optional<int> parse(CLI::App& app, const std::vector<std::string>& args) {
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them back to front

@@ -30,6 +30,9 @@ struct RendererOptions {
   std::unique_ptr<Renderer> create(const Registry& registry, std::shared_ptr<const Scene> scene) const;
 };
 
+/// CLI11 validator: a finite number ≥ 0 (NonNegativeNumber lets NaN through).
+extern const CLI::Validator FiniteNonNegative;
+
 /// Fails early (before any work) if `path` cannot be created.
 void check_writable(const std::filesystem::path& path);
 

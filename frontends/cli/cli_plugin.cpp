@@ -12,12 +12,14 @@ public:
   std::vector<CommandInfo> commands() const override {
     return {{"info", "print a scene's size, bounds and tessellation"},
             {"render", "illuminate a scene with lights: PLY per vertex, PNG/EXR image"},
+            {"solve", "find the lights that produce a target illumination"},
             {"plugins", "list plugin modules, their versions and availability"},
             {"bench", "measure renderer throughput (machine-readable JSON lines)"}};
   }
   int run(const std::string& command, const std::vector<std::string>& args, Registry& registry) override {
     if (command == "info") return run_info(args);
     if (command == "render") return run_render(args, registry);
+    if (command == "solve") return run_solve(args, registry);
     if (command == "plugins") return run_plugins(args, registry);
     if (command == "bench") return run_bench(args, registry);
     return 2;
@@ -31,5 +33,5 @@ void register_cli(PluginRegistrar& registrar) {
 } // namespace
 } // namespace hilight::cli
 
-HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, "0.1.0", "command-line interface: info, render, plugins, bench",
+HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, "0.1.0", "command-line interface: info, render, solve, plugins, bench",
                hilight::cli::register_cli)

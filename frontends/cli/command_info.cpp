@@ -13,7 +13,7 @@ int run_info(const std::vector<std::string>& args) {
   float max_edge = 0.f;
   bool as_json = false;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
-  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::NonNegativeNumber);
+  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
   app.add_flag("--json", as_json, "print JSON instead of text");
   if (auto code = parse(app, args)) return *code;
 

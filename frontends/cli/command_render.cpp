@@ -47,11 +47,11 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
   app.add_option("--lights", lights_path, "lights JSON file")->required();
   app.add_option("-o,--output", outputs, "output: OUT.ply, OUT.png, OUT.exr, or OUT for .ply + .png (repeatable)")->required();
-  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::NonNegativeNumber);
+  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
   app.add_option("--camera", camera_text, "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (default frames the scene)");
   app.add_option("--width", width, "image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
-  app.add_option("--exposure", exposure, "PNG exposure multiplier (default: automatic)")->check(CLI::NonNegativeNumber);
+  app.add_option("--exposure", exposure, "PNG exposure multiplier (default: automatic)")->check(FiniteNonNegative);
   ropts.add_to(app);
   if (auto code = parse(app, args)) return *code;
 

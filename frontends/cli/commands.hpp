@@ -9,5 +9,6 @@ namespace hilight::cli {
 int run_info(const std::vector<std::string>& args);
 int run_render(const std::vector<std::string>& args, Registry& registry);
 int run_plugins(const std::vector<std::string>& args, Registry& registry);
+int run_solve(const std::vector<std::string>& args, Registry& registry);
 int run_bench(const std::vector<std::string>& args, Registry& registry);
 } // namespace hilight::cli

@@ -2,6 +2,7 @@
 /// Finds, checks and loads plugin modules, and creates plugins by name.
 /// Modules are never unloaded: objects they created may outlive any scope.
 #include "hilight/frontend.hpp"
+#include "hilight/optimizer.hpp"
 #include "hilight/properties.hpp"
 #include "hilight/renderer.hpp"
 
@@ -17,6 +18,7 @@ using RendererFactory = std::function<std::unique_ptr<Renderer>(const Properties
 /// Returns "" when the plugin can run here, else why not (e.g. "no Vulkan device").
 using ProbeFunction = std::function<std::string()>;
 using FrontendFactory = std::function<std::unique_ptr<Frontend>()>;
+using OptimizerFactory = std::function<std::unique_ptr<Optimizer>(const Properties&)>;
 
 struct ModuleRecord {
   std::filesystem::path path;
@@ -27,6 +29,7 @@ struct ModuleRecord {
   RendererFactory create_renderer;
   ProbeFunction probe;
   FrontendFactory create_frontend;
+  OptimizerFactory create_optimizer;
 };
 
 /// Handed to a module's register function; binds what it registers to its record.
@@ -35,6 +38,7 @@ public:
   explicit PluginRegistrar(ModuleRecord& record) : m_record(record) {}
   void renderer(RendererFactory create, ProbeFunction probe = {});
   void frontend(FrontendFactory create);
+  void optimizer(OptimizerFactory create);
 
 private:
   ModuleRecord& m_record;
@@ -60,6 +64,8 @@ public:
   /// Creates a renderer; InputError for an unknown or unavailable one, or an
   /// option it did not read.
   std::unique_ptr<Renderer> create_renderer(const std::string& name, const Properties& properties) const;
+  /// Creates an optimizer; InputError for an unknown one or an unread option.
+  std::unique_ptr<Optimizer> create_optimizer(const std::string& name, const Properties& properties) const;
 
   /// The frontend that owns `command`, created on first use; nullptr if none.
   Frontend* frontend_for(const std::string& command);

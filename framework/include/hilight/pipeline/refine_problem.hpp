@@ -1,0 +1,44 @@
+#pragma once
+/// RefineProblem over a sample set: φ per light from the ResponseModel, kept
+/// per light (so moving one light of several costs one light's φ), and the
+/// admissibility rule for light positions.
+#include "hilight/optimizer.hpp"
+#include "hilight/pipeline/responses.hpp"
+#include "hilight/ray_scene.hpp"
+
+#include <string>
+#include <unordered_map>
+
+namespace hilight {
+
+class SampleRefineProblem final : public RefineProblem {
+public:
+  /// `exact`: the same samples without the light cache, used to anchor lights
+  /// (may be null: no anchoring).
+  SampleRefineProblem(ResponseModel& model, const RayScene& rays, ResponseModel* exact = nullptr)
+      : m_model(model), m_rays(rays), m_exact(exact) {}
+
+  /// Anchors light j of every later call at `lights[j]`: its response gets
+  /// the correction exact(anchor) − model(anchor), which removes the light
+  /// cache's interpolation error near the anchor (lights move little in
+  /// refinement). Call again after large moves.
+  void anchor(const Lighting& lights);
+
+  double objective(std::span<const Light> lights) override;
+  double objective_with_best_intensities(std::vector<Light>& lights) override;
+  bool admissible(const Vec3& p) const override;
+  float scale() const override { return m_rays.scene().diagonal(); }
+
+  /// Unit responses of `lights` (light-major), from the per-light store.
+  std::vector<Rgb> responses(std::span<const Light> lights);
+
+private:
+  const std::vector<Rgb>& phi_of(const Light& light);
+  ResponseModel& m_model;
+  const RayScene& m_rays;
+  ResponseModel* m_exact;
+  std::vector<std::vector<Rgb>> m_correction;  ///< per light index (empty: none)
+  std::unordered_map<std::string, std::vector<Rgb>> m_phi;  ///< keyed by the light's geometry bytes
+};
+
+} // namespace hilight

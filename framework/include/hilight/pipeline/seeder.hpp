@@ -1,0 +1,29 @@
+#pragma once
+/// The initial lighting configuration (paper §3.2, Fig. 2): unit lights at the
+/// centres of coarse cells in free space, intensities by NNLS, weak lights
+/// deleted (eq. 6) and the rest re-solved; cells that kept a light are split
+/// into 8 and the spread–solve–delete step repeats.
+#include "hilight/pipeline/responses.hpp"
+#include "hilight/ray_scene.hpp"
+
+namespace hilight {
+
+struct SeedSettings {
+  int coarse_cells = 6;         ///< cells along the scene's longest axis at the first level
+  int iterations = 2;           ///< levels of spreading (the paper: 2)
+  double weak_threshold = 0.05; ///< ε_w of eq. 6
+};
+
+struct SeedResult {
+  Lighting lights;          ///< point lights that survived, with intensities, then the spots
+  std::vector<Rgb> phi;     ///< their responses, light-major
+  size_t spot_count = 0;    ///< the last spot_count lights are the given spotlights
+  double dbar = 0.0;        ///< D̄ at the samples
+  size_t lights_tried = 0;  ///< unit lights spread over all levels
+};
+
+/// `spots`: spotlights the target asked for (fixed positions/directions);
+/// they join every NNLS and are never deleted.
+SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lighting& spots, const SeedSettings& settings);
+
+} // namespace hilight

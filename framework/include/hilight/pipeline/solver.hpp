@@ -1,0 +1,96 @@
+#pragma once
+/// The shared pipeline of every frontend: samples → light cache → seeding →
+/// hierarchy → cuts → refinement → light count; plus the editing modes of
+/// §4.2 (fine-tune, add lights). The CLI and the painter both call this.
+#include "hilight/light_cache.hpp"
+#include "hilight/optimizer.hpp"
+#include "hilight/pipeline/hierarchy.hpp"
+#include "hilight/pipeline/seeder.hpp"
+#include "hilight/target.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace hilight {
+
+struct SolveSettings {
+  SamplerSettings sampler;
+  SeedSettings seeding;
+  HierarchySettings hierarchy;
+  LightCacheSettings cache;
+  bool use_cache = true;             ///< false: every φ from the renderer
+  std::filesystem::path cache_dir;   ///< empty: keep the cache in memory only
+  size_t n_cut = 4;                  ///< N_cut: cuts refined
+  double eps_opt = 0.15;             ///< ε_opt: only cuts with D̄ below are refined
+  double eps_impro = 1.6;            ///< ε_impro of eq. 9
+  size_t fixed_count = 0;            ///< --lights N (0: automatic)
+  Lighting spot_hints;               ///< spotlights the user asked for
+};
+
+struct CutRecord {
+  size_t lights = 0;        ///< point lights of the cut (spots are added to every cut)
+  double dbar_initial = 0;  ///< D̄ at the samples, intensities re-fitted by NNLS
+  bool refined = false;
+  double dbar_refined = 0;
+  Lighting refined_lights;
+};
+
+struct SolveReport {
+  size_t chosen = 0;                 ///< lights in the result (point + spot)
+  double dbar = 0;                   ///< D̄ of the result over the whole target
+  double dbar_samples = 0;           ///< ...and over the samples
+  std::vector<CutRecord> cuts;       ///< in order of light count
+  std::vector<double> improvement;   ///< eq. 9 between consecutive cuts
+  size_t samples = 0, target_points = 0;
+  size_t seed_lights = 0, seeds_tried = 0;
+  size_t light_evaluations = 0;      ///< lights whose φ was computed
+  std::string cache_state;           ///< "loaded", "built", "off"
+  std::map<std::string, double> seconds;
+};
+
+using ProgressFn = std::function<void(const std::string& stage)>;
+
+/// A solve session over one scene: keeps the ray scene, renderer and light
+/// cache alive so later edits (fine-tune, add) reuse them.
+class Solver {
+public:
+  /// `renderer`: the renderer the solve evaluates φ with (already bound to `scene`).
+  Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
+         Optimizer& optimizer, SolveSettings settings, ProgressFn progress = {});
+
+  /// Full solve: the lights for `target`.
+  Lighting solve(const Target& target, SolveReport& report);
+  /// Re-optimizes `lights` against `target` without adding or removing any.
+  Lighting fine_tune(const Target& target, const Lighting& lights, SolveReport& report);
+  /// Solves for max(Ψ − I(lights), 0) and returns `lights` followed by the new ones.
+  Lighting add_lights(const Target& target, const Lighting& lights, SolveReport& report);
+
+  /// Illumination of `lights` at every target point from the renderer itself
+  /// (no light cache): what D̄ in reports is measured on.
+  std::vector<Rgb> illumination(const Target& target, const Lighting& lights);
+  /// The hierarchy of the last solve (for moving between cuts).
+  const std::optional<LightHierarchy>& hierarchy() const { return m_hierarchy; }
+
+private:
+  void ensure_cache(SolveReport& report);
+  Lighting solve_samples(const SampleSet& samples, SolveReport& report);
+  /// Refines `start`, anchored at it, then re-anchored at the result and polished.
+  Lighting refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar);
+  void finish_report(const Target& target, const Lighting& lights, SolveReport& report);
+  float neighbourhood_radius() const;
+
+  std::shared_ptr<const Scene> m_scene;
+  std::shared_ptr<const RayScene> m_rays;
+  Renderer& m_renderer;
+  Optimizer& m_optimizer;
+  SolveSettings m_settings;
+  ProgressFn m_progress;
+  std::optional<LightCache> m_cache;
+  std::optional<LightHierarchy> m_hierarchy;
+};
+
+} // namespace hilight

@@ -1,0 +1,184 @@
+#include "hilight/light_cache.hpp"
+
+#include "hilight/io/atomic_file.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <tbb/parallel_for.h>
+
+namespace hilight {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr uint32_t kFormatVersion = 1;
+constexpr char kMagic[8] = {'H', 'L', 'C', 'A', 'C', 'H', 'E', '1'};
+
+uint64_t fnv(uint64_t h, const void* data, size_t bytes) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (size_t i = 0; i < bytes; ++i) {
+    h ^= p[i];
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+} // namespace
+
+uint64_t LightCache::key(const Scene& scene, const std::string& renderer_key, const LightCacheSettings& settings) {
+  uint64_t h = 1469598103934665603ull;
+  h = fnv(h, &kFormatVersion, sizeof(kFormatVersion));
+  h = fnv(h, scene.positions.data(), scene.positions.size() * sizeof(Vec3));
+  h = fnv(h, scene.normals.data(), scene.normals.size() * sizeof(Vec3));
+  h = fnv(h, scene.triangles.data(), scene.triangles.size() * sizeof(scene.triangles[0]));
+  h = fnv(h, scene.triangle_material.data(), scene.triangle_material.size() * sizeof(uint32_t));
+  for (const auto& m : scene.materials) h = fnv(h, &m.albedo, sizeof(m.albedo));
+  h = fnv(h, renderer_key.data(), renderer_key.size());
+  h = fnv(h, &settings.cells_along_longest_axis, sizeof(int));
+  return h;
+}
+
+LightCache LightCache::build(const Scene& scene, const RayScene& rays, Renderer& renderer, const LightCacheSettings& settings) {
+  LightCache cache;
+  const Bounds& b = scene.bounds;
+  Vec3 extent = b.extent();
+  float longest = std::max(extent.x, std::max(extent.y, extent.z));
+  float cell = longest / float(std::max(1, settings.cells_along_longest_axis));
+  // Nodes at cell centres: never on the bounding walls.
+  for (int k = 0; k < 3; ++k) {
+    cache.m_dims[k] = std::max(1, int(std::ceil(extent[k] / cell - 1e-4f)));
+    cache.m_spacing[k] = extent[k] / float(cache.m_dims[k]);
+    cache.m_origin[k] = b.lo[k] + 0.5f * cache.m_spacing[k];
+  }
+  const size_t nodes = size_t(cache.m_dims.x) * cache.m_dims.y * cache.m_dims.z;
+  cache.m_node_valid.assign(nodes, 0);
+  cache.m_node_slot.assign(nodes, UINT32_MAX);
+  const float clearance = 1e-3f * scene.diagonal();
+  tbb::parallel_for(size_t(0), nodes, [&](size_t n) {
+    int x = int(n % cache.m_dims.x), y = int((n / cache.m_dims.x) % cache.m_dims.y), z = int(n / (size_t(cache.m_dims.x) * cache.m_dims.y));
+    Vec3 p = cache.node_position(x, y, z);
+    cache.m_node_valid[n] = !rays.inside_solid(p) && !rays.closest_point(p, clearance).valid();
+  });
+  Lighting lights;
+  for (size_t n = 0; n < nodes; ++n)
+    if (cache.m_node_valid[n]) {
+      cache.m_node_slot[n] = uint32_t(lights.size());
+      int x = int(n % cache.m_dims.x), y = int((n / cache.m_dims.x) % cache.m_dims.y), z = int(n / (size_t(cache.m_dims.x) * cache.m_dims.y));
+      lights.push_back(Light::point(cache.node_position(x, y, z), Rgb(1.f)));
+    }
+  cache.m_vertex_count = scene.positions.size();
+  cache.m_key = key(scene, renderer.settings_key(), settings);
+  if (!lights.empty()) cache.m_data = renderer.unit_responses(SurfacePoints::from_vertices(scene), lights, Transport::IndirectOnly);
+  return cache;
+}
+
+size_t LightCache::valid_node_count() const {
+  size_t n = 0;
+  for (auto v : m_node_valid) n += v;
+  return n;
+}
+
+void LightCache::save(const fs::path& file) const {
+  std::error_code ec;
+  fs::create_directories(file.parent_path(), ec);
+  write_atomically(file, [&](const fs::path& temp) {
+    std::ofstream out(temp, std::ios::binary);
+    uint64_t counts[3] = {m_vertex_count, m_node_valid.size(), m_data.size()};
+    out.write(kMagic, sizeof(kMagic));
+    out.write(reinterpret_cast<const char*>(&m_key), sizeof(m_key));
+    out.write(reinterpret_cast<const char*>(counts), sizeof(counts));
+    out.write(reinterpret_cast<const char*>(&m_origin), sizeof(m_origin));
+    out.write(reinterpret_cast<const char*>(&m_spacing), sizeof(m_spacing));
+    out.write(reinterpret_cast<const char*>(&m_dims), sizeof(m_dims));
+    out.write(reinterpret_cast<const char*>(m_node_valid.data()), std::streamsize(m_node_valid.size()));
+    out.write(reinterpret_cast<const char*>(m_node_slot.data()), std::streamsize(m_node_slot.size() * sizeof(uint32_t)));
+    out.write(reinterpret_cast<const char*>(m_data.data()), std::streamsize(m_data.size() * sizeof(Rgb)));
+    if (!out) throw std::runtime_error("light cache: write failed");
+  });
+}
+
+std::optional<LightCache> LightCache::load(const fs::path& file, uint64_t key, size_t vertex_count) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  char magic[8];
+  LightCache c;
+  uint64_t counts[3];
+  in.read(magic, sizeof(magic));
+  in.read(reinterpret_cast<char*>(&c.m_key), sizeof(c.m_key));
+  in.read(reinterpret_cast<char*>(counts), sizeof(counts));
+  if (!in || std::memcmp(magic, kMagic, sizeof(kMagic)) != 0 || c.m_key != key || counts[0] != vertex_count) return std::nullopt;
+  if (counts[1] > (1u << 24)) return std::nullopt;
+  c.m_vertex_count = counts[0];
+  in.read(reinterpret_cast<char*>(&c.m_origin), sizeof(c.m_origin));
+  in.read(reinterpret_cast<char*>(&c.m_spacing), sizeof(c.m_spacing));
+  in.read(reinterpret_cast<char*>(&c.m_dims), sizeof(c.m_dims));
+  if (!in || size_t(c.m_dims.x) * c.m_dims.y * c.m_dims.z != counts[1]) return std::nullopt;
+  c.m_node_valid.resize(counts[1]);
+  c.m_node_slot.resize(counts[1]);
+  in.read(reinterpret_cast<char*>(c.m_node_valid.data()), std::streamsize(counts[1]));
+  in.read(reinterpret_cast<char*>(c.m_node_slot.data()), std::streamsize(counts[1] * sizeof(uint32_t)));
+  if (counts[2] != c.valid_node_count() * counts[0]) return std::nullopt;
+  c.m_data.resize(counts[2]);
+  in.read(reinterpret_cast<char*>(c.m_data.data()), std::streamsize(counts[2] * sizeof(Rgb)));
+  if (!in) return std::nullopt;
+  return c;
+}
+
+LightCacheView::LightCacheView(const LightCache& cache, const Scene& scene, const SampleSet& samples)
+    : m_cache(cache), m_samples(samples.size()) {
+  const size_t slots = cache.valid_node_count(), m = samples.size(), vc = cache.m_vertex_count;
+  m_data.resize(slots * m);
+  tbb::parallel_for(size_t(0), slots, [&](size_t s) {
+    const Rgb* node = &cache.m_data[s * vc];
+    for (size_t i = 0; i < m; ++i) {
+      const SurfaceBinding& b = samples.binding[i];
+      const auto& tri = scene.triangles[b.triangle];
+      m_data[s * m + i] = (1.f - b.u - b.v) * node[tri[0]] + b.u * node[tri[1]] + b.v * node[tri[2]];
+    }
+  });
+}
+
+void LightCacheView::add_indirect(const Vec3& position, Rgb* out) const {
+  const LightCache& c = m_cache;
+  Vec3 g = (position - c.m_origin) / c.m_spacing;
+  glm::ivec3 base;
+  Vec3 f;
+  for (int k = 0; k < 3; ++k) {
+    float clamped = std::clamp(g[k], 0.f, float(c.m_dims[k] - 1));
+    base[k] = std::min(int(std::floor(clamped)), std::max(0, c.m_dims[k] - 2));
+    f[k] = c.m_dims[k] > 1 ? clamped - float(base[k]) : 0.f;
+  }
+  uint32_t slots[8];
+  float weights[8];
+  int used = 0;
+  float total = 0.f;
+  for (int corner = 0; corner < 8; ++corner) {
+    glm::ivec3 q = base + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+    if (q.x >= c.m_dims.x || q.y >= c.m_dims.y || q.z >= c.m_dims.z) continue;
+    size_t node = size_t(q.x) + size_t(c.m_dims.x) * (size_t(q.y) + size_t(c.m_dims.y) * size_t(q.z));
+    if (!c.m_node_valid[node]) continue;
+    float w = (corner & 1 ? f.x : 1.f - f.x) * (corner & 2 ? f.y : 1.f - f.y) * (corner & 4 ? f.z : 1.f - f.z);
+    if (w <= 0.f) continue;
+    slots[used] = c.m_node_slot[node];
+    weights[used++] = w;
+    total += w;
+  }
+  if (used == 0 || total <= 0.f) return;  // surrounded by solid: no cached bounce
+  for (int k = 0; k < used; ++k) {
+    const Rgb* col = &m_data[size_t(slots[k]) * m_samples];
+    float w = weights[k] / total;
+    for (size_t i = 0; i < m_samples; ++i) out[i] += w * col[i];
+  }
+}
+
+fs::path default_cache_dir() {
+  if (const char* d = std::getenv("HILIGHT_CACHE_DIR"); d && *d) return d;
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "hilight";
+  if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".cache" / "hilight";
+  return fs::temp_directory_path() / "hilight-cache";
+}
+
+} // namespace hilight

@@ -1,0 +1,261 @@
+#include "hilight/pipeline/solver.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/pipeline/fit.hpp"
+#include "hilight/pipeline/refine_problem.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+namespace hilight {
+
+namespace {
+
+class Stopwatch {
+public:
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count(); }
+
+private:
+  std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
+};
+
+std::string hex(uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+/// Lights of cut `k` (positions and summed intensities) followed by the spots.
+Lighting cut_lights(const LightHierarchy& h, size_t k, const Lighting& spots, std::vector<Rgb>& phi, size_t m) {
+  Lighting lights;
+  phi.clear();
+  for (int node : h.cut(k)) {
+    const Cluster& c = h.nodes()[node];
+    lights.push_back(Light::point(c.position, c.intensity));
+    phi.insert(phi.end(), c.phi.begin(), c.phi.end());
+  }
+  (void)m;
+  lights.insert(lights.end(), spots.begin(), spots.end());
+  return lights;
+}
+
+} // namespace
+
+Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
+               Optimizer& optimizer, SolveSettings settings, ProgressFn progress)
+    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_renderer(renderer), m_optimizer(optimizer),
+      m_settings(std::move(settings)), m_progress(std::move(progress)) {}
+
+float Solver::neighbourhood_radius() const { return 2.f * std::max(m_scene->max_edge, 1e-3f * m_scene->diagonal()); }
+
+void Solver::ensure_cache(SolveReport& report) {
+  if (!m_settings.use_cache) {
+    report.cache_state = "off";
+    return;
+  }
+  if (m_cache) {
+    report.cache_state = "in memory";
+    return;
+  }
+  Stopwatch watch;
+  uint64_t key = LightCache::key(*m_scene, m_renderer.settings_key(), m_settings.cache);
+  std::filesystem::path file;
+  if (!m_settings.cache_dir.empty()) {
+    file = m_settings.cache_dir / ("lightcache-" + hex(key) + ".bin");
+    m_cache = LightCache::load(file, key, m_scene->positions.size());
+  }
+  if (m_cache) {
+    report.cache_state = "loaded";
+  } else {
+    if (m_progress) m_progress("building the light cache");
+    m_cache = LightCache::build(*m_scene, *m_rays, m_renderer, m_settings.cache);
+    report.cache_state = "built";
+    if (!file.empty()) {
+      try {
+        m_cache->save(file);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "hilight: warning: light cache not saved to %s: %s\n", file.c_str(), e.what());
+      }
+    }
+  }
+  report.seconds["cache"] += watch.seconds();
+}
+
+Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
+  const size_t m = samples.size();
+  std::optional<LightCacheView> view;
+  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
+  ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
+
+  if (m_progress) m_progress("seeding");
+  Stopwatch seed_watch;
+  SeedResult seed = seed_lights(model, *m_rays, m_settings.spot_hints, m_settings.seeding);
+  report.seconds["seeding"] += seed_watch.seconds();
+  const size_t n_points = seed.lights.size() - seed.spot_count;
+  report.seed_lights = n_points;
+  report.seeds_tried = seed.lights_tried;
+  if (n_points == 0 && seed.spot_count == 0) throw InputError("the seeding found no light that brightens the target");
+  if (m_settings.fixed_count > n_points)
+    throw InputError("--lights " + std::to_string(m_settings.fixed_count) + ": the seeding found only " +
+                     std::to_string(n_points) + " candidate lights (lower --lights, or --weak-threshold)");
+
+  if (m_progress) m_progress("building the light hierarchy");
+  Stopwatch hierarchy_watch;
+  Lighting leaves(seed.lights.begin(), seed.lights.begin() + std::ptrdiff_t(n_points));
+  std::vector<Rgb> leaf_phi(seed.phi.begin(), seed.phi.begin() + std::ptrdiff_t(n_points * m));
+  std::vector<Rgb> spot_phi(seed.phi.begin() + std::ptrdiff_t(n_points * m), seed.phi.end());
+  Lighting spots(seed.lights.begin() + std::ptrdiff_t(n_points), seed.lights.end());
+  std::vector<Rgb> spot_l;
+  for (const auto& s : spots) spot_l.push_back(s.intensity);
+  m_hierarchy = LightHierarchy::build(model, leaves, leaf_phi, spot_phi, spot_l, m_settings.hierarchy);
+  report.seconds["hierarchy"] += hierarchy_watch.seconds();
+
+  // Every cut's D̄ with intensities re-fitted (a better start than the sums).
+  report.cuts.assign(n_points, {});
+  std::vector<Lighting> starts(n_points);
+  for (size_t k = 1; k <= n_points; ++k) {
+    std::vector<Rgb> phi;
+    Lighting lights = cut_lights(*m_hierarchy, k, spots, phi, m);
+    phi.insert(phi.end(), spot_phi.begin(), spot_phi.end());
+    std::vector<Rgb> l = fit_intensities(phi, lights.size(), samples);
+    for (size_t j = 0; j < lights.size(); ++j) lights[j].intensity = l[j];
+    report.cuts[k - 1].lights = k;
+    report.cuts[k - 1].dbar_initial = normalized_difference(combine(phi, l, m), samples);
+    starts[k - 1] = std::move(lights);
+  }
+
+  // Which cuts to refine: the fixed one, or the first N_cut below ε_opt.
+  std::vector<size_t> chosen;
+  if (m_settings.fixed_count > 0) {
+    chosen.push_back(m_settings.fixed_count);
+  } else {
+    for (size_t k = 1; k <= n_points && chosen.size() < m_settings.n_cut; ++k)
+      if (report.cuts[k - 1].dbar_initial < m_settings.eps_opt) chosen.push_back(k);
+    if (chosen.empty()) {  // nothing is good yet: refine the best few
+      std::vector<size_t> order(n_points);
+      for (size_t k = 0; k < n_points; ++k) order[k] = k + 1;
+      std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return report.cuts[a - 1].dbar_initial < report.cuts[b - 1].dbar_initial; });
+      order.resize(std::min(order.size(), m_settings.n_cut));
+      std::sort(order.begin(), order.end());
+      chosen = order;
+    }
+  }
+
+  Stopwatch refine_watch;
+  ResponseModel exact(m_renderer, samples, nullptr);
+  auto refine_cut = [&](size_t k) {
+    if (m_progress) m_progress("refining the cut with " + std::to_string(k) + " lights");
+    CutRecord& rec = report.cuts[k - 1];
+    rec.refined_lights = refine_anchored(model, exact, starts[k - 1], rec.dbar_refined);
+    rec.refined = true;
+  };
+  auto dbar_of = [&](size_t k) { return report.cuts[k - 1].refined ? report.cuts[k - 1].dbar_refined : report.cuts[k - 1].dbar_initial; };
+  // Count (eq. 9): from the first chosen cut, take the next while it improves
+  // D̄ by at least ε_impro. Cuts are refined lazily, only as the walk needs
+  // them: the same choice as refining all N_cut first, at less cost.
+  size_t count = chosen.front();
+  refine_cut(count);
+  if (m_settings.fixed_count == 0)
+    for (size_t q = 1; q < chosen.size() && chosen[q] == count + 1; ++q) {
+      refine_cut(count + 1);
+      if (!(dbar_of(count + 1) > 0) || dbar_of(count) / dbar_of(count + 1) < m_settings.eps_impro) break;
+      ++count;
+    }
+  report.seconds["refinement"] += refine_watch.seconds();
+  for (size_t k = 1; k < n_points; ++k) {
+    double next = dbar_of(k + 1);
+    report.improvement.push_back(next > 0 ? dbar_of(k) / next : 0.0);
+  }
+  report.dbar_samples = report.cuts[count - 1].dbar_refined;
+  return report.cuts[count - 1].refined_lights;
+}
+
+Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar) {
+  SampleRefineProblem problem(model, *m_rays, m_cache ? &exact : nullptr);
+  problem.anchor(start);
+  const double start_value = problem.objective(start);
+  Lighting refined = m_optimizer.refine(problem, start);
+  if (m_cache) {  // the anchor was the start: re-anchor where the lights went and polish
+    problem.anchor(refined);
+    Lighting polished = m_optimizer.refine(problem, refined);
+    if (problem.objective(polished) <= problem.objective(refined)) refined = polished;
+  }
+  // Each value is accurate at its own anchor, so the two compare fairly.
+  double value = problem.objective(refined);
+  if (value > start_value) refined = start, value = start_value;  // refinement may only help
+  dbar = std::sqrt(std::max(0.0, value)) / model.samples().target_norm();
+  return refined;
+}
+
+std::vector<Rgb> Solver::illumination(const Target& target, const Lighting& lights) {
+  SampleSet all = all_samples(target);
+  ResponseModel model(m_renderer, all, nullptr);
+  std::vector<Rgb> intensities;
+  for (const auto& l : lights) intensities.push_back(l.intensity);
+  return combine(model.responses(lights), intensities, all.size());
+}
+
+void Solver::finish_report(const Target& target, const Lighting& lights, SolveReport& report) {
+  Stopwatch watch;
+  SampleSet all = all_samples(target);
+  report.dbar = normalized_difference(illumination(target, lights), all);
+  report.chosen = lights.size();
+  report.target_points = target.size();
+  report.seconds["evaluation"] += watch.seconds();
+}
+
+Lighting Solver::solve(const Target& target, SolveReport& report) {
+  Stopwatch total;
+  ensure_cache(report);
+  if (m_progress) m_progress("sampling");
+  Stopwatch sample_watch;
+  SampleSet samples = draw_samples(target, neighbourhood_radius(), m_settings.sampler);
+  report.samples = samples.size();
+  report.seconds["sampling"] += sample_watch.seconds();
+  Lighting lights = solve_samples(samples, report);
+  finish_report(target, lights, report);
+  report.seconds["total"] = total.seconds();
+  return lights;
+}
+
+Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveReport& report) {
+  Stopwatch total;
+  ensure_cache(report);
+  Stopwatch sample_watch;
+  SampleSet samples = draw_samples(target, neighbourhood_radius(), m_settings.sampler);
+  report.samples = samples.size();
+  report.seconds["sampling"] += sample_watch.seconds();
+  std::optional<LightCacheView> view;
+  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
+  ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
+  ResponseModel exact(m_renderer, samples, nullptr);
+  Stopwatch refine_watch;
+  Lighting refined = refine_anchored(model, exact, lights, report.dbar_samples);
+  report.seconds["refinement"] += refine_watch.seconds();
+  finish_report(target, refined, report);
+  report.seconds["total"] = total.seconds();
+  return refined;
+}
+
+Lighting Solver::add_lights(const Target& target, const Lighting& lights, SolveReport& report) {
+  Stopwatch total;
+  ensure_cache(report);
+  // ΔΨ = max(Ψ − I(L), 0): what the current lights leave to be lit.
+  std::vector<Rgb> current = illumination(target, lights);
+  Target missing = target;
+  for (size_t i = 0; i < missing.size(); ++i) missing.value[i] = glm::max(target.value[i] - current[i], Rgb(0.f));
+  if (!(missing.norm() > 1e-6 * target.norm())) throw InputError(target.source, "the given lights already produce the whole target: nothing to add");
+  Stopwatch sample_watch;
+  SampleSet samples = draw_samples(missing, neighbourhood_radius(), m_settings.sampler);
+  report.samples = samples.size();
+  report.seconds["sampling"] += sample_watch.seconds();
+  Lighting added = solve_samples(samples, report);
+  Lighting all = lights;
+  all.insert(all.end(), added.begin(), added.end());
+  finish_report(target, all, report);
+  report.seconds["total"] = total.seconds();
+  return all;
+}
+
+} // namespace hilight

@@ -1,0 +1,75 @@
+#include "hilight/target.hpp"
+
+#include "hilight/error.hpp"
+
+#include <cmath>
+#include <tbb/parallel_for.h>
+
+namespace hilight {
+
+double Target::norm() const {
+  double sum = 0;
+  for (size_t i = 0; i < value.size(); ++i) sum += weight[i] * glm::dot(DVec3(value[i]), DVec3(value[i]));
+  return std::sqrt(sum);
+}
+
+void surface_point_at(const Scene& scene, const SurfaceBinding& b, Vec3& position, Vec3& normal, Rgb& albedo) {
+  const auto& tri = scene.triangles[b.triangle];
+  float w = 1.f - b.u - b.v;
+  position = w * scene.positions[tri[0]] + b.u * scene.positions[tri[1]] + b.v * scene.positions[tri[2]];
+  Vec3 n = w * scene.normals[tri[0]] + b.u * scene.normals[tri[1]] + b.v * scene.normals[tri[2]];
+  float len = glm::length(n);
+  normal = len > 0.f ? n / len : scene.face_normal(b.triangle);
+  albedo = scene.triangle_albedo(b.triangle);
+}
+
+Target bind_target(const std::string& source, const std::vector<Vec3>& positions, const std::vector<Rgb>& values,
+                   const std::vector<float>& weights, const Scene& scene, const RayScene& rays,
+                   const std::vector<Vec3>& normals) {
+  const size_t n = positions.size();
+  if (n == 0) throw InputError(source, "the target has no points");
+  size_t bad_position = 0, bad_value = 0, negative = 0, bad_weight = 0;
+  for (size_t i = 0; i < n; ++i) {
+    bad_position += !is_finite(positions[i]);
+    bad_value += !is_finite(values[i]);
+    negative += is_finite(values[i]) && glm::any(glm::lessThan(values[i], Rgb(0.f)));
+    bad_weight += !(std::isfinite(weights[i]) && weights[i] >= 0.f);
+  }
+  auto count_of = [&](size_t k) { return std::to_string(k) + " of " + std::to_string(n) + " points"; };
+  if (bad_position) throw InputError(source, count_of(bad_position) + " have NaN or infinite coordinates");
+  if (bad_value) throw InputError(source, count_of(bad_value) + " have NaN or infinite colours");
+  if (negative) throw InputError(source, count_of(negative) + " have negative colours");
+  if (bad_weight) throw InputError(source, count_of(bad_weight) + " have a negative or non-finite weight");
+
+  const float tolerance = kTargetSurfaceTolerance * scene.diagonal();
+  std::vector<Hit> hits(n);
+  tbb::parallel_for(size_t(0), n, [&](size_t i) { 
+    hits[i] = rays.closest_point(positions[i], tolerance, normals.empty() ? Vec3(0.f) : normals[i]);
+  });
+  size_t off = 0;
+  for (const auto& h : hits) off += !h.valid();
+  if (off)
+    throw InputError(source, count_of(off) + " are farther than " + std::to_string(tolerance) +
+                                 " (diagonal x " + std::to_string(kTargetSurfaceTolerance) + ") from the scene's surface");
+
+  Target t;
+  t.source = source;
+  for (size_t i = 0; i < n; ++i) {
+    if (weights[i] == 0.f) continue;  // "don't care"
+    SurfaceBinding b{hits[i].triangle, hits[i].u, hits[i].v};
+    Vec3 p, nrm;
+    Rgb albedo;
+    surface_point_at(scene, b, p, nrm, albedo);
+    t.points.positions.push_back(p);
+    t.points.normals.push_back(nrm);
+    t.points.albedo.push_back(albedo);
+    t.binding.push_back(b);
+    t.value.push_back(values[i]);
+    t.weight.push_back(weights[i]);
+  }
+  if (t.value.empty()) throw InputError(source, "every point has weight 0: nothing to match");
+  if (!(t.norm() > 0.0)) throw InputError(source, "the target is black everywhere: no light can be found for it");
+  return t;
+}
+
+} // namespace hilight

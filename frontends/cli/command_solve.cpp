@@ -1,0 +1,135 @@
+// hilight solve SCENE --target T.ply -o LIGHTS.json: the inverse solve.
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "hilight/error.hpp"
+#include "hilight/io/atomic_file.hpp"
+#include "hilight/io/lights_json.hpp"
+#include "hilight/pipeline/solver.hpp"
+#include "hilight/threads.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+namespace hilight::cli {
+
+namespace {
+
+nlohmann::json report_json(const SolveReport& r, const std::string& renderer, const std::string& optimizer, const std::string& mode) {
+  nlohmann::json cuts = nlohmann::json::array();
+  for (const auto& c : r.cuts) {
+    nlohmann::json j = {{"lights", c.lights}, {"dbar_initial", c.dbar_initial}, {"refined", c.refined}};
+    if (c.refined) j["dbar_refined"] = c.dbar_refined;
+    cuts.push_back(j);
+  }
+  return {{"mode", mode},
+          {"lights", r.chosen},
+          {"dbar", r.dbar},
+          {"dbar_samples", r.dbar_samples},
+          {"cuts", cuts},
+          {"improvement_ratios", r.improvement},
+          {"seconds", r.seconds},
+          {"samples", r.samples},
+          {"target_points", r.target_points},
+          {"seed_lights", r.seed_lights},
+          {"seed_lights_tried", r.seeds_tried},
+          {"light_cache", r.cache_state},
+          {"renderer", renderer},
+          {"optimizer", optimizer}};
+}
+
+} // namespace
+
+int run_solve(const std::vector<std::string>& args, Registry& registry) {
+  CLI::App app("Find the lights that produce a target illumination", "solve");
+  std::string scene_path, target_path, output, report_path, optimizer_name = "varpro", initial_path, mode = "solve",
+                                                                      hints_path, cache_dir;
+  std::vector<std::string> optimizer_settings;
+  float max_edge = 0.f;
+  bool no_cache = false, quiet = false;
+  unsigned long long seed = 1;
+  SolveSettings s;
+  RendererOptions ropts;
+  app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
+  app.add_option("--target", target_path, "target PLY: x y z red green blue [weight]")->required();
+  app.add_option("-o,--output", output, "lights JSON to write")->required();
+  app.add_option("--report", report_path, "write a JSON report (D̄, cuts, timings) here");
+  app.add_option("--optimizer", optimizer_name, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
+  app.add_option("--opt", optimizer_settings, "optimizer setting key=value (repeatable)");
+  app.add_option("--lights", s.fixed_count, "fix the number of point lights (default: automatic)")->check(CLI::Range(1, 10000));
+  app.add_option("--initial", initial_path, "lights to start from (with --mode)");
+  app.add_option("--mode", mode, "solve | fine-tune (re-optimize --initial) | add (append lights for what --initial misses)")
+      ->check(CLI::IsMember({"solve", "fine-tune", "add"}))
+      ->capture_default_str();
+  app.add_option("--spot-hints", hints_path, "lights JSON of spotlights wanted (position, direction, cutoff; intensity ignored)");
+  app.add_option("--seed", seed, "seed of sampling and of the renderer's sample streams")->capture_default_str();
+  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
+  app.add_option("--samples", s.sampler.count, "surface samples used by the solve")->check(CLI::Range(10, 10000000))->capture_default_str();
+  app.add_option("--n-cut", s.n_cut, "N_cut: cuts refined")->check(CLI::Range(1, 1000))->capture_default_str();
+  app.add_option("--eps-opt", s.eps_opt, "ε_opt: refine only cuts with D̄ below")->check(CLI::Range(0.0, 10.0))->capture_default_str();
+  app.add_option("--eps-impro", s.eps_impro, "ε_impro: improvement ratio that justifies one more light")->check(CLI::Range(1.0, 1000.0))->capture_default_str();
+  app.add_option("--weak-threshold", s.seeding.weak_threshold, "ε_w: weak-light deletion threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  app.add_option("--seed-cells", s.seeding.coarse_cells, "seeding cells along the longest axis")->check(CLI::Range(1, 64))->capture_default_str();
+  app.add_option("--seed-iterations", s.seeding.iterations, "seeding levels")->check(CLI::Range(1, 6))->capture_default_str();
+  app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
+  app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
+  app.add_flag("-q,--quiet", quiet, "no progress or summary on stderr");
+  ropts.add_to(app);
+  if (auto code = parse(app, args)) return *code;
+
+  if (mode != "solve" && initial_path.empty()) throw InputError("--mode " + mode + " needs --initial LIGHTS.json");
+  if (mode == "solve" && !initial_path.empty()) throw InputError("--initial needs --mode fine-tune or add");
+  check_writable(output);
+  if (!report_path.empty()) check_writable(report_path);
+  Lighting initial = initial_path.empty() ? Lighting{} : read_lights_json(initial_path);
+  if (!hints_path.empty()) {
+    s.spot_hints = read_lights_json(hints_path);
+    for (auto& h : s.spot_hints) {
+      if (h.type != LightType::Spot) throw InputError(hints_path, "spot hints must be spotlights");
+      h.intensity = Rgb(1.f);
+    }
+  }
+  registry.renderer_unavailable_reason(ropts.name);
+  auto optimizer = registry.create_optimizer(optimizer_name, Properties::from_assignments(optimizer_settings));
+
+  const bool progress = !quiet && ::isatty(2);
+  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
+  auto rays = std::make_shared<const RayScene>(*scene);
+  // The solve evaluates thousands of light positions: Embree's bounce with
+  // direct light interpolated at the gather hits is the fast, accurate choice.
+  if (ropts.name == "embree") {
+    bool set = false;
+    for (const auto& kv : ropts.settings) set |= kv.rfind("bounce_direct=", 0) == 0;
+    if (!set) ropts.settings.push_back("bounce_direct=vertex");
+  }
+  ropts.settings.push_back("seed=" + std::to_string(seed));
+  auto renderer = ropts.create(registry, scene);
+  Target target = read_target(target_path, *scene, *rays);
+  s.sampler.seed = seed;
+  s.use_cache = !no_cache;
+  s.cache_dir = no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
+
+  Solver solver(scene, rays, *renderer, *optimizer, s, [&](const std::string& stage) {
+    if (progress) std::fprintf(stderr, "hilight: %s...\n", stage.c_str());
+  });
+  SolveReport report;
+  Lighting lights = mode == "fine-tune" ? solver.fine_tune(target, initial, report)
+                    : mode == "add"     ? solver.add_lights(target, initial, report)
+                                        : solver.solve(target, report);
+  write_lights_json(output, lights);
+  if (!report_path.empty()) {
+    std::string text = report_json(report, ropts.name, optimizer_name, mode).dump(2) + "\n";
+    write_atomically(report_path, [&](const std::filesystem::path& temp) {
+      std::ofstream out(temp, std::ios::binary);
+      out << text;
+    });
+  }
+  if (!quiet) {
+    std::fprintf(stderr, "hilight: %zu lights, D̄ %.2f%% over %zu target points (%zu samples), %.2f s -> %s\n", report.chosen,
+                 100.0 * report.dbar, report.target_points, report.samples, report.seconds["total"], output.c_str());
+  }
+  return 0;
+}
+
+} // namespace hilight::cli

@@ -1,0 +1,76 @@
+// Variable projection: for fixed positions the best intensities are an NNLS
+// solve, so the simplex searches geometry only (3 parameters per point light
+// instead of 6), and it does so one light at a time — moving one light costs
+// one light's φ, the others' responses are kept by the problem. Sweeps repeat
+// until a sweep improves the objective by less than `tolerance`.
+//
+// | property          | default | meaning                                         |
+// |-------------------|---------|-------------------------------------------------|
+// | sweeps            | 4       | passes over all lights                          |
+// | evaluations       | 40      | simplex evaluations per light and sweep         |
+// | tolerance         | 1e-4    | relative improvement below which sweeps stop    |
+#include "hilight/error.hpp"
+#include "hilight/pipeline/light_parameters.hpp"
+#include "hilight/pipeline/simplex.hpp"
+#include "hilight/plugin.hpp"
+#include "hilight/registry.hpp"
+
+namespace {
+
+using namespace hilight;
+
+class VarProOptimizer final : public Optimizer {
+public:
+  VarProOptimizer(int sweeps, int evaluations, double tolerance)
+      : m_sweeps(sweeps), m_evaluations(evaluations), m_tolerance(tolerance) {}
+
+  Lighting refine(RefineProblem& problem, const Lighting& start) override {
+    const float scale = problem.scale();
+    Lighting best = start;
+    double best_value = problem.objective_with_best_intensities(best);
+    for (int sweep = 0; sweep < m_sweeps; ++sweep) {
+      const double before = best_value;
+      for (size_t j = 0; j < best.size(); ++j) {
+        std::vector<double> x, steps;
+        append_geometry(best[j], scale, x, steps);
+        // Later sweeps take smaller first steps: the lights are close by then.
+        for (auto& s : steps) s /= double(1 << std::min(sweep, 3));
+        auto f = [&](const std::vector<double>& p) {
+          Lighting trial = best;
+          read_geometry(trial[j], scale, p, 0);
+          return problem.objective_with_best_intensities(trial);
+        };
+        SimplexSettings settings;
+        settings.max_evaluations = m_evaluations;
+        settings.x_tolerance = 2e-4;  // 0.02% of the diagonal
+        SimplexResult r = nelder_mead(f, x, steps, settings);
+        if (r.value < best_value) {
+          read_geometry(best[j], scale, r.x, 0);
+          best_value = problem.objective_with_best_intensities(best);
+        }
+      }
+      if (before - best_value <= m_tolerance * before) break;
+    }
+    return best;
+  }
+
+private:
+  int m_sweeps, m_evaluations;
+  double m_tolerance;
+};
+
+void register_varpro(PluginRegistrar& registrar) {
+  registrar.optimizer([](const Properties& props) -> std::unique_ptr<Optimizer> {
+    long long sweeps = props.get_int("sweeps", 4), evals = props.get_int("evaluations", 40);
+    double tol = props.get_double("tolerance", 1e-4);
+    if (sweeps < 1 || sweeps > 1000) throw InputError("optimizer varpro: sweeps must be in [1, 1000]");
+    if (evals < 4 || evals > 1'000'000) throw InputError("optimizer varpro: evaluations must be in [4, 1e6]");
+    if (!(tol >= 0)) throw InputError("optimizer varpro: tolerance must be >= 0");
+    return std::make_unique<VarProOptimizer>(int(sweeps), int(evals), tol);
+  });
+}
+
+} // namespace
+
+HILIGHT_PLUGIN("optimizer", HILIGHT_PLUGIN_NAME, "0.1.0",
+               "variable projection: simplex over positions, light by light, intensities by NNLS", register_varpro)
