@@ -40,6 +40,7 @@ Light read_light(const json& obj, const std::string& where) {
   for (const auto& [key, value] : obj.items())
     if (std::find(std::begin(kKnown), std::end(kKnown), key) == std::end(kKnown))
       throw InputError(where + ": unknown field \"" + key + "\"");
+  if (obj.contains("type") && !obj.at("type").is_string()) throw InputError(where + ": \"type\" must be a string");
   std::string type = obj.value("type", std::string("point"));
   Light light;
   light.position = read_vec3(obj, "position", where);
@@ -79,13 +80,19 @@ Lighting parse_lights_json(const std::string& text, const std::string& source) {
     throw InputError(source, "expected an object with a \"lights\" array");
   Lighting lights;
   const json& arr = doc["lights"];
-  for (size_t i = 0; i < arr.size(); ++i) lights.push_back(read_light(arr[i], source + ": light " + std::to_string(i)));
+  try {
+    for (size_t i = 0; i < arr.size(); ++i) lights.push_back(read_light(arr[i], source + ": light " + std::to_string(i)));
+  } catch (const json::exception& e) {  // a value of an unexpected JSON type
+    throw InputError(source, std::string("malformed light: ") + e.what());
+  }
   return lights;
 }
 
 Lighting read_lights_json(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string(), "is a folder, not a lights file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "cannot open lights file");
+  if (!in) throw InputError(path.string(), std::filesystem::exists(path, ec) ? "cannot open lights file" : "no such file");
   std::stringstream ss;
   ss << in.rdbuf();
   return parse_lights_json(ss.str(), path.string());

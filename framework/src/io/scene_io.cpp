@@ -8,7 +8,9 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <sstream>
 
 namespace hilight {
 
@@ -44,6 +46,7 @@ void validate(const Scene& scene, const std::string& file) {
     for (uint32_t v : t)
       if (v >= scene.positions.size()) throw InputError(file, "a face refers to vertex " + std::to_string(v) + " of " + std::to_string(scene.positions.size()));
   if (!(scene.diagonal() > 0.f)) throw InputError(file, "the scene has zero extent");
+  if (!std::isfinite(scene.diagonal())) throw InputError(file, "coordinates too large: the scene's extent overflows single precision");
 }
 
 // Drops zero-area triangles and fills missing or degenerate normals from faces.
@@ -75,6 +78,35 @@ void clean(Scene& scene) {
 
 } // namespace
 
+namespace {
+
+// Assimp's OFF reader allocates whatever the header claims before reading a
+// single vertex, so a tiny file claiming billions of elements exhausts memory.
+// Each vertex and face takes at least a few bytes of text: check the claim
+// against the file's size first.
+void check_off_header(const fs::path& path) {
+  std::string ext = path.extension().string();
+  for (auto& c : ext) c = char(std::tolower(c));
+  if (ext != ".off") return;
+  std::ifstream in(path);
+  std::string word;
+  double counts[2] = {0, 0};
+  while (in >> word && (word.empty() || word[0] == '#' || std::isalpha(static_cast<unsigned char>(word[0])))) {
+    if (!word.empty() && word[0] == '#') std::getline(in, word);
+  }
+  if (!in) return;
+  counts[0] = std::strtod(word.c_str(), nullptr);
+  in >> counts[1];
+  std::error_code ec;
+  double size = double(fs::file_size(path, ec));
+  if (ec || !in) return;
+  if (counts[0] * 6 + counts[1] * 8 > size * 1.01 + 64)
+    throw InputError(path.string(), "the OFF header claims " + std::to_string((long long)counts[0]) + " vertices and " +
+                                        std::to_string((long long)counts[1]) + " faces, more than the file can hold");
+}
+
+} // namespace
+
 Scene finish_scene(Scene scene, const SceneLoadOptions& options) {
   scene.update_bounds();
   validate(scene, scene.source);
@@ -92,9 +124,11 @@ Scene finish_scene(Scene scene, const SceneLoadOptions& options) {
     double ratio = std::max(1.0, double(longest) / max_edge);
     estimate += ratio * ratio;
   }
-  if (estimate > double(kMaxTriangles))
-    throw InputError(scene.source, "--max-edge " + std::to_string(max_edge) + " would make about " +
-                                       std::to_string(size_t(estimate)) + " triangles (limit " + std::to_string(kMaxTriangles) + ")");
+  if (!(estimate <= double(kMaxTriangles))) {
+    char text[160];
+    std::snprintf(text, sizeof(text), "--max-edge %g would make about %.3g triangles (limit %zu)", double(max_edge), estimate, kMaxTriangles);
+    throw InputError(scene.source, text);
+  }
   tessellate(scene, max_edge);
   scene.max_edge = max_edge;
   return scene;
@@ -107,6 +141,7 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   if (fs::is_directory(path, ec)) throw InputError(file, "is a folder, not a scene file");
   if (!std::ifstream(path, std::ios::binary)) throw InputError(file, "cannot open (permission denied?)");
 
+  check_off_header(path);
   Assimp::Importer importer;
   // Points and lines carry no surface: drop them during import.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
