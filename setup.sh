@@ -39,11 +39,16 @@ build() {
 }
 
 demo() {
-  local out="$BUILD_DIR/demo"
+  local out="$BUILD_DIR/demo" hl="$BUILD_DIR/bin/hilight" camera="5.6,2.6,4.7,2,0.6,1.5,70"
   mkdir -p "$out"
-  "$BUILD_DIR/bin/hilight" render scenes/room.obj --lights scenes/room-lights.json \
-    --camera "5.6,2.6,4.7,2,0.6,1.5,70" -o "$out/room.ply" -o "$out/room.png"
-  echo "demo: the lit room is in $out/room.ply (per-vertex radiance) and $out/room.png"
+  # The target: the bundled room lit by four known lights (a designer would paint it).
+  "$hl" render scenes/room.obj --lights scenes/room-4lights.json -o "$out/target.ply" -o "$out/target.png" --camera "$camera"
+  # The solve: find the lights that produce that target.
+  "$hl" solve scenes/room.obj --target "$out/target.ply" -o "$out/lights.json" --report "$out/report.json" \
+    --cache-dir "$out/cache"
+  "$hl" render scenes/room.obj --lights "$out/lights.json" -o "$out/result.png" --camera "$camera"
+  echo "demo: found lights in $out/lights.json (report: $out/report.json);"
+  echo "      compare $out/target.png (wanted) with $out/result.png (what the found lights give)"
 }
 
 run_tests() {

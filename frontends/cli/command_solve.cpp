@@ -20,7 +20,10 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
   nlohmann::json cuts = nlohmann::json::array();
   for (const auto& c : r.cuts) {
     nlohmann::json j = {{"lights", c.lights}, {"dbar_initial", c.dbar_initial}, {"refined", c.refined}};
-    if (c.refined) j["dbar_refined"] = c.dbar_refined;
+    if (c.refined) {
+      j["dbar_refined"] = c.dbar_refined;
+      j["lights_refined"] = c.refined_lights.size();  // weak lights pruned after refinement
+    }
     cuts.push_back(j);
   }
   return {{"mode", mode},
@@ -72,6 +75,9 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--weak-threshold", s.seeding.weak_threshold, "ε_w: weak-light deletion threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
   app.add_option("--seed-cells", s.seeding.coarse_cells, "seeding cells along the longest axis")->check(CLI::Range(1, 64))->capture_default_str();
   app.add_option("--seed-iterations", s.seeding.iterations, "seeding levels")->check(CLI::Range(1, 6))->capture_default_str();
+  app.add_option("--cache-cells", s.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
   app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
   app.add_flag("-q,--quiet", quiet, "no progress or summary on stderr");

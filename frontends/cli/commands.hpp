@@ -11,4 +11,5 @@ int run_render(const std::vector<std::string>& args, Registry& registry);
 int run_plugins(const std::vector<std::string>& args, Registry& registry);
 int run_solve(const std::vector<std::string>& args, Registry& registry);
 int run_bench(const std::vector<std::string>& args, Registry& registry);
+int run_bench_solve(const std::vector<std::string>& args, Registry& registry);
 } // namespace hilight::cli

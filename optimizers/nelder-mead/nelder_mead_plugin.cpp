@@ -21,7 +21,7 @@ class NelderMeadOptimizer final : public Optimizer {
 public:
   NelderMeadOptimizer(int max_evaluations, int restarts) : m_max_evaluations(max_evaluations), m_restarts(restarts) {}
 
-  Lighting refine(RefineProblem& problem, const Lighting& start) override {
+  Lighting refine(RefineProblem& problem, const Lighting& start, RefineEffort effort) override {
     const float scale = problem.scale();
     std::vector<double> x, steps;
     for (const auto& l : start) {
@@ -46,8 +46,12 @@ public:
     auto f = [&](const std::vector<double>& p) { return problem.objective(decode(p)); };
     SimplexSettings settings;
     settings.max_evaluations = m_max_evaluations;
+    if (effort == RefineEffort::Polish) {  // near the optimum: smaller simplex, a quarter of the budget
+      for (auto& s : steps) s *= 0.25;
+      settings.max_evaluations = std::max(10, m_max_evaluations / 4);
+    }
     SimplexResult r = nelder_mead(f, x, steps, settings);
-    for (int k = 0; k < m_restarts; ++k) {
+    for (int k = 0; k < (effort == RefineEffort::Polish ? 0 : m_restarts); ++k) {
       for (auto& s : steps) s *= 0.5;
       SimplexResult again = nelder_mead(f, r.x, steps, settings);
       if (again.value < r.value) r = again;

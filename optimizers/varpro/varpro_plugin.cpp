@@ -2,7 +2,8 @@
 // solve, so the simplex searches geometry only (3 parameters per point light
 // instead of 6), and it does so one light at a time — moving one light costs
 // one light's φ, the others' responses are kept by the problem. Sweeps repeat
-// until a sweep improves the objective by less than `tolerance`.
+// until a sweep improves the objective by less than `tolerance`. A polish
+// (RefineEffort::Polish) is one sweep with small first steps.
 //
 // | property          | default | meaning                                         |
 // |-------------------|---------|-------------------------------------------------|
@@ -24,17 +25,20 @@ public:
   VarProOptimizer(int sweeps, int evaluations, double tolerance)
       : m_sweeps(sweeps), m_evaluations(evaluations), m_tolerance(tolerance) {}
 
-  Lighting refine(RefineProblem& problem, const Lighting& start) override {
+  Lighting refine(RefineProblem& problem, const Lighting& start, RefineEffort effort) override {
     const float scale = problem.scale();
     Lighting best = start;
     double best_value = problem.objective_with_best_intensities(best);
-    for (int sweep = 0; sweep < m_sweeps; ++sweep) {
+    // A polish starts near the optimum: one sweep with small first steps.
+    const int sweeps = effort == RefineEffort::Polish ? 1 : m_sweeps;
+    const int first_step_level = effort == RefineEffort::Polish ? 2 : 0;
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
       const double before = best_value;
       for (size_t j = 0; j < best.size(); ++j) {
         std::vector<double> x, steps;
         append_geometry(best[j], scale, x, steps);
         // Later sweeps take smaller first steps: the lights are close by then.
-        for (auto& s : steps) s /= double(1 << std::min(sweep, 3));
+        for (auto& s : steps) s /= double(1 << std::min(sweep + first_step_level, 3));
         auto f = [&](const std::vector<double>& p) {
           Lighting trial = best;
           read_geometry(trial[j], scale, p, 0);

@@ -17,7 +17,7 @@
 namespace hilight {
 
 struct LightCacheSettings {
-  int cells_along_longest_axis = 10;
+  int cells_along_longest_axis = 8;
 };
 
 class LightCache {

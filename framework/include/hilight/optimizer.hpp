@@ -23,11 +23,17 @@ public:
   virtual float scale() const = 0;
 };
 
+/// How much work a refine call should do.
+enum class RefineEffort {
+  Full,    ///< from a cut: lights may be far from their optimum
+  Polish,  ///< from a refined result: a short local pass
+};
+
 class Optimizer {
 public:
   virtual ~Optimizer() = default;
   /// Refines `start` (positions, intensities, spot directions and cutoffs).
-  virtual Lighting refine(RefineProblem& problem, const Lighting& start) = 0;
+  virtual Lighting refine(RefineProblem& problem, const Lighting& start, RefineEffort effort) = 0;
 };
 
 } // namespace hilight

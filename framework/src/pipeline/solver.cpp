@@ -153,10 +153,23 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   auto dbar_of = [&](size_t k) { return report.cuts[k - 1].refined ? report.cuts[k - 1].dbar_refined : report.cuts[k - 1].dbar_initial; };
   // Count (eq. 9): from the first chosen cut, take the next while it improves
   // D̄ by at least ε_impro. Cuts are refined lazily, only as the walk needs
-  // them: the same choice as refining all N_cut first, at less cost.
+  // them: the same choice upward as refining all N_cut first, at less cost.
   size_t count = chosen.front();
   refine_cut(count);
-  if (m_settings.fixed_count == 0)
+  bool walked_down = false;
+  if (m_settings.fixed_count == 0) {
+    // Beyond the paper: a cut's D̄ before refinement is pessimistic (its
+    // lights sit where merging left them), so the cuts just below the first
+    // one under ε_opt may still be enough once refined. Walk down while the
+    // smaller cut is within ε_impro of the larger.
+    while (count > 1) {
+      refine_cut(count - 1);
+      if (!(dbar_of(count) > 0) || dbar_of(count - 1) / dbar_of(count) >= m_settings.eps_impro) break;
+      --count;
+      walked_down = true;
+    }
+  }
+  if (m_settings.fixed_count == 0 && !walked_down)
     for (size_t q = 1; q < chosen.size() && chosen[q] == count + 1; ++q) {
       refine_cut(count + 1);
       if (!(dbar_of(count + 1) > 0) || dbar_of(count) / dbar_of(count + 1) < m_settings.eps_impro) break;
@@ -173,18 +186,37 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
 
 Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar) {
   SampleRefineProblem problem(model, *m_rays, m_cache ? &exact : nullptr);
+  const SampleSet& samples = model.samples();
+  const double norm = samples.target_norm();
   problem.anchor(start);
   const double start_value = problem.objective(start);
-  Lighting refined = m_optimizer.refine(problem, start);
-  if (m_cache) {  // the anchor was the start: re-anchor where the lights went and polish
+  Lighting refined = m_optimizer.refine(problem, start, RefineEffort::Full);
+  auto polish = [&] {  // re-anchor where the lights went and refine a little
     problem.anchor(refined);
-    Lighting polished = m_optimizer.refine(problem, refined);
+    Lighting polished = m_optimizer.refine(problem, refined, RefineEffort::Polish);
     if (problem.objective(polished) <= problem.objective(refined)) refined = polished;
+  };
+  if (m_cache) polish();
+  // Eq. 6 once more on the refined lights: refinement often leaves a point
+  // light with nothing to do (zero, or a few % of the target) once its
+  // neighbours moved into place. Drop those, re-fit, polish again.
+  std::vector<Rgb> phi = problem.responses(refined);
+  Lighting kept;
+  for (size_t j = 0; j < refined.size(); ++j)
+    if (refined[j].type == LightType::Spot ||
+        contribution(phi, j, refined[j].intensity, samples) >= m_settings.seeding.weak_threshold * norm)
+      kept.push_back(refined[j]);
+  // With the count fixed by the user (--lights N) every light stays.
+  if (m_settings.fixed_count == 0 && !kept.empty() && kept.size() < refined.size()) {
+    refined = kept;
+    problem.anchor(refined);
+    problem.objective_with_best_intensities(refined);
+    polish();
   }
   // Each value is accurate at its own anchor, so the two compare fairly.
   double value = problem.objective(refined);
   if (value > start_value) refined = start, value = start_value;  // refinement may only help
-  dbar = std::sqrt(std::max(0.0, value)) / model.samples().target_norm();
+  dbar = std::sqrt(std::max(0.0, value)) / norm;
   return refined;
 }
 

@@ -36,7 +36,7 @@ struct CutRecord {
   double dbar_initial = 0;  ///< D̄ at the samples, intensities re-fitted by NNLS
   bool refined = false;
   double dbar_refined = 0;
-  Lighting refined_lights;
+  Lighting refined_lights;  ///< may hold fewer lights: weak ones are pruned after refinement
 };
 
 struct SolveReport {

@@ -1,0 +1,113 @@
+// hilight bench solve: the inverse solve on the interior room (≥20k vertices,
+// 4 known lights) for each optimizer: cold start (light cache built), warm
+// start (cache on disk), fine-tune after a small edit. JSON lines on stdout;
+// medians over --repeat runs, all in one process so the figures compare.
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "hilight/io/lights_json.hpp"
+#include "hilight/pipeline/solver.hpp"
+#include "hilight/scene_builders.hpp"
+#include "hilight/threads.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+namespace hilight::cli {
+
+namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+/// Mean distance from each true light to the nearest found light.
+double mean_position_error(const Lighting& truth, const Lighting& found) {
+  double sum = 0;
+  for (const auto& t : truth) {
+    double best = 1e30;
+    for (const auto& f : found) best = std::min(best, double(glm::length(t.position - f.position)));
+    sum += best;
+  }
+  return truth.empty() ? 0.0 : sum / double(truth.size());
+}
+
+} // namespace
+
+int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
+  CLI::App app("Benchmark the inverse solve; prints one JSON object per line", "bench solve");
+  std::vector<std::string> optimizers = {"varpro", "nelder-mead"};
+  int repeat = 3, threads = 0;
+  float max_edge = 0.15f;
+  std::string cache_root = (std::filesystem::temp_directory_path() / "hilight-bench-cache").string();
+  app.add_option("--optimizers", optimizers, "optimizer plugins to compare")->capture_default_str();
+  app.add_option("--repeat", repeat, "runs per figure (median reported)")->check(CLI::Range(1, 50))->capture_default_str();
+  app.add_option("--max-edge", max_edge, "tessellation of the room (0.15: about 25k vertices)")->check(FiniteNonNegative)->capture_default_str();
+  app.add_option("--cache-dir", cache_root, "scratch folder for light caches (emptied first)")->capture_default_str();
+  app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  if (auto code = parse(app, args)) return *code;
+  set_thread_limit(threads);
+
+  auto scene = std::make_shared<const Scene>(finish_scene(builders::furnished_room(), {max_edge}));
+  auto rays = std::make_shared<const RayScene>(*scene);
+  const Lighting truth = {Light::point({1.5f, 2.5f, 1.1f}, Rgb(2.f)), Light::point({4.6f, 2.4f, 1.4f}, Rgb(2.f, 1.9f, 1.7f)),
+                          Light::point({2.3f, 1.6f, 3.9f}, Rgb(1.6f, 1.7f, 2.f)), Light::point({4.8f, 2.2f, 3.8f}, Rgb(1.8f))};
+  // The target comes from the reference settings (exact bounce), the solve
+  // from its own fast settings: the figures include that model difference.
+  Properties reference_props;
+  auto reference = registry.create_renderer("embree", reference_props);
+  reference->set_scene(scene);
+  std::vector<Rgb> values = reference->illuminate(SurfacePoints::from_vertices(*scene), truth);
+  Target target = bind_target("bench", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
+  // A small edit for fine-tune: 10% brighter on the floor's left half.
+  Target edited = target;
+  for (size_t i = 0; i < edited.size(); ++i)
+    if (edited.points.positions[i].y < 0.01f && edited.points.positions[i].x < 3.f) edited.value[i] *= 1.1f;
+
+  Properties solve_props;
+  solve_props.set("bounce_direct", "vertex");
+  auto renderer = registry.create_renderer("embree", solve_props);
+  renderer->set_scene(scene);
+
+  for (const auto& name : optimizers) {
+    auto optimizer = registry.create_optimizer(name, {});
+    std::vector<double> cold, warm, fine, dbar, pos_err;
+    std::map<std::string, std::vector<double>> stages;
+    size_t count = 0;
+    for (int r = 0; r < repeat; ++r) {
+      std::filesystem::remove_all(cache_root);
+      SolveSettings settings;
+      settings.cache_dir = cache_root;
+      {
+        Solver solver(scene, rays, *renderer, *optimizer, settings);
+        SolveReport report;
+        solver.solve(target, report);
+        cold.push_back(report.seconds["total"]);
+      }
+      Solver solver(scene, rays, *renderer, *optimizer, settings);  // new session: cache from disk
+      SolveReport report;
+      Lighting found = solver.solve(target, report);
+      warm.push_back(report.seconds["total"]);
+      for (const auto& [stage, s] : report.seconds) stages[stage].push_back(s);
+      dbar.push_back(report.dbar);
+      pos_err.push_back(mean_position_error(truth, found) / scene->diagonal());
+      count = found.size();
+      SolveReport tune;
+      solver.fine_tune(edited, found, tune);
+      fine.push_back(tune.seconds["total"]);
+    }
+    nlohmann::json j = {{"figure", "solve"}, {"optimizer", name}, {"vertices", scene->positions.size()},
+                        {"true_lights", truth.size()}, {"found_lights", count}, {"repeat", repeat},
+                        {"dbar_median", median(dbar)}, {"position_error_over_diagonal_median", median(pos_err)},
+                        {"cold_seconds_median", median(cold)}, {"warm_seconds_median", median(warm)},
+                        {"fine_tune_seconds_median", median(fine)}};
+    for (const auto& [stage, v] : stages) j["warm_stage_seconds_median"][stage] = median(v);
+    std::printf("%s\n", j.dump().c_str());
+    std::fflush(stdout);
+  }
+  std::filesystem::remove_all(cache_root);
+  return 0;
+}
+
+} // namespace hilight::cli
