@@ -1,5 +1,6 @@
 #include "embree_renderer.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <tbb/blocked_range.h>
@@ -9,21 +10,24 @@
 namespace hilight::embree {
 
 void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
-  m_gather.reset();
+  m_gathers.clear();
   m_embree.reset();
   m_scene = std::move(scene);
   m_embree = std::make_unique<RayScene>(*m_scene);
 }
 
 const BounceGather& EmbreeRenderer::gather_for(const SurfacePoints& points) {
-  uint64_t key = points.content_key();
-  if (!m_gather || key != m_gather_key) {
-    m_gather.reset();
-    m_gather = std::make_unique<BounceGather>(*m_embree, points, m_settings.bounce_samples, m_settings.seed);
-    m_gather_key = key;
-    m_rays += m_gather->rays_cast();
+  const uint64_t key = points.content_key();
+  auto it = std::find_if(m_gathers.begin(), m_gathers.end(), [&](const auto& g) { return g.first == key; });
+  if (it == m_gathers.end()) {
+    if (m_gathers.size() >= kGathersKept) m_gathers.pop_back();
+    auto gather = std::make_unique<BounceGather>(*m_embree, points, m_settings.bounce_samples, m_settings.seed);
+    m_rays += gather->rays_cast();
+    m_gathers.emplace(m_gathers.begin(), key, std::move(gather));
+  } else if (it != m_gathers.begin()) {
+    std::rotate(m_gathers.begin(), it, it + 1);
   }
-  return *m_gather;
+  return *m_gathers.front().second;
 }
 
 std::string EmbreeRenderer::settings_key() const {

@@ -46,8 +46,10 @@ private:
   EmbreeSettings m_settings;
   std::shared_ptr<const Scene> m_scene;
   std::unique_ptr<RayScene> m_embree;
-  std::unique_ptr<BounceGather> m_gather;
-  uint64_t m_gather_key = 0;
+  /// Recent gathers, most recent first: a solve alternates between its
+  /// samples and the whole target, an editing session between targets.
+  std::vector<std::pair<uint64_t, std::unique_ptr<BounceGather>>> m_gathers;
+  static constexpr size_t kGathersKept = 4;
   uint64_t m_rays = 0;
 };
 

@@ -184,19 +184,20 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   return report.cuts[count - 1].refined_lights;
 }
 
-Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar) {
+Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar,
+                                 RefineEffort effort) {
   SampleRefineProblem problem(model, *m_rays, m_cache ? &exact : nullptr);
   const SampleSet& samples = model.samples();
   const double norm = samples.target_norm();
   problem.anchor(start);
   const double start_value = problem.objective(start);
-  Lighting refined = m_optimizer.refine(problem, start, RefineEffort::Full);
+  Lighting refined = m_optimizer.refine(problem, start, effort);
   auto polish = [&] {  // re-anchor where the lights went and refine a little
     problem.anchor(refined);
     Lighting polished = m_optimizer.refine(problem, refined, RefineEffort::Polish);
     if (problem.objective(polished) <= problem.objective(refined)) refined = polished;
   };
-  if (m_cache) polish();
+  if (m_cache && effort == RefineEffort::Full) polish();
   // Eq. 6 once more on the refined lights: refinement often leaves a point
   // light with nothing to do (zero, or a few % of the target) once its
   // neighbours moved into place. Drop those, re-fit, polish again.
@@ -207,7 +208,7 @@ Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, con
         contribution(phi, j, refined[j].intensity, samples) >= m_settings.seeding.weak_threshold * norm)
       kept.push_back(refined[j]);
   // With the count fixed by the user (--lights N) every light stays.
-  if (m_settings.fixed_count == 0 && !kept.empty() && kept.size() < refined.size()) {
+  if (m_settings.fixed_count == 0 && effort == RefineEffort::Full && !kept.empty() && kept.size() < refined.size()) {
     refined = kept;
     problem.anchor(refined);
     problem.objective_with_best_intensities(refined);
@@ -263,7 +264,7 @@ Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveRe
   ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
   ResponseModel exact(m_renderer, samples, nullptr);
   Stopwatch refine_watch;
-  Lighting refined = refine_anchored(model, exact, lights, report.dbar_samples);
+  Lighting refined = refine_anchored(model, exact, lights, report.dbar_samples, RefineEffort::Polish);
   report.seconds["refinement"] += refine_watch.seconds();
   finish_report(target, refined, report);
   report.seconds["total"] = total.seconds();

@@ -64,7 +64,8 @@ public:
 
   /// Full solve: the lights for `target`.
   Lighting solve(const Target& target, SolveReport& report);
-  /// Re-optimizes `lights` against `target` without adding or removing any.
+  /// Re-optimizes `lights` against `target` without adding or removing any
+  /// (a polish: after an edit the lights start near their new optimum).
   Lighting fine_tune(const Target& target, const Lighting& lights, SolveReport& report);
   /// Solves for max(Ψ − I(lights), 0) and returns `lights` followed by the new ones.
   Lighting add_lights(const Target& target, const Lighting& lights, SolveReport& report);
@@ -79,7 +80,8 @@ private:
   void ensure_cache(SolveReport& report);
   Lighting solve_samples(const SampleSet& samples, SolveReport& report);
   /// Refines `start`, anchored at it, then re-anchored at the result and polished.
-  Lighting refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar);
+  Lighting refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar,
+                           RefineEffort effort = RefineEffort::Full);
   void finish_report(const Target& target, const Lighting& lights, SolveReport& report);
   float neighbourhood_radius() const;
 
