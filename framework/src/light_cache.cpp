@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr uint32_t kFormatVersion = 1;
+constexpr uint32_t kFormatVersion = 2;  // 2: gathers seeded per point, not per index
 constexpr char kMagic[8] = {'H', 'L', 'C', 'A', 'C', 'H', 'E', '1'};
 
 uint64_t fnv(uint64_t h, const void* data, size_t bytes) {

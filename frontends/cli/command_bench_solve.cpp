@@ -80,12 +80,12 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
       SolveSettings settings;
       settings.cache_dir = cache_root;
       {
-        Solver solver(scene, rays, *renderer, *optimizer, settings);
+        Solver solver(scene, rays, *renderer, *reference, *optimizer, settings);
         SolveReport report;
         solver.solve(target, report);
         cold.push_back(report.seconds["total"]);
       }
-      Solver solver(scene, rays, *renderer, *optimizer, settings);  // new session: cache from disk
+      Solver solver(scene, rays, *renderer, *reference, *optimizer, settings);  // new session: cache from disk
       SolveReport report;
       Lighting found = solver.solve(target, report);
       warm.push_back(report.seconds["total"]);

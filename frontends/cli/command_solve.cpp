@@ -102,21 +102,24 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   const bool progress = !quiet && ::isatty(2);
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
   auto rays = std::make_shared<const RayScene>(*scene);
-  // The solve evaluates thousands of light positions: Embree's bounce with
-  // direct light interpolated at the gather hits is the fast, accurate choice.
+  ropts.settings.push_back("seed=" + std::to_string(seed));
+  // D̄ is measured with the renderer as the user set it up (as `hilight
+  // render` would use it); the solve itself evaluates thousands of light
+  // positions, for which Embree's bounce with direct light interpolated at
+  // the gather hits is the fast choice.
+  auto reference = ropts.create(registry, scene);
   if (ropts.name == "embree") {
     bool set = false;
     for (const auto& kv : ropts.settings) set |= kv.rfind("bounce_direct=", 0) == 0;
     if (!set) ropts.settings.push_back("bounce_direct=vertex");
   }
-  ropts.settings.push_back("seed=" + std::to_string(seed));
   auto renderer = ropts.create(registry, scene);
   Target target = read_target(target_path, *scene, *rays);
   s.sampler.seed = seed;
   s.use_cache = !no_cache;
   s.cache_dir = no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
 
-  Solver solver(scene, rays, *renderer, *optimizer, s, [&](const std::string& stage) {
+  Solver solver(scene, rays, *renderer, *reference, *optimizer, s, [&](const std::string& stage) {
     if (progress) std::fprintf(stderr, "hilight: %s...\n", stage.c_str());
   });
   SolveReport report;
@@ -132,7 +135,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     });
   }
   if (!quiet) {
-    std::fprintf(stderr, "hilight: %zu lights, D̄ %.2f%% over %zu target points (%zu samples), %.2f s -> %s\n", report.chosen,
+    std::fprintf(stderr, "hilight: %zu lights, D̄ %.2f%% on the target (%zu points, %zu samples), %.2f s -> %s\n", report.chosen,
                  100.0 * report.dbar, report.target_points, report.samples, report.seconds["total"], output.c_str());
   }
   return 0;

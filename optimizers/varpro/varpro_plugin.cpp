@@ -8,7 +8,8 @@
 // | property          | default | meaning                                         |
 // |-------------------|---------|-------------------------------------------------|
 // | sweeps            | 4       | passes over all lights                          |
-// | evaluations       | 40      | simplex evaluations per light and sweep         |
+// | evaluations       | 40      | simplex evaluations per point light and sweep   |
+// |                   |         | (4x for a spotlight: 6 parameters, flat valley)|
 // | tolerance         | 1e-4    | relative improvement below which sweeps stop    |
 #include "hilight/error.hpp"
 #include "hilight/pipeline/light_parameters.hpp"
@@ -45,7 +46,9 @@ public:
           return problem.objective_with_best_intensities(trial);
         };
         SimplexSettings settings;
-        settings.max_evaluations = m_evaluations;
+        // A spot has 6 parameters and a long, flat valley (distance trades
+        // against cutoff and intensity): it gets four times a point's budget.
+        settings.max_evaluations = x.size() > 3 ? 4 * m_evaluations : m_evaluations;
         settings.x_tolerance = 2e-4;  // 0.02% of the diagonal
         SimplexResult r = nelder_mead(f, x, steps, settings);
         if (r.value < best_value) {

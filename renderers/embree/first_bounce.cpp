@@ -2,6 +2,8 @@
 
 #include "sampling.hpp"
 
+#include <cstring>
+
 #include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
@@ -13,8 +15,16 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, int 
   const int per_side = samples / 2;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      uint64_t stream = mix64(seed ^ mix64(i));
+      // The stream depends on the point itself, not its index, so a surface
+      // point gets the same gather in any point set: renders of subsets and
+      // of the whole scene share random numbers (common random numbers), and
+      // differences between them are differences of light, not of noise.
       const Vec3 n = points.normals[i];
+      uint32_t bits[6];
+      std::memcpy(bits, &points.positions[i], sizeof(Vec3));
+      std::memcpy(bits + 3, &n, sizeof(Vec3));
+      uint64_t stream = mix64(seed);
+      for (uint32_t b : bits) stream = mix64(stream ^ b);
       for (int side = 0; side < 2; ++side) {
         const Vec3 axis = side == 0 ? n : -n;
         const Vec3 origin = points.positions[i] + axis * es.epsilon();

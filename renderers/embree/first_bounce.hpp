@@ -1,7 +1,8 @@
 #pragma once
 /// The first diffuse bounce by gathering: every point casts N rays over both
 /// hemispheres (two-sided surfaces; N/2 cosine-weighted on each side, from
-/// Hammersley points rotated per point). The hits are kept, so each light
+/// Hammersley points rotated per point, the rotation seeded by the point's
+/// position and normal). The hits are kept, so each light
 /// then costs N shadow rays per point and no further intersection tests:
 ///   E_ind(x) = ∫_{S²} L(y(ω)) |cos θ| dω  ≈  (2/N) Σ_k albedo(y_k) · E_dir(y_k)
 /// (each hemisphere's estimate is π/(N/2) Σ L, and L(y) = albedo(y)/π · E_dir(y)).

@@ -28,6 +28,7 @@ struct SolveSettings {
   double eps_opt = 0.15;             ///< ε_opt: only cuts with D̄ below are refined
   double eps_impro = 1.6;            ///< ε_impro of eq. 9
   size_t fixed_count = 0;            ///< --lights N (0: automatic)
+  size_t evaluation_points = 4096;   ///< target points D̄ is measured on (evenly spaced; 0: all)
   Lighting spot_hints;               ///< spotlights the user asked for
 };
 
@@ -58,9 +59,11 @@ using ProgressFn = std::function<void(const std::string& stage)>;
 /// cache alive so later edits (fine-tune, add) reuse them.
 class Solver {
 public:
-  /// `renderer`: the renderer the solve evaluates φ with (already bound to `scene`).
+  /// `renderer`: what the solve evaluates φ with (fast settings); `reference`:
+  /// what D̄ is measured with (the user's settings, as `hilight render` uses
+  /// them; may be the same object). Both bound to `scene`.
   Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
-         Optimizer& optimizer, SolveSettings settings, ProgressFn progress = {});
+         Renderer& reference, Optimizer& optimizer, SolveSettings settings, ProgressFn progress = {});
 
   /// Full solve: the lights for `target`.
   Lighting solve(const Target& target, SolveReport& report);
@@ -70,9 +73,11 @@ public:
   /// Solves for max(Ψ − I(lights), 0) and returns `lights` followed by the new ones.
   Lighting add_lights(const Target& target, const Lighting& lights, SolveReport& report);
 
-  /// Illumination of `lights` at every target point from the renderer itself
-  /// (no light cache): what D̄ in reports is measured on.
+  /// Illumination of `lights` at every target point from the solve's renderer
+  /// (no light cache).
   std::vector<Rgb> illumination(const Target& target, const Lighting& lights);
+  /// D̄ of `lights` on the target, measured with the reference renderer.
+  double measure_dbar(const Target& target, const Lighting& lights);
   /// The hierarchy of the last solve (for moving between cuts).
   const std::optional<LightHierarchy>& hierarchy() const { return m_hierarchy; }
 
@@ -88,6 +93,7 @@ private:
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
   Renderer& m_renderer;
+  Renderer& m_reference;
   Optimizer& m_optimizer;
   SolveSettings m_settings;
   ProgressFn m_progress;
