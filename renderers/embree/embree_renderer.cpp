@@ -16,18 +16,19 @@ void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   m_embree = std::make_unique<RayScene>(*m_scene);
 }
 
-const BounceGather& EmbreeRenderer::gather_for(const SurfacePoints& points) {
+std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoints& points) {
   const uint64_t key = points.content_key();
+  std::lock_guard<std::mutex> lock(m_gather_mutex);
   auto it = std::find_if(m_gathers.begin(), m_gathers.end(), [&](const auto& g) { return g.first == key; });
   if (it == m_gathers.end()) {
     if (m_gathers.size() >= kGathersKept) m_gathers.pop_back();
-    auto gather = std::make_unique<BounceGather>(*m_embree, points, m_settings.bounce_samples, m_settings.seed);
+    auto gather = std::make_shared<const BounceGather>(*m_embree, points, m_settings.bounce_samples, m_settings.seed);
     m_rays += gather->rays_cast();
     m_gathers.emplace(m_gathers.begin(), key, std::move(gather));
   } else if (it != m_gathers.begin()) {
     std::rotate(m_gathers.begin(), it, it + 1);
   }
-  return *m_gathers.front().second;
+  return m_gathers.front().second;
 }
 
 std::string EmbreeRenderer::settings_key() const {
@@ -56,14 +57,20 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
   if (!m_embree) throw std::logic_error("EmbreeRenderer: set_scene was not called");
   std::vector<PreparedLight> prepared(lights.begin(), lights.end());
   const bool want_direct = transport != Transport::IndirectOnly;
-  const BounceGather* gather = m_settings.bounces > 0 && transport != Transport::DirectOnly ? &gather_for(points) : nullptr;
+  std::shared_ptr<const BounceGather> gather_owner;
+  if (m_settings.bounces > 0 && transport != Transport::DirectOnly) gather_owner = gather_for(points);
+  const BounceGather* gather = gather_owner.get();
   std::vector<float> vertex_direct;
   if (gather && m_settings.vertex_interpolated_bounce) vertex_direct = vertex_direct_irradiance(prepared);
   const size_t v_count = m_scene->positions.size();
   tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
   // Points in chunks, lights inside: neighbouring points' rays toward one
   // light are coherent, and the chunk's data stays in cache across lights.
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 32), [&](const tbb::blocked_range<size_t>& range) {
+  // Small batches (one light over a few thousand samples, the refinement's
+  // staple) get few, large chunks: task scheduling would cost more than rays.
+  const size_t work = points.size() * std::max<size_t>(1, lights.size());
+  const size_t grain = work < 200000 ? std::max<size_t>(32, points.size() / 8) : 32;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), grain), [&](const tbb::blocked_range<size_t>& range) {
     uint64_t& local_rays = rays.local();
     for (size_t j = 0; j < prepared.size(); ++j) {
       const PreparedLight& light = prepared[j];
@@ -105,7 +112,8 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
   std::vector<Rgb> vertex_indirect;
   if (m_settings.bounces > 0) {
     SurfacePoints vertices = SurfacePoints::from_vertices(scene);
-    const BounceGather& gather = gather_for(vertices);
+    auto gather_owner = gather_for(vertices);
+    const BounceGather& gather = *gather_owner;
     vertex_indirect.assign(vertices.size(), Rgb(0.f));
     std::vector<PreparedLight> prepared(lights.begin(), lights.end());
     tbb::combinable<uint64_t> rays([] { return uint64_t(0); });

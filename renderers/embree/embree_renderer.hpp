@@ -5,7 +5,9 @@
 #include "first_bounce.hpp"
 #include "hilight/renderer.hpp"
 
+#include <atomic>
 #include <memory>
+#include <mutex>
 
 namespace hilight::embree {
 
@@ -30,13 +32,14 @@ public:
                                   Transport transport = Transport::All) override;
   std::string settings_key() const override;
   Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) override;
-  uint64_t rays_cast() const override { return m_rays; }
+  uint64_t rays_cast() const override { return m_rays.load(); }
   std::vector<std::pair<std::string, double>> baseline_figures(const SurfacePoints& points,
                                                                std::span<const Light> lights) override;
 
 private:
   /// The gather for `points`, reused while the same point set comes back.
-  const BounceGather& gather_for(const SurfacePoints& points);
+  /// Shared ownership: another thread may evict it while this one reads.
+  std::shared_ptr<const BounceGather> gather_for(const SurfacePoints& points);
   /// Calls visit(i, j, unit RGB response) for every point i and light j, in parallel over points.
   template <class Visit>
   void for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Visit&& visit);
@@ -48,9 +51,10 @@ private:
   std::unique_ptr<RayScene> m_embree;
   /// Recent gathers, most recent first: a solve alternates between its
   /// samples and the whole target, an editing session between targets.
-  std::vector<std::pair<uint64_t, std::unique_ptr<BounceGather>>> m_gathers;
+  std::vector<std::pair<uint64_t, std::shared_ptr<const BounceGather>>> m_gathers;
   static constexpr size_t kGathersKept = 4;
-  uint64_t m_rays = 0;
+  std::atomic<uint64_t> m_rays{0};
+  std::mutex m_gather_mutex;  ///< calls may come from several threads (concurrent refinements)
 };
 
 } // namespace hilight::embree

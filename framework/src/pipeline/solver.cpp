@@ -5,6 +5,7 @@
 #include "hilight/pipeline/refine_problem.hpp"
 
 #include <chrono>
+#include <tbb/task_group.h>
 #include <cstdio>
 #include <sstream>
 
@@ -145,6 +146,7 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   Stopwatch refine_watch;
   ResponseModel exact(m_renderer, samples, nullptr);
   auto refine_cut = [&](size_t k) {
+    if (report.cuts[k - 1].refined) return;
     if (m_progress) m_progress("refining the cut with " + std::to_string(k) + " lights");
     CutRecord& rec = report.cuts[k - 1];
     rec.refined_lights = refine_anchored(model, exact, starts[k - 1], rec.dbar_refined);
@@ -155,14 +157,27 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   // D̄ by at least ε_impro. Cuts are refined lazily, only as the walk needs
   // them: the same choice upward as refining all N_cut first, at less cost.
   size_t count = chosen.front();
-  refine_cut(count);
+  {
+    // The walk always needs a neighbour of the first cut: refine both at
+    // once (each refinement has serial stretches; two fill both cores).
+    const bool automatic = m_settings.fixed_count == 0;
+    const bool down = automatic && count > 1 && report.cuts[count - 2].dbar_initial < m_settings.eps_impro * m_settings.eps_opt;
+    const bool up = automatic && chosen.size() > 1 && chosen[1] == count + 1;
+    tbb::task_group group;
+    group.run([&] { refine_cut(count); });
+    if (down) group.run([&] { refine_cut(count - 1); });
+    else if (up) group.run([&] { refine_cut(count + 1); });
+    group.wait();
+  }
   bool walked_down = false;
   if (m_settings.fixed_count == 0) {
     // Beyond the paper: a cut's D̄ before refinement is pessimistic (its
     // lights sit where merging left them), so the cuts just below the first
     // one under ε_opt may still be enough once refined. Walk down while the
     // smaller cut is within ε_impro of the larger.
-    while (count > 1) {
+    // A cut whose unrefined D̄ is ε_impro·ε_opt or more is not tried: it
+    // would need refinement to gain more than ε_impro to get within reach.
+    while (count > 1 && report.cuts[count - 2].dbar_initial < m_settings.eps_impro * m_settings.eps_opt) {
       refine_cut(count - 1);
       if (!(dbar_of(count) > 0) || dbar_of(count - 1) / dbar_of(count) >= m_settings.eps_impro) break;
       --count;

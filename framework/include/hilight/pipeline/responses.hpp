@@ -6,6 +6,7 @@
 #include "hilight/pipeline/samples.hpp"
 #include "hilight/renderer.hpp"
 
+#include <atomic>
 #include <span>
 #include <vector>
 
@@ -28,7 +29,7 @@ private:
   Renderer& m_renderer;
   const SampleSet& m_samples;
   const LightCacheView* m_cache;
-  size_t m_evaluations = 0;
+  std::atomic<size_t> m_evaluations{0};  ///< refinements of two cuts may run at once
 };
 
 } // namespace hilight
