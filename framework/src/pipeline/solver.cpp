@@ -244,21 +244,42 @@ std::vector<Rgb> Solver::illumination(const Target& target, const Lighting& ligh
   return combine(model.responses(lights), intensities, all.size());
 }
 
-double Solver::measure_dbar(const Target& target, const Lighting& lights) {
-  // Evenly spaced target points: an unbiased estimate of the whole target's
-  // D̄ at a fixed cost, whatever the target's size.
-  SampleSet all = all_samples(target);
-  SampleSet measured;
-  const size_t n = all.size(), want = m_settings.evaluation_points == 0 ? n : std::min(n, m_settings.evaluation_points);
+namespace {
+/// `count` evenly spaced target points, starting half a stride in when
+/// `offset` (so two calls give disjoint sets when the target is large).
+SampleSet spaced_points(const Target& target, size_t count, bool offset) {
+  const size_t n = target.size(), want = count == 0 ? n : std::min(n, count);
+  SampleSet s;
   for (size_t k = 0; k < want; ++k) {
-    size_t i = (k * n) / want;
-    measured.points.positions.push_back(all.points.positions[i]);
-    measured.points.normals.push_back(all.points.normals[i]);
-    measured.points.albedo.push_back(all.points.albedo[i]);
-    measured.target.push_back(all.target[i]);
-    measured.weight.push_back(all.weight[i]);
+    size_t i = std::min(n - 1, (2 * k + (offset ? 1 : 0)) * n / (2 * want));
+    s.points.positions.push_back(target.points.positions[i]);
+    s.points.normals.push_back(target.points.normals[i]);
+    s.points.albedo.push_back(target.points.albedo[i]);
+    s.binding.push_back(target.binding[i]);
+    s.target.push_back(target.value[i]);
+    s.weight.push_back(target.weight[i]);
   }
+  return s;
+}
+} // namespace
+
+double Solver::measure_dbar(const Target& target, const Lighting& lights) {
+  // Evenly spaced target points: an estimate of the whole target's D̄ at a
+  // fixed cost, whatever the target's size.
+  SampleSet measured = spaced_points(target, m_settings.evaluation_points, false);
   return normalized_difference(m_reference.illuminate(measured.points, lights), measured);
+}
+
+Lighting Solver::refit_with_reference(const Target& target, const Lighting& lights) {
+  // The positions came from the fast model; the intensities are re-fitted by
+  // NNLS with the reference renderer on evenly spaced points (disjoint from
+  // those D̄ is measured on), removing the fast model's bias from them.
+  SampleSet fit_points = spaced_points(target, m_settings.evaluation_points, true);
+  std::vector<Rgb> phi = m_reference.unit_responses(fit_points.points, lights);
+  std::vector<Rgb> l = fit_intensities(phi, lights.size(), fit_points);
+  Lighting out = lights;
+  for (size_t j = 0; j < out.size(); ++j) out[j].intensity = l[j];
+  return out;
 }
 
 void Solver::finish_report(const Target& target, const Lighting& lights, SolveReport& report) {
@@ -277,7 +298,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
   SampleSet samples = draw_samples(target, neighbourhood_radius(), m_settings.sampler);
   report.samples = samples.size();
   report.seconds["sampling"] += sample_watch.seconds();
-  Lighting lights = solve_samples(samples, report);
+  Lighting lights = refit_with_reference(target, solve_samples(samples, report));
   finish_report(target, lights, report);
   report.seconds["total"] = total.seconds();
   return lights;

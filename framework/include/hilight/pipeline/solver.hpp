@@ -78,6 +78,8 @@ public:
   std::vector<Rgb> illumination(const Target& target, const Lighting& lights);
   /// D̄ of `lights` on the target, measured with the reference renderer.
   double measure_dbar(const Target& target, const Lighting& lights);
+  /// `lights` with intensities re-fitted against the reference renderer.
+  Lighting refit_with_reference(const Target& target, const Lighting& lights);
   /// The hierarchy of the last solve (for moving between cuts).
   const std::optional<LightHierarchy>& hierarchy() const { return m_hierarchy; }
 
