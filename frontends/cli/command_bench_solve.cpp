@@ -46,6 +46,8 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--max-edge", max_edge, "tessellation of the room (0.15: about 25k vertices)")->check(FiniteNonNegative)->capture_default_str();
   app.add_option("--cache-dir", cache_root, "scratch folder for light caches (emptied first)")->capture_default_str();
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  bool no_cache_figure = false;
+  app.add_flag("--skip-no-cache", no_cache_figure, "skip the comparison solve without the light cache");
   if (auto code = parse(app, args)) return *code;
   set_thread_limit(threads);
 
@@ -105,6 +107,19 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
     for (const auto& [stage, v] : stages) j["warm_stage_seconds_median"][stage] = median(v);
     std::printf("%s\n", j.dump().c_str());
     std::fflush(stdout);
+  }
+  // Does the light cache pay? The same solve with every φ from the renderer.
+  if (!no_cache_figure) {
+    auto optimizer = registry.create_optimizer(optimizers.front(), {});
+    SolveSettings settings;
+    settings.use_cache = false;
+    Solver solver(scene, rays, *renderer, *reference, *optimizer, settings);
+    SolveReport report;
+    Lighting found = solver.solve(target, report);
+    nlohmann::json j = {{"figure", "solve_without_cache"}, {"optimizer", optimizers.front()}, {"found_lights", found.size()},
+                        {"dbar", report.dbar}, {"position_error_over_diagonal", mean_position_error(truth, found) / scene->diagonal()},
+                        {"seconds", report.seconds["total"]}, {"stage_seconds", report.seconds}};
+    std::printf("%s\n", j.dump().c_str());
   }
   std::filesystem::remove_all(cache_root);
   return 0;
