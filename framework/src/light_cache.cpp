@@ -1,5 +1,6 @@
 #include "hilight/light_cache.hpp"
 
+#include "hilight/hash.hpp"
 #include "hilight/io/atomic_file.hpp"
 
 #include <cmath>
@@ -17,27 +18,18 @@ namespace {
 constexpr uint32_t kFormatVersion = 2;  // 2: gathers seeded per point, not per index
 constexpr char kMagic[8] = {'H', 'L', 'C', 'A', 'C', 'H', 'E', '1'};
 
-uint64_t fnv(uint64_t h, const void* data, size_t bytes) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (size_t i = 0; i < bytes; ++i) {
-    h ^= p[i];
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
 } // namespace
 
 uint64_t LightCache::key(const Scene& scene, const std::string& renderer_key, const LightCacheSettings& settings) {
-  uint64_t h = 1469598103934665603ull;
-  h = fnv(h, &kFormatVersion, sizeof(kFormatVersion));
-  h = fnv(h, scene.positions.data(), scene.positions.size() * sizeof(Vec3));
-  h = fnv(h, scene.normals.data(), scene.normals.size() * sizeof(Vec3));
-  h = fnv(h, scene.triangles.data(), scene.triangles.size() * sizeof(scene.triangles[0]));
-  h = fnv(h, scene.triangle_material.data(), scene.triangle_material.size() * sizeof(uint32_t));
-  for (const auto& m : scene.materials) h = fnv(h, &m.albedo, sizeof(m.albedo));
-  h = fnv(h, renderer_key.data(), renderer_key.size());
-  h = fnv(h, &settings.cells_along_longest_axis, sizeof(int));
+  uint64_t h = kFnvOffset;
+  h = fnv1a(h, &kFormatVersion, sizeof(kFormatVersion));
+  h = fnv1a(h, scene.positions.data(), scene.positions.size() * sizeof(Vec3));
+  h = fnv1a(h, scene.normals.data(), scene.normals.size() * sizeof(Vec3));
+  h = fnv1a(h, scene.triangles.data(), scene.triangles.size() * sizeof(scene.triangles[0]));
+  h = fnv1a(h, scene.triangle_material.data(), scene.triangle_material.size() * sizeof(uint32_t));
+  for (const auto& m : scene.materials) h = fnv1a(h, &m.albedo, sizeof(m.albedo));
+  h = fnv1a(h, renderer_key.data(), renderer_key.size());
+  h = fnv1a(h, &settings.cells_along_longest_axis, sizeof(int));
   return h;
 }
 

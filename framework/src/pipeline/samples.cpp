@@ -7,6 +7,16 @@
 
 namespace hilight {
 
+void SampleSet::add(const Target& from, uint32_t i) {
+  points.positions.push_back(from.points.positions[i]);
+  points.normals.push_back(from.points.normals[i]);
+  points.albedo.push_back(from.points.albedo[i]);
+  binding.push_back(from.binding[i]);
+  target.push_back(from.value[i]);
+  weight.push_back(from.weight[i]);
+  target_index.push_back(i);
+}
+
 double SampleSet::target_norm() const {
   double sum = 0;
   for (size_t i = 0; i < target.size(); ++i) sum += weight[i] * glm::dot(DVec3(target[i]), DVec3(target[i]));
@@ -102,13 +112,7 @@ SampleSet draw_samples(const Target& target, float radius, const SamplerSettings
   for (uint32_t i = 0; i < n && s.size() < settings.count; ++i) {
     cumulative += importance[i];
     if (cumulative > next) {
-      s.points.positions.push_back(target.points.positions[i]);
-      s.points.normals.push_back(target.points.normals[i]);
-      s.points.albedo.push_back(target.points.albedo[i]);
-      s.binding.push_back(target.binding[i]);
-      s.target.push_back(target.value[i]);
-      s.weight.push_back(target.weight[i]);
-      s.target_index.push_back(i);
+      s.add(target, i);
       next += step;
     }
   }

@@ -250,15 +250,7 @@ namespace {
 SampleSet spaced_points(const Target& target, size_t count, bool offset) {
   const size_t n = target.size(), want = count == 0 ? n : std::min(n, count);
   SampleSet s;
-  for (size_t k = 0; k < want; ++k) {
-    size_t i = std::min(n - 1, (2 * k + (offset ? 1 : 0)) * n / (2 * want));
-    s.points.positions.push_back(target.points.positions[i]);
-    s.points.normals.push_back(target.points.normals[i]);
-    s.points.albedo.push_back(target.points.albedo[i]);
-    s.binding.push_back(target.binding[i]);
-    s.target.push_back(target.value[i]);
-    s.weight.push_back(target.weight[i]);
-  }
+  for (size_t k = 0; k < want; ++k) s.add(target, uint32_t(std::min(n - 1, (2 * k + (offset ? 1 : 0)) * n / (2 * want))));
   return s;
 }
 } // namespace
@@ -290,14 +282,19 @@ void Solver::finish_report(const Target& target, const Lighting& lights, SolveRe
   report.seconds["evaluation"] += watch.seconds();
 }
 
+SampleSet Solver::sample(const Target& target, SolveReport& report) {
+  if (m_progress) m_progress("sampling");
+  Stopwatch watch;
+  SampleSet samples = draw_samples(target, neighbourhood_radius(), m_settings.sampler);
+  report.samples = samples.size();
+  report.seconds["sampling"] += watch.seconds();
+  return samples;
+}
+
 Lighting Solver::solve(const Target& target, SolveReport& report) {
   Stopwatch total;
   ensure_cache(report);
-  if (m_progress) m_progress("sampling");
-  Stopwatch sample_watch;
-  SampleSet samples = draw_samples(target, neighbourhood_radius(), m_settings.sampler);
-  report.samples = samples.size();
-  report.seconds["sampling"] += sample_watch.seconds();
+  SampleSet samples = sample(target, report);
   Lighting lights = refit_with_reference(target, solve_samples(samples, report));
   finish_report(target, lights, report);
   report.seconds["total"] = total.seconds();
@@ -307,10 +304,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
 Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveReport& report) {
   Stopwatch total;
   ensure_cache(report);
-  Stopwatch sample_watch;
-  SampleSet samples = draw_samples(target, neighbourhood_radius(), m_settings.sampler);
-  report.samples = samples.size();
-  report.seconds["sampling"] += sample_watch.seconds();
+  SampleSet samples = sample(target, report);
   std::optional<LightCacheView> view;
   if (m_cache) view.emplace(*m_cache, *m_scene, samples);
   ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
@@ -331,10 +325,7 @@ Lighting Solver::add_lights(const Target& target, const Lighting& lights, SolveR
   Target missing = target;
   for (size_t i = 0; i < missing.size(); ++i) missing.value[i] = glm::max(target.value[i] - current[i], Rgb(0.f));
   if (!(missing.norm() > 1e-6 * target.norm())) throw InputError(target.source, "the given lights already produce the whole target: nothing to add");
-  Stopwatch sample_watch;
-  SampleSet samples = draw_samples(missing, neighbourhood_radius(), m_settings.sampler);
-  report.samples = samples.size();
-  report.seconds["sampling"] += sample_watch.seconds();
+  SampleSet samples = sample(missing, report);
   Lighting added = solve_samples(samples, report);
   Lighting all = lights;
   all.insert(all.end(), added.begin(), added.end());

@@ -18,6 +18,8 @@ struct SampleSet {
   std::vector<uint32_t> target_index;
 
   size_t size() const { return target.size(); }
+  /// Appends target point i as a sample.
+  void add(const Target& from, uint32_t i);
   /// Weighted ‖Ψ‖ over the samples.
   double target_norm() const;
 };

@@ -85,6 +85,7 @@ public:
 
 private:
   void ensure_cache(SolveReport& report);
+  SampleSet sample(const Target& target, SolveReport& report);
   Lighting solve_samples(const SampleSet& samples, SolveReport& report);
   /// Refines `start`, anchored at it, then re-anchored at the result and polished.
   Lighting refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar,
