@@ -15,6 +15,7 @@ PACKAGES=(
   libembree-dev libassimp-dev libglm-dev libopenexr-dev libpng-dev libtbb-dev
   nlohmann-json3-dev libcli11-dev catch2 libeigen3-dev
   assimp-testmodels   # real broken and valid models the tests load
+  povray              # the reference renderer (renderers/povray)
 )
 
 install_deps() {

@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr uint32_t kFormatVersion = 2;  // 2: gathers seeded per point, not per index
+constexpr uint32_t kFormatVersion = 3;  // 3: side-aware bounce, shading points
 constexpr char kMagic[8] = {'H', 'L', 'C', 'A', 'C', 'H', 'E', '1'};
 
 } // namespace

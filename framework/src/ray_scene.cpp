@@ -182,3 +182,19 @@ bool RayScene::inside_solid(const Vec3& p) const {
 }
 
 } // namespace hilight
+
+namespace hilight {
+
+Vec3 shading_point(const RayScene& rays, const Vec3& position, const Vec3& normal) {
+  const Scene& scene = rays.scene();
+  Hit h = rays.closest_point(position, 1e-3f * scene.diagonal(), normal);
+  if (!h.valid()) return position;
+  const auto& tri = scene.triangles[h.triangle];
+  Vec3 to_centroid = (scene.positions[tri[0]] + scene.positions[tri[1]] + scene.positions[tri[2]]) / 3.f - position;
+  float distance = glm::length(to_centroid);
+  if (!(distance > 0.f)) return position;
+  float step = std::min(std::max(0.01f * distance, 3e-3f), 0.1f * distance);
+  return position + to_centroid * (step / distance);
+}
+
+} // namespace hilight

@@ -33,25 +33,34 @@ struct PreparedLight {
   }
 };
 
-/// Irradiance at `p` (shading normal `n`) from `light` at unit intensity.
-/// `offset_normal` (geometric normal, or n) lifts the shadow ray's origin to
-/// the light's side. Counts the shadow ray it casts in `rays`.
-inline float unit_direct_irradiance(const RayScene& es, const Vec3& p, const Vec3& n, const Vec3& offset_normal,
-                                    const PreparedLight& light, uint64_t& rays) {
+/// Irradiance on one side of a surface at `p` — the side `side_normal` points
+/// to — from `light` at unit intensity: |n·ω| · S / d² · V, zero for a light
+/// behind that side. Counts the shadow ray it casts in `rays`.
+inline float unit_direct_irradiance_on_side(const RayScene& es, const Vec3& p, const Vec3& n, const Vec3& side_normal,
+                                            const PreparedLight& light, uint64_t& rays) {
   Vec3 d = light.position - p;
   float dist2 = glm::dot(d, d);
   float eps = es.epsilon();
   if (dist2 <= eps * eps) return 0.f;
   float dist = std::sqrt(dist2);
   Vec3 w = d / dist;
-  float cos_n = glm::dot(n, w);
+  if (glm::dot(side_normal, w) <= 0.f) return 0.f;
+  float cos_n = std::abs(glm::dot(n, w));
   if (cos_n == 0.f) return 0.f;
   float angular = light.angular(-w);
   if (angular == 0.f) return 0.f;
-  Vec3 origin = p + (glm::dot(offset_normal, w) >= 0.f ? offset_normal : -offset_normal) * eps;
   ++rays;
-  if (es.occluded(origin, w, dist - 2.f * eps)) return 0.f;
-  return std::abs(cos_n) * angular / dist2;
+  if (es.occluded(p + side_normal * eps, w, dist - 2.f * eps)) return 0.f;
+  return cos_n * angular / dist2;
+}
+
+/// Irradiance at `p` summed over both sides (a light lies on one of them):
+/// the two-sided value of docs/rendering-model.md. `offset_normal` (the
+/// geometric normal, or n) tells the sides apart.
+inline float unit_direct_irradiance(const RayScene& es, const Vec3& p, const Vec3& n, const Vec3& offset_normal,
+                                    const PreparedLight& light, uint64_t& rays) {
+  Vec3 side = glm::dot(offset_normal, light.position - p) >= 0.f ? offset_normal : -offset_normal;
+  return unit_direct_irradiance_on_side(es, p, n, side, light, rays);
 }
 
 } // namespace hilight::embree

@@ -10,25 +10,30 @@
 namespace hilight::embree {
 
 void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
+  if (m_scene) throw std::logic_error("EmbreeRenderer: set_scene may be called once");
   m_gathers.clear();
+  m_shading_points.clear();
   m_embree.reset();
   m_scene = std::move(scene);
   m_embree = std::make_unique<RayScene>(*m_scene);
 }
 
 std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoints& points) {
-  const uint64_t key = points.content_key();
-  std::lock_guard<std::mutex> lock(m_gather_mutex);
-  auto it = std::find_if(m_gathers.begin(), m_gathers.end(), [&](const auto& g) { return g.first == key; });
-  if (it == m_gathers.end()) {
-    if (m_gathers.size() >= kGathersKept) m_gathers.pop_back();
-    auto gather = std::make_shared<const BounceGather>(*m_embree, points, m_settings.bounce_samples, m_settings.seed);
+  auto origins = shading_points(points);
+  return m_gathers.get(points.content_key(), [&] {
+    auto gather = std::make_shared<const BounceGather>(*m_embree, points, *origins, m_settings.bounce_samples, m_settings.seed);
     m_rays += gather->rays_cast();
-    m_gathers.emplace(m_gathers.begin(), key, std::move(gather));
-  } else if (it != m_gathers.begin()) {
-    std::rotate(m_gathers.begin(), it, it + 1);
-  }
-  return m_gathers.front().second;
+    return gather;
+  });
+}
+
+std::shared_ptr<const std::vector<Vec3>> EmbreeRenderer::shading_points(const SurfacePoints& points) {
+  return m_shading_points.get(points.content_key(), [&] {
+    auto out = std::make_shared<std::vector<Vec3>>(points.size());
+    tbb::parallel_for(size_t(0), points.size(),
+                      [&](size_t i) { (*out)[i] = shading_point(*m_embree, points.positions[i], points.normals[i]); });
+    return std::shared_ptr<const std::vector<Vec3>>(std::move(out));
+  });
 }
 
 std::string EmbreeRenderer::settings_key() const {
@@ -37,15 +42,23 @@ std::string EmbreeRenderer::settings_key() const {
 }
 
 std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const PreparedLight> lights) {
+  // Two values per vertex and light: the side its normal points to, the other.
   const Scene& scene = *m_scene;
   const size_t v_count = scene.positions.size();
-  std::vector<float> out(v_count * lights.size());
+  std::call_once(m_vertex_shading_once, [&] {  // vertices on creases: shade them inside their triangle
+    m_vertex_shading.resize(v_count);
+    tbb::parallel_for(size_t(0), v_count,
+                      [&](size_t v) { m_vertex_shading[v] = shading_point(*m_embree, scene.positions[v], scene.normals[v]); });
+  });
+  std::vector<float> out(2 * v_count * lights.size());
   tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
   tbb::parallel_for(tbb::blocked_range<size_t>(0, v_count, 64), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t j = 0; j < lights.size(); ++j)
-      for (size_t v = r.begin(); v != r.end(); ++v)
-        out[j * v_count + v] = unit_direct_irradiance(*m_embree, scene.positions[v], scene.normals[v], scene.normals[v],
-                                                      lights[j], rays.local());
+      for (size_t v = r.begin(); v != r.end(); ++v) {
+        const Vec3 &p = m_vertex_shading[v], &n = scene.normals[v];
+        out[j * 2 * v_count + 2 * v] = unit_direct_irradiance_on_side(*m_embree, p, n, n, lights[j], rays.local());
+        out[j * 2 * v_count + 2 * v + 1] = unit_direct_irradiance_on_side(*m_embree, p, n, -n, lights[j], rays.local());
+      }
   });
   m_rays += rays.combine(std::plus<uint64_t>());
   return out;
@@ -63,6 +76,7 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
   std::vector<float> vertex_direct;
   if (gather && m_settings.vertex_interpolated_bounce) vertex_direct = vertex_direct_irradiance(prepared);
   const size_t v_count = m_scene->positions.size();
+  auto shading_owner = want_direct ? shading_points(points) : nullptr;
   tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
   // Points in chunks, lights inside: neighbouring points' rays toward one
   // light are coherent, and the chunk's data stays in cache across lights.
@@ -76,8 +90,8 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
       const PreparedLight& light = prepared[j];
       for (size_t i = range.begin(); i != range.end(); ++i) {
         const Vec3& n = points.normals[i];
-        Rgb e(want_direct ? unit_direct_irradiance(*m_embree, points.positions[i], n, n, light, local_rays) : 0.f);
-        if (gather && !vertex_direct.empty()) e += gather->interpolated_indirect_irradiance(i, &vertex_direct[j * v_count]);
+        Rgb e(want_direct ? unit_direct_irradiance(*m_embree, (*shading_owner)[i], n, n, light, local_rays) : 0.f);
+        if (gather && !vertex_direct.empty()) e += gather->interpolated_indirect_irradiance(i, &vertex_direct[j * 2 * v_count]);
         else if (gather) e += gather->unit_indirect_irradiance(i, light, local_rays);
         visit(i, j, points.albedo[i] * float(1.0 / kPi) * e);
       }

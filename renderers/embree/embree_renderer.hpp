@@ -3,6 +3,7 @@
 /// gathering (first_bounce.hpp). Parameters are in embree_plugin.cpp.
 #include "hilight/ray_scene.hpp"
 #include "first_bounce.hpp"
+#include "keyed_lru.hpp"
 #include "hilight/renderer.hpp"
 
 #include <atomic>
@@ -38,23 +39,24 @@ public:
 
 private:
   /// The gather for `points`, reused while the same point set comes back.
-  /// Shared ownership: another thread may evict it while this one reads.
   std::shared_ptr<const BounceGather> gather_for(const SurfacePoints& points);
+  /// Where each point is shaded (hilight::shading_point), per point set.
+  std::shared_ptr<const std::vector<Vec3>> shading_points(const SurfacePoints& points);
   /// Calls visit(i, j, unit RGB response) for every point i and light j, in parallel over points.
   template <class Visit>
   void for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Visit&& visit);
-  /// Unit direct irradiance at every scene vertex for each light, light-major.
+  /// Unit direct irradiance at every scene vertex for each light, on each
+  /// side (light-major; per vertex: normal side, then the other).
   std::vector<float> vertex_direct_irradiance(std::span<const PreparedLight> lights);
 
   EmbreeSettings m_settings;
   std::shared_ptr<const Scene> m_scene;
   std::unique_ptr<RayScene> m_embree;
-  /// Recent gathers, most recent first: a solve alternates between its
-  /// samples and the whole target, an editing session between targets.
-  std::vector<std::pair<uint64_t, std::shared_ptr<const BounceGather>>> m_gathers;
-  static constexpr size_t kGathersKept = 4;
-  std::atomic<uint64_t> m_rays{0};
-  std::mutex m_gather_mutex;  ///< calls may come from several threads (concurrent refinements)
+  KeyedLru<BounceGather> m_gathers{4};
+  KeyedLru<std::vector<Vec3>> m_shading_points{4};
+  std::once_flag m_vertex_shading_once;
+  std::vector<Vec3> m_vertex_shading;  ///< shading_point() of every scene vertex
+  std::atomic<uint64_t> m_rays{0};  ///< calls may come from several threads (concurrent refinements)
 };
 
 } // namespace hilight::embree

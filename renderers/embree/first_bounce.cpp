@@ -10,7 +10,8 @@
 
 namespace hilight::embree {
 
-BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, int samples, uint64_t seed)
+BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<Vec3>& origins, int samples,
+                           uint64_t seed)
     : m_es(es), m_samples(samples), m_hits(points.size() * size_t(samples)) {
   const int per_side = samples / 2;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
@@ -27,14 +28,18 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, int 
       for (uint32_t b : bits) stream = mix64(stream ^ b);
       for (int side = 0; side < 2; ++side) {
         const Vec3 axis = side == 0 ? n : -n;
-        const Vec3 origin = points.positions[i] + axis * es.epsilon();
+        const Vec3 origin = origins[i] + axis * es.epsilon();
         float rot1 = to_unit_float(stream = mix64(stream)), rot2 = to_unit_float(stream = mix64(stream));
         for (int k = 0; k < per_side; ++k) {
           float u1 = float(k + 0.5f) / float(per_side) + rot1;
           float u2 = radical_inverse2(uint32_t(k)) + rot2;
           u1 -= std::floor(u1);
           u2 -= std::floor(u2);
-          m_hits[i * samples + side * per_side + k] = es.intersect(origin, cosine_direction(axis, u1, u2));
+          const Vec3 dir = cosine_direction(axis, u1, u2);
+          const Hit hit = es.intersect(origin, dir);
+          GatherHit& g = m_hits[i * samples + side * per_side + k];
+          if (hit.valid())
+            g = {hit.triangle, hit.u, hit.v, glm::dot(es.face_normals()[hit.triangle], dir) < 0.f ? 1.f : -1.f};
         }
       }
     }
@@ -45,11 +50,16 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, int 
 Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light, uint64_t& rays) const {
   const Scene& scene = m_es.scene();
   Rgb sum(0.f);
-  const Hit* hits = &m_hits[i * m_samples];
+  const GatherHit* hits = &m_hits[i * m_samples];
   for (int k = 0; k < m_samples; ++k) {
-    const Hit& hit = hits[k];
-    if (!hit.valid()) continue;
-    float e = unit_direct_irradiance(m_es, m_es.hit_position(hit), m_es.hit_normal(hit), m_es.face_normals()[hit.triangle], light, rays);
+    const GatherHit& g = hits[k];
+    if (!g.valid()) continue;
+    Hit hit;
+    hit.triangle = g.triangle;
+    hit.u = g.u;
+    hit.v = g.v;
+    float e = unit_direct_irradiance_on_side(m_es, m_es.hit_position(hit), m_es.hit_normal(hit),
+                                             g.side * m_es.face_normals()[hit.triangle], light, rays);
     if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
   }
   return sum * (2.f / float(m_samples));
@@ -62,12 +72,15 @@ namespace hilight::embree {
 Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex_direct) const {
   const Scene& scene = m_es.scene();
   Rgb sum(0.f);
-  const Hit* hits = &m_hits[i * m_samples];
+  const GatherHit* hits = &m_hits[i * m_samples];
   for (int k = 0; k < m_samples; ++k) {
-    const Hit& hit = hits[k];
+    const GatherHit& hit = hits[k];
     if (!hit.valid()) continue;
     const auto& tri = scene.triangles[hit.triangle];
-    float e = (1.f - hit.u - hit.v) * vertex_direct[tri[0]] + hit.u * vertex_direct[tri[1]] + hit.v * vertex_direct[tri[2]];
+    const Vec3 side = hit.side * m_es.face_normals()[hit.triangle];
+    // Each vertex holds both sides' values; take the side facing the gatherer.
+    auto on_side = [&](uint32_t v) { return vertex_direct[2 * v + (glm::dot(scene.normals[v], side) >= 0.f ? 0 : 1)]; };
+    float e = (1.f - hit.u - hit.v) * on_side(tri[0]) + hit.u * on_side(tri[1]) + hit.v * on_side(tri[2]);
     if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
   }
   return sum * (2.f / float(m_samples));

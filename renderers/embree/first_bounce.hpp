@@ -6,6 +6,10 @@
 /// then costs N shadow rays per point and no further intersection tests:
 ///   E_ind(x) = ∫_{S²} L(y(ω)) |cos θ| dω  ≈  (2/N) Σ_k albedo(y_k) · E_dir(y_k)
 /// (each hemisphere's estimate is π/(N/2) Σ L, and L(y) = albedo(y)/π · E_dir(y)).
+/// The radiance a hit y sends back is that of y's side facing the gathering
+/// point: ρ/π times the direct light arriving on that side only. So the
+/// inside of a closed object, lit on no side, sends nothing (no light leaks
+/// through solids), while a lone sheet lit from one side glows on that side.
 /// Unbiased for any N; the error falls as N grows (tests show it).
 #include "direct_light.hpp"
 #include "hilight/ray_scene.hpp"
@@ -17,7 +21,9 @@ namespace hilight::embree {
 
 class BounceGather {
 public:
-  BounceGather(const RayScene& es, const SurfacePoints& points, int samples, uint64_t seed);
+  /// `origins`: where each point is shaded (hilight::shading_point), so rays
+  /// from a point on a crease do not start on the neighbouring face's plane.
+  BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<Vec3>& origins, int samples, uint64_t seed);
 
   int samples() const { return m_samples; }
   uint64_t rays_cast() const { return m_rays; }
@@ -25,14 +31,22 @@ public:
   /// Indirect irradiance (RGB, per unit light intensity) at point i.
   Rgb unit_indirect_irradiance(size_t i, const PreparedLight& light, uint64_t& rays) const;
   /// The same with the direct irradiance at each hit interpolated from
-  /// `vertex_direct` (one value per scene vertex) instead of shadow rays.
+  /// `vertex_direct` — per scene vertex, two values: the side its normal
+  /// points to, then the other — instead of shadow rays.
   Rgb interpolated_indirect_irradiance(size_t i, const float* vertex_direct) const;
 
 private:
   const RayScene& m_es;
   int m_samples;
   uint64_t m_rays = 0;
-  std::vector<Hit> m_hits;  ///< point-major, m * samples
+  /// A gather ray's hit and which side of the hit triangle it saw.
+  struct GatherHit {
+    uint32_t triangle = RTC_INVALID_GEOMETRY_ID;
+    float u = 0.f, v = 0.f;
+    float side = 1.f;  ///< +1: the side the face normal points to; -1: the other
+    bool valid() const { return triangle != RTC_INVALID_GEOMETRY_ID; }
+  };
+  std::vector<GatherHit> m_hits;  ///< point-major, m * samples
 };
 
 } // namespace hilight::embree

@@ -16,6 +16,15 @@ struct Hit {
   bool valid() const { return triangle != RTC_INVALID_GEOMETRY_ID; }
 };
 
+class RayScene;
+
+/// Where renderers shade a surface point: a hair inside the triangle it lies
+/// on (toward its centroid: 1% of the way, at least 3e-3 scene units — POV-
+/// Ray ignores shadow hits closer than 1e-3 — at most 10%), so that a point on
+/// an edge or corner never starts rays on a neighbouring face's plane. Every
+/// renderer calls this, so they all shade the same point.
+Vec3 shading_point(const RayScene& rays, const Vec3& position, const Vec3& normal);
+
 class RayScene {
 public:
   explicit RayScene(const Scene& scene);

@@ -1,0 +1,44 @@
+#pragma once
+/// A small thread-safe most-recently-used store of per-point-set data, keyed
+/// by SurfacePoints::content_key(): a solve alternates between its samples
+/// and the whole target, an editing session between targets.
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+namespace hilight::embree {
+
+template <class T>
+class KeyedLru {
+public:
+  explicit KeyedLru(size_t capacity) : m_capacity(capacity) {}
+
+  /// The entry for `key`, made by `make()` if absent. Shared ownership: another
+  /// thread may evict it while this one still reads it.
+  std::shared_ptr<const T> get(uint64_t key, const std::function<std::shared_ptr<const T>()>& make) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    auto it = std::find_if(m_items.begin(), m_items.end(), [&](const auto& e) { return e.first == key; });
+    if (it == m_items.end()) {
+      if (m_items.size() >= m_capacity) m_items.pop_back();
+      m_items.emplace(m_items.begin(), key, make());
+    } else if (it != m_items.begin()) {
+      std::rotate(m_items.begin(), it, it + 1);
+    }
+    return m_items.front().second;
+  }
+  void clear() {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_items.clear();
+  }
+
+private:
+  size_t m_capacity;
+  std::mutex m_mutex;
+  std::vector<std::pair<uint64_t, std::shared_ptr<const T>>> m_items;
+};
+
+} // namespace hilight::embree

@@ -1,0 +1,43 @@
+#pragma once
+/// The POV-Ray reference renderer: exports the scene (io/pov_export) and runs
+/// the real `povray`. Per-point illumination is baked with `mesh_camera`:
+/// one tiny camera triangle per point, just off the surface along its normal,
+/// its single ray aimed back at the point (docs/povray.md).
+#include "hilight/io/pov_export.hpp"
+#include "hilight/ray_scene.hpp"
+#include "hilight/renderer.hpp"
+
+#include <memory>
+#include <string>
+
+namespace hilight::povray {
+
+struct PovraySettings {
+  PovSettings pov;
+  double timeout_seconds = 600;
+  std::string executable;
+};
+
+class PovrayRenderer final : public Renderer {
+public:
+  explicit PovrayRenderer(PovraySettings settings) : m_settings(std::move(settings)) {}
+
+  void set_scene(std::shared_ptr<const Scene> scene) override;
+  std::vector<Rgb> illuminate(const SurfacePoints& points, std::span<const Light> lights) override;
+  std::vector<Rgb> unit_responses(const SurfacePoints& points, std::span<const Light> lights,
+                                  Transport transport = Transport::All) override;
+  Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) override;
+  std::string settings_key() const override;
+
+private:
+  /// Radiance at the points under `lights`, from one POV-Ray run.
+  std::vector<Rgb> bake(const SurfacePoints& points, std::span<const Light> lights, int bounces);
+  /// Scale for light colours so that baked values sit where half floats are precise.
+  float exposure_scale(std::span<const Light> lights) const;
+
+  PovraySettings m_settings;
+  std::shared_ptr<const Scene> m_scene;
+  std::unique_ptr<RayScene> m_rays;
+};
+
+} // namespace hilight::povray
