@@ -233,3 +233,67 @@ TEST_CASE("a POV-Ray target solved with Embree gives back the known lights", "[p
     CHECK(best <= 0.02f * diag);
   }
 }
+
+TEST_CASE("a soft-edged spotlight: Embree and POV-Ray agree within 1% across the edge", "[povray][cross][spot]") {
+  SKIP_WITHOUT_POVRAY();
+  auto scene = test::finish(builders::plane(5.f, Rgb(0.8f)), 0.15f);
+  auto points = SurfacePoints::from_vertices(*scene);
+  Light spot = Light::spot({0.f, 2.f, 0.f}, {0.f, -1.f, 0.f}, 40.f, Rgb(2.f), 20.f);
+  auto embree = test::make_renderer("embree", scene, {"bounces=0"})->illuminate(points, std::span<const Light>(&spot, 1));
+  auto pov = test::make_renderer("povray", scene, {"bounces=0"})->illuminate(points, std::span<const Light>(&spot, 1));
+  size_t n = 0, in_band = 0;
+  double worst = worst_relative(pov, embree, &n);
+  for (const auto& p : points.positions) {
+    double angle = std::atan2(std::hypot(p.x, p.z), 2.0) * 180.0 / kPi;
+    in_band += angle > 21 && angle < 39;
+  }
+  INFO("worst relative difference " << worst << " over " << n << " points, " << in_band << " in the soft edge");
+  CHECK(in_band > 200);
+  CHECK(worst < 0.01);
+}
+
+TEST_CASE("POV-Ray failures are reported, not hidden: time limit and POV-Ray's own error", "[povray][bad-input]") {
+  SKIP_WITHOUT_POVRAY();
+  auto scene = test::finish(builders::furnished_room(), 0.3f);
+  auto points = SurfacePoints::from_vertices(*scene);
+  Light light = Light::point({3.f, 2.f, 2.f}, Rgb(1.f));
+  auto slow = test::make_renderer("povray", scene, {"timeout=0.01"});
+  CHECK_THROWS_WITH(slow->illuminate(points, std::span<const Light>(&light, 1)), Catch::Contains("time limit"));
+  // Through the CLI: one line, exit code != 0, no output file.
+  auto dir = test::output_dir("povray_failure");
+  test::write_text(dir / "l.json", R"({"lights":[{"type":"point","position":[3,2,2],"intensity":[1,1,1]}]})");
+  auto r = test::run_hilight({"render", std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj", "--lights", (dir / "l.json").string(),
+                              "--renderer", "povray", "--set", "timeout=0.01", "-o", (dir / "out.ply").string()});
+  CHECK(r.exit_code != 0);
+  CHECK(test::line_count(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("povray"));
+  CHECK_FALSE(std::filesystem::exists(dir / "out.ply"));
+}
+
+TEST_CASE("hilight export writes a POV-Ray scene that POV-Ray renders like hilight", "[povray][cross][export]") {
+  SKIP_WITHOUT_POVRAY();
+  auto dir = test::output_dir("povray_export");
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  const std::string lights = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room-lights.json";
+  const std::string camera = "5.6,2.6,4.7,2,0.6,1.5,70";
+  auto e = test::run_hilight({"export", room, "--lights", lights, "-o", (dir / "room.pov").string(), "--bounces", "0", "--camera",
+                              camera, "--width", "120", "--height", "90"});
+  REQUIRE(e.exit_code == 0);
+  // Render the exported file with POV-Ray itself, as a user would.
+  int rc = std::system(("cd '" + dir.string() + "' && povray -D -V -A +W120 +H90 +FE +Opov.exr room.pov >/dev/null 2>&1").c_str());
+  REQUIRE(rc == 0);
+  auto h = test::run_hilight({"render", room, "--lights", lights, "--bounces", "0", "--camera", camera, "--width", "120", "--height",
+                              "90", "-o", (dir / "hilight.exr").string()});
+  REQUIRE(h.exit_code == 0);
+  Image a = read_exr(dir / "hilight.exr"), b = read_exr(dir / "pov.exr");
+  REQUIRE(a.width == b.width);
+  REQUIRE(a.height == b.height);
+  double sum = 0, ref = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    if (!a.covered[i] || b.pixels[i].r < 0) continue;
+    sum += std::abs(a.pixels[i].r - b.pixels[i].r);
+    ref += a.pixels[i].r;
+  }
+  INFO("mean relative difference " << sum / ref);
+  CHECK(sum / ref < 0.02);
+}

@@ -71,7 +71,7 @@ TEST_CASE("a spotlight is zero outside its cone and the point-light value inside
   CHECK(outside > 1000);
 }
 
-TEST_CASE("a spotlight's soft edge falls smoothly from full to zero between cutoff-falloff and cutoff", "[renderer][spot]") {
+TEST_CASE("a spotlight's soft edge falls smoothly (smoothstep in cosine) between cutoff-falloff and cutoff", "[renderer][spot]") {
   auto scene = test::finish(builders::plane(10.f, Rgb(0.8f)), 0.2f);
   auto renderer = test::make_renderer("embree", scene, {"bounces=0"});
   auto points = SurfacePoints::from_vertices(*scene);
@@ -86,7 +86,9 @@ TEST_CASE("a spotlight's soft edge falls smoothly from full to zero between cuto
     if (angle < 19.9) REQUIRE(ratio == Approx(1.0).epsilon(1e-4));
     else if (angle > 40.1) REQUIRE(ratio == 0.0);
     else if (angle > 20.1 && angle < 39.9) {
-      double t = (40.0 - angle) / 20.0;
+      // Smoothstep in the cosine between the edges (docs/rendering-model.md).
+      const double c = std::cos(angle * kPi / 180.0), c_out = std::cos(40.0 * kPi / 180.0), c_in = std::cos(20.0 * kPi / 180.0);
+      double t = (c - c_out) / (c_in - c_out);
       // Shading happens a few mm inside the triangle (shading_point): the
       // angle there differs slightly from the vertex angle used for t.
       REQUIRE(ratio == Approx(t * t * (3 - 2 * t)).margin(1e-2));

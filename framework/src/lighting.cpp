@@ -7,11 +7,13 @@ namespace hilight {
 
 float spot_factor(const Light& light, const Vec3& to_point) {
   if (light.type != LightType::Spot) return 1.f;
-  float cos_angle = glm::dot(light.direction, to_point);
-  float angle = std::acos(std::clamp(cos_angle, -1.f, 1.f)) * float(180.0 / kPi);
-  if (angle > light.cutoff_deg) return 0.f;
+  const float c = glm::dot(light.direction, to_point);
+  const float cos_cutoff = std::cos(float(light.cutoff_deg * kPi / 180.0));
+  if (c < cos_cutoff) return 0.f;
   if (light.falloff_deg <= 0.f) return 1.f;
-  float t = std::clamp((light.cutoff_deg - angle) / light.falloff_deg, 0.f, 1.f);
+  const float cos_inner = std::cos(float((light.cutoff_deg - light.falloff_deg) * kPi / 180.0));
+  if (c >= cos_inner) return 1.f;
+  const float t = (c - cos_cutoff) / (cos_inner - cos_cutoff);
   return t * t * (3.f - 2.f * t);
 }
 

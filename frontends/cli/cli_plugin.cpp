@@ -13,6 +13,7 @@ public:
     return {{"info", "print a scene's size, bounds and tessellation"},
             {"render", "illuminate a scene with lights: PLY per vertex, PNG/EXR image"},
             {"solve", "find the lights that produce a target illumination"},
+            {"export", "write a POV-Ray scene that renders what hilight shows"},
             {"plugins", "list plugin modules, their versions and availability"},
             {"bench", "measure renderer throughput (machine-readable JSON lines)"}};
   }
@@ -20,6 +21,7 @@ public:
     if (command == "info") return run_info(args);
     if (command == "render") return run_render(args, registry);
     if (command == "solve") return run_solve(args, registry);
+    if (command == "export") return run_export(args, registry);
     if (command == "plugins") return run_plugins(args, registry);
     if (command == "bench") return run_bench(args, registry);
     return 2;
@@ -33,5 +35,5 @@ void register_cli(PluginRegistrar& registrar) {
 } // namespace
 } // namespace hilight::cli
 
-HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, "0.1.0", "command-line interface: info, render, solve, plugins, bench",
+HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, "0.1.0", "command-line interface: info, render, solve, export, plugins, bench",
                hilight::cli::register_cli)

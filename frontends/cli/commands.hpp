@@ -10,6 +10,7 @@ int run_info(const std::vector<std::string>& args);
 int run_render(const std::vector<std::string>& args, Registry& registry);
 int run_plugins(const std::vector<std::string>& args, Registry& registry);
 int run_solve(const std::vector<std::string>& args, Registry& registry);
+int run_export(const std::vector<std::string>& args, Registry& registry);
 int run_bench(const std::vector<std::string>& args, Registry& registry);
 int run_bench_solve(const std::vector<std::string>& args, Registry& registry);
 } // namespace hilight::cli

@@ -6,10 +6,8 @@ PreparedLight::PreparedLight(const Light& light) : position(light.position), int
   if (light.type == LightType::Spot) {
     spot = true;
     direction = glm::normalize(light.direction);
-    cutoff_deg = light.cutoff_deg;
-    falloff_deg = light.falloff_deg;
     cos_cutoff = std::cos(float(light.cutoff_deg * kPi / 180.0));
-    cos_inner = falloff_deg > 0.f ? std::cos(float((light.cutoff_deg - light.falloff_deg) * kPi / 180.0)) : cos_cutoff;
+    cos_inner = light.falloff_deg > 0.f ? std::cos(float((light.cutoff_deg - light.falloff_deg) * kPi / 180.0)) : cos_cutoff;
   }
 }
 

@@ -9,26 +9,24 @@
 
 namespace hilight::embree {
 
-/// A light with its cone precomputed as cosines, so the hot loop has no trig
-/// except inside a soft spot edge.
+/// A light with its cone precomputed as cosines, so the hot loop has no trig.
 struct PreparedLight {
   Vec3 position;
   bool spot = false;
   Vec3 direction{0.f};
   float cos_cutoff = -1.f;   ///< outside the cone below this
   float cos_inner = -1.f;    ///< full intensity above this
-  float cutoff_deg = 180.f, falloff_deg = 0.f;
   Rgb intensity{1.f};
 
   explicit PreparedLight(const Light& light);
-  /// Angular factor toward unit direction `to_point` (from the light).
+  /// Angular factor toward unit direction `to_point` (from the light):
+  /// smoothstep in the cosine between the cone's edge and its full-intensity core.
   float angular(const Vec3& to_point) const {
     if (!spot) return 1.f;
     float c = glm::dot(direction, to_point);
     if (c < cos_cutoff) return 0.f;
     if (c >= cos_inner) return 1.f;
-    float angle = std::acos(std::min(1.f, c)) * float(180.0 / kPi);
-    float t = std::clamp((cutoff_deg - angle) / falloff_deg, 0.f, 1.f);
+    float t = (c - cos_cutoff) / (cos_inner - cos_cutoff);
     return t * t * (3.f - 2.f * t);
   }
 };
