@@ -10,9 +10,9 @@ namespace hilight {
 
 uint64_t SurfacePoints::content_key() const {
   uint64_t h = kFnvOffset;
-  h = fnv1a(h, positions.data(), positions.size() * sizeof(Vec3));
-  h = fnv1a(h, normals.data(), normals.size() * sizeof(Vec3));
-  h = fnv1a(h, albedo.data(), albedo.size() * sizeof(Rgb));
+  h = hash_words(h, positions.data(), positions.size() * sizeof(Vec3));
+  h = hash_words(h, normals.data(), normals.size() * sizeof(Vec3));
+  h = hash_words(h, albedo.data(), albedo.size() * sizeof(Rgb));
   return h;
 }
 

@@ -60,6 +60,8 @@ int run_bench(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--repeat", repeat, "timed runs per figure (median reported)")->check(CLI::Range(1, 100))->capture_default_str();
   app.add_option("--bounce-points", bounce_points, "points for the first-bounce φ figure")->check(CLI::Range(1, 1000000))->capture_default_str();
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  int reference_points = 10000;
+  app.add_option("--reference-points", reference_points, "points for the POV-Ray comparison (0: skip)")->check(CLI::Range(0, 1000000))->capture_default_str();
   if (auto code = parse(app, args)) return *code;
   set_thread_limit(threads);
 
@@ -115,6 +117,32 @@ int run_bench(const std::vector<std::string>& args, Registry& registry) {
                                {"rays_per_second", double(rays) / median(bounce_seconds)},
                                {"seconds_per_light", median(bounce_seconds) / double(lights.size())}};
   std::printf("%s\n", phi_bounce.dump().c_str());
+  std::fflush(stdout);
+
+  // The reference renderer on the same scene and lights, when it can run:
+  // seconds per 10k points for one lighting, against Embree in the same run.
+  if (registry.find("renderer", "povray") && registry.renderer_unavailable_reason("povray").empty() && reference_points > 0) {
+    SurfacePoints some;
+    size_t step = std::max<size_t>(1, points.size() / size_t(reference_points));
+    for (size_t i = 0; i < points.size() && some.size() < size_t(reference_points); i += step) {
+      some.positions.push_back(points.positions[i]);
+      some.normals.push_back(points.normals[i]);
+      some.albedo.push_back(points.albedo[i]);
+    }
+    Lighting few(lights.begin(), lights.begin() + std::min<size_t>(4, lights.size()));
+    nlohmann::json cmp = {{"figure", "reference_renderer"}, {"points", some.size()}, {"lights", few.size()}};
+    for (int bounces : {0, 1}) {
+      Properties props;
+      props.set("bounces", std::to_string(bounces));
+      for (const std::string name : {"embree", "povray"}) {
+        auto r = registry.create_renderer(name, props);
+        r->set_scene(scene);
+        double s = seconds_of([&] { r->illuminate(some, few); });
+        cmp[name + "_bounces" + std::to_string(bounces) + "_seconds_per_10k_points"] = s * 10000.0 / double(some.size());
+      }
+    }
+    std::printf("%s\n", cmp.dump().c_str());
+  }
   return 0;
 }
 

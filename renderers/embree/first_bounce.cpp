@@ -38,8 +38,14 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
           const Vec3 dir = cosine_direction(axis, u1, u2);
           const Hit hit = es.intersect(origin, dir);
           GatherHit& g = m_hits[i * samples + side * per_side + k];
-          if (hit.valid())
-            g = {hit.triangle, hit.u, hit.v, glm::dot(es.face_normals()[hit.triangle], dir) < 0.f ? 1.f : -1.f};
+          if (hit.valid()) {
+            const float seen_side = glm::dot(es.face_normals()[hit.triangle], dir) < 0.f ? 1.f : -1.f;
+            const Vec3 seen = seen_side * es.face_normals()[hit.triangle];
+            const auto& tri = es.scene().triangles[hit.triangle];
+            uint8_t vertex_sides = 0;
+            for (int v = 0; v < 3; ++v) vertex_sides |= uint8_t(glm::dot(es.scene().normals[tri[v]], seen) >= 0.f) << v;
+            g = {hit.triangle, hit.u, hit.v, seen_side, vertex_sides};
+          }
         }
       }
     }
@@ -77,10 +83,9 @@ Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex
     const GatherHit& hit = hits[k];
     if (!hit.valid()) continue;
     const auto& tri = scene.triangles[hit.triangle];
-    const Vec3 side = hit.side * m_es.face_normals()[hit.triangle];
     // Each vertex holds both sides' values; take the side facing the gatherer.
-    auto on_side = [&](uint32_t v) { return vertex_direct[2 * v + (glm::dot(scene.normals[v], side) >= 0.f ? 0 : 1)]; };
-    float e = (1.f - hit.u - hit.v) * on_side(tri[0]) + hit.u * on_side(tri[1]) + hit.v * on_side(tri[2]);
+    auto on_side = [&](int corner) { return vertex_direct[2 * tri[corner] + ((hit.vertex_sides >> corner) & 1 ? 0 : 1)]; };
+    float e = (1.f - hit.u - hit.v) * on_side(0) + hit.u * on_side(1) + hit.v * on_side(2);
     if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
   }
   return sum * (2.f / float(m_samples));

@@ -44,6 +44,9 @@ private:
     uint32_t triangle = RTC_INVALID_GEOMETRY_ID;
     float u = 0.f, v = 0.f;
     float side = 1.f;  ///< +1: the side the face normal points to; -1: the other
+    /// Bit k: the seen side is the side vertex k's normal points to (so the
+    /// interpolated mode reads that vertex's "normal side" value).
+    uint8_t vertex_sides = 0;
     bool valid() const { return triangle != RTC_INVALID_GEOMETRY_ID; }
   };
   std::vector<GatherHit> m_hits;  ///< point-major, m * samples
