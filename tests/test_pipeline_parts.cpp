@@ -4,6 +4,7 @@
 #include "hilight/pipeline/fit.hpp"
 #include "hilight/pipeline/hierarchy.hpp"
 #include "hilight/pipeline/samples.hpp"
+#include "hilight/sampler.hpp"
 #include "hilight/scene_builders.hpp"
 #include "support.hpp"
 
@@ -54,33 +55,38 @@ TEST_CASE("the sampler favours shadow edges and keeps each point at most once", 
   auto renderer = test::make_renderer("embree", scene, {"bounces=0"});
   Light light = Light::point({0.f, 3.f, 0.f}, Rgb(4.f));
   Target target = vertex_target(*scene, renderer->illuminate(SurfacePoints::from_vertices(*scene), std::span<const Light>(&light, 1)));
-  SamplerSettings settings;
-  settings.count = target.size() / 10;
-  SampleSet s = draw_samples(target, 0.2f, settings);
-  CHECK(s.size() >= settings.count - 1);
-  CHECK(s.size() <= settings.count);
+  auto importance = test::registry().create_sampler("importance", {});
+  auto uniform = test::registry().create_sampler("uniform", {});
+  SampleRequest request{target.size() / 10, 0.2f, 1};
+  SampleSet s = importance->draw(target, request);
+  CHECK(s.size() >= request.count - 1);
+  CHECK(s.size() <= request.count);
   std::vector<uint32_t> idx = s.target_index;
   std::sort(idx.begin(), idx.end());
   CHECK(std::adjacent_find(idx.begin(), idx.end()) == idx.end());
   // Near the umbra's edge (|x| or |z| ≈ 0.75) the density of samples is higher than far out.
-  auto density = [&](float lo, float hi) {
+  auto density = [&](const SampleSet& set, float lo, float hi) {
     size_t all = 0, drawn = 0;
     for (size_t i = 0; i < target.size(); ++i) {
       const Vec3& p = target.points.positions[i];
       float r = std::max(std::abs(p.x), std::abs(p.z));
       if (p.y == 0.f && r >= lo && r < hi) ++all;
     }
-    for (size_t i = 0; i < s.size(); ++i) {
-      const Vec3& p = s.points.positions[i];
+    for (size_t i = 0; i < set.size(); ++i) {
+      const Vec3& p = set.points.positions[i];
       float r = std::max(std::abs(p.x), std::abs(p.z));
       if (p.y == 0.f && r >= lo && r < hi) ++drawn;
     }
     return double(drawn) / double(std::max<size_t>(1, all));
   };
-  INFO("edge density " << density(0.65f, 0.85f) << " far density " << density(2.5f, 3.5f));
-  CHECK(density(0.65f, 0.85f) > 2.0 * density(2.5f, 3.5f));
+  SampleSet flat = uniform->draw(target, request);
+  INFO("importance: edge density " << density(s, 0.65f, 0.85f) << ", far " << density(s, 2.5f, 3.5f) << "; uniform: edge "
+                                   << density(flat, 0.65f, 0.85f) << ", far " << density(flat, 2.5f, 3.5f));
+  CHECK(density(s, 0.65f, 0.85f) > 2.0 * density(s, 2.5f, 3.5f));
+  // The uniform sampler is the baseline: no such preference.
+  CHECK(density(flat, 0.65f, 0.85f) < 1.5 * density(flat, 2.5f, 3.5f));
   // Deterministic for a seed.
-  CHECK(draw_samples(target, 0.2f, settings).target_index == s.target_index);
+  CHECK(importance->draw(target, request).target_index == s.target_index);
 }
 
 TEST_CASE("the light cache's bounce is close to the exact bounce and survives a disk round trip", "[cache]") {

@@ -29,6 +29,11 @@ void PluginRegistrar::optimizer(OptimizerFactory create) {
   m_record.create_optimizer = std::move(create);
 }
 
+void PluginRegistrar::sampler(SamplerFactory create) {
+  if (m_record.kind != "sampler") throw std::logic_error("module " + m_record.name + " registers a sampler but says it is a " + m_record.kind);
+  m_record.create_sampler = std::move(create);
+}
+
 std::vector<fs::path> Registry::default_search_dirs(const fs::path& executable) {
   std::vector<fs::path> dirs;
   std::error_code ec;
@@ -85,7 +90,7 @@ const ModuleRecord& Registry::load_module(const fs::path& file) {
   record->name = entry->name ? entry->name : record->name;
   record->version = entry->version ? entry->version : "";
   record->description = entry->description ? entry->description : "";
-  if (record->kind != "renderer" && record->kind != "frontend" && record->kind != "optimizer")
+  if (record->kind != "renderer" && record->kind != "frontend" && record->kind != "optimizer" && record->kind != "sampler")
     return fail("unknown plugin kind '" + record->kind + "'");
   if (const ModuleRecord* other = find(record->kind, record->name))
     return fail("duplicate " + record->kind + " '" + record->name + "', already loaded from " + other->path.string());
@@ -142,6 +147,13 @@ std::unique_ptr<Optimizer> Registry::create_optimizer(const std::string& name, c
   auto optimizer = m.create_optimizer(properties);
   properties.expect_all_queried("optimizer " + name);
   return optimizer;
+}
+
+std::unique_ptr<Sampler> Registry::create_sampler(const std::string& name, const Properties& properties) const {
+  const ModuleRecord& m = require("sampler", name);
+  auto sampler = m.create_sampler(properties);
+  properties.expect_all_queried("sampler " + name);
+  return sampler;
 }
 
 Frontend* Registry::frontend_for(const std::string& command) {

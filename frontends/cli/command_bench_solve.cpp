@@ -67,6 +67,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   for (size_t i = 0; i < edited.size(); ++i)
     if (edited.points.positions[i].y < 0.01f && edited.points.positions[i].x < 3.f) edited.value[i] *= 1.1f;
 
+  auto sampler = registry.create_sampler("importance", {});
   Properties solve_props;
   solve_props.set("bounce_direct", "vertex");
   auto renderer = registry.create_renderer("embree", solve_props);
@@ -82,12 +83,12 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
       SolveSettings settings;
       settings.cache_dir = cache_root;
       {
-        Solver solver(scene, rays, *renderer, *reference, *optimizer, settings);
+        Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);
         SolveReport report;
         solver.solve(target, report);
         cold.push_back(report.seconds["total"]);
       }
-      Solver solver(scene, rays, *renderer, *reference, *optimizer, settings);  // new session: cache from disk
+      Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);  // new session: cache from disk
       SolveReport report;
       Lighting found = solver.solve(target, report);
       warm.push_back(report.seconds["total"]);
@@ -113,7 +114,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
     auto optimizer = registry.create_optimizer(optimizers.front(), {});
     SolveSettings settings;
     settings.use_cache = false;
-    Solver solver(scene, rays, *renderer, *reference, *optimizer, settings);
+    Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);
     SolveReport report;
     Lighting found = solver.solve(target, report);
     nlohmann::json j = {{"figure", "solve_without_cache"}, {"optimizer", optimizers.front()}, {"found_lights", found.size()},

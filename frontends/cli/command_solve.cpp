@@ -16,7 +16,8 @@ namespace hilight::cli {
 
 namespace {
 
-nlohmann::json report_json(const SolveReport& r, const std::string& renderer, const std::string& optimizer, const std::string& mode) {
+nlohmann::json report_json(const SolveReport& r, const std::string& renderer, const std::string& optimizer, const std::string& sampler,
+                           const std::string& mode) {
   nlohmann::json cuts = nlohmann::json::array();
   for (const auto& c : r.cuts) {
     nlohmann::json j = {{"lights", c.lights}, {"dbar_initial", c.dbar_initial}, {"refined", c.refined}};
@@ -39,7 +40,8 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
           {"seed_lights_tried", r.seeds_tried},
           {"light_cache", r.cache_state},
           {"renderer", renderer},
-          {"optimizer", optimizer}};
+          {"optimizer", optimizer},
+          {"sampler", sampler}};
 }
 
 } // namespace
@@ -49,6 +51,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   std::string scene_path, target_path, output, report_path, optimizer_name = "varpro", initial_path, mode = "solve",
                                                                       hints_path, cache_dir;
   std::vector<std::string> optimizer_settings;
+  std::string sampler_name = "importance";
   float max_edge = 0.f;
   bool no_cache = false, quiet = false;
   unsigned long long seed = 1;
@@ -59,6 +62,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("-o,--output", output, "lights JSON to write")->required();
   app.add_option("--report", report_path, "write a JSON report (D̄, cuts, timings) here");
   app.add_option("--optimizer", optimizer_name, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
+  app.add_option("--sampler", sampler_name, "surface sampling plugin (importance, uniform)")->capture_default_str();
   app.add_option("--opt", optimizer_settings, "optimizer setting key=value (repeatable)");
   app.add_option("--lights", s.fixed_count, "fix the number of point lights (default: automatic)")->check(CLI::Range(1, 10000));
   app.add_option("--initial", initial_path, "lights to start from (with --mode)");
@@ -68,7 +72,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--spot-hints", hints_path, "lights JSON of spotlights wanted (position, direction, cutoff; intensity ignored)");
   app.add_option("--seed", seed, "seed of sampling and of the renderer's sample streams")->capture_default_str();
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
-  app.add_option("--samples", s.sampler.count, "surface samples used by the solve")->check(CLI::Range(10, 10000000))->capture_default_str();
+  app.add_option("--samples", s.samples, "surface samples used by the solve")->check(CLI::Range(10, 10000000))->capture_default_str();
   app.add_option("--n-cut", s.n_cut, "N_cut: cuts refined")->check(CLI::Range(1, 1000))->capture_default_str();
   app.add_option("--eps-opt", s.eps_opt, "ε_opt: refine only cuts with D̄ below")->check(CLI::Range(0.0, 10.0))->capture_default_str();
   app.add_option("--eps-impro", s.eps_impro, "ε_impro: improvement ratio that justifies one more light")->check(CLI::Range(1.0, 1000.0))->capture_default_str();
@@ -98,6 +102,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   }
   registry.renderer_unavailable_reason(ropts.name);
   auto optimizer = registry.create_optimizer(optimizer_name, Properties::from_assignments(optimizer_settings));
+  auto sampler = registry.create_sampler(sampler_name, {});
 
   const bool progress = !quiet && ::isatty(2);
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
@@ -115,11 +120,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   }
   auto renderer = ropts.create(registry, scene);
   Target target = read_target(target_path, *scene, *rays);
-  s.sampler.seed = seed;
+  s.seed = seed;
   s.use_cache = !no_cache;
   s.cache_dir = no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
 
-  Solver solver(scene, rays, *renderer, *reference, *optimizer, s, [&](const std::string& stage) {
+  Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, s, [&](const std::string& stage) {
     if (progress) std::fprintf(stderr, "hilight: %s...\n", stage.c_str());
   });
   SolveReport report;
@@ -128,7 +133,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
                                         : solver.solve(target, report);
   write_lights_json(output, lights);
   if (!report_path.empty()) {
-    std::string text = report_json(report, ropts.name, optimizer_name, mode).dump(2) + "\n";
+    std::string text = report_json(report, ropts.name, optimizer_name, sampler_name, mode).dump(2) + "\n";
     write_atomically(report_path, [&](const std::filesystem::path& temp) {
       std::ofstream out(temp, std::ios::binary);
       out << text;

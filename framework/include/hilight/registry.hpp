@@ -5,6 +5,7 @@
 #include "hilight/optimizer.hpp"
 #include "hilight/properties.hpp"
 #include "hilight/renderer.hpp"
+#include "hilight/sampler.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -19,6 +20,7 @@ using RendererFactory = std::function<std::unique_ptr<Renderer>(const Properties
 using ProbeFunction = std::function<std::string()>;
 using FrontendFactory = std::function<std::unique_ptr<Frontend>()>;
 using OptimizerFactory = std::function<std::unique_ptr<Optimizer>(const Properties&)>;
+using SamplerFactory = std::function<std::unique_ptr<Sampler>(const Properties&)>;
 
 struct ModuleRecord {
   std::filesystem::path path;
@@ -30,6 +32,7 @@ struct ModuleRecord {
   ProbeFunction probe;
   FrontendFactory create_frontend;
   OptimizerFactory create_optimizer;
+  SamplerFactory create_sampler;
 };
 
 /// Handed to a module's register function; binds what it registers to its record.
@@ -39,6 +42,7 @@ public:
   void renderer(RendererFactory create, ProbeFunction probe = {});
   void frontend(FrontendFactory create);
   void optimizer(OptimizerFactory create);
+  void sampler(SamplerFactory create);
 
 private:
   ModuleRecord& m_record;
@@ -66,6 +70,8 @@ public:
   std::unique_ptr<Renderer> create_renderer(const std::string& name, const Properties& properties) const;
   /// Creates an optimizer; InputError for an unknown one or an unread option.
   std::unique_ptr<Optimizer> create_optimizer(const std::string& name, const Properties& properties) const;
+  /// Creates a sampler; InputError for an unknown one or an unread option.
+  std::unique_ptr<Sampler> create_sampler(const std::string& name, const Properties& properties) const;
 
   /// The frontend that owns `command`, created on first use; nullptr if none.
   Frontend* frontend_for(const std::string& command);

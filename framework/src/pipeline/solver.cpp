@@ -44,8 +44,9 @@ Lighting cut_lights(const LightHierarchy& h, size_t k, const Lighting& spots, st
 } // namespace
 
 Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
-               Renderer& reference, Optimizer& optimizer, SolveSettings settings, ProgressFn progress)
-    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_renderer(renderer), m_reference(reference), m_optimizer(optimizer),
+               Renderer& reference, Sampler& sampler, Optimizer& optimizer, SolveSettings settings, ProgressFn progress)
+    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_renderer(renderer), m_reference(reference), m_sampler(sampler),
+      m_optimizer(optimizer),
       m_settings(std::move(settings)), m_progress(std::move(progress)) {}
 
 float Solver::neighbourhood_radius() const { return 2.f * std::max(m_scene->max_edge, 1e-3f * m_scene->diagonal()); }
@@ -285,7 +286,7 @@ void Solver::finish_report(const Target& target, const Lighting& lights, SolveRe
 SampleSet Solver::sample(const Target& target, SolveReport& report) {
   if (m_progress) m_progress("sampling");
   Stopwatch watch;
-  SampleSet samples = draw_samples(target, neighbourhood_radius(), m_settings.sampler);
+  SampleSet samples = m_sampler.draw(target, {m_settings.samples, neighbourhood_radius(), m_settings.seed});
   report.samples = samples.size();
   report.seconds["sampling"] += watch.seconds();
   return samples;

@@ -1,8 +1,6 @@
 #pragma once
 /// Surface samples: the few thousand target points the solve touches
-/// (paper §3.2). The sampler draws them with importance: points where the
-/// target changes quickly (shadow edges, highlights, painted detail) and
-/// points in shadow are drawn more often.
+/// (paper §3.2), drawn by a Sampler plugin (hilight/sampler.hpp).
 #include "hilight/target.hpp"
 
 #include <cstdint>
@@ -24,18 +22,10 @@ struct SampleSet {
   double target_norm() const;
 };
 
-struct SamplerSettings {
-  size_t count = 3000;       ///< samples wanted (all points if the target has fewer)
-  float contrast_gain = 4.f; ///< importance = weight · (1 + gain · local contrast)
-  float shadow_gain = 1.f;   ///< extra importance for points darker than their neighbourhood
-  uint64_t seed = 1;
-};
-
-/// Importance of every target point (exposed for tests).
-std::vector<double> sample_importance(const Target& target, float neighbourhood_radius, const SamplerSettings& settings);
-
-/// Systematic sampling by importance (each point at most once), deterministic for a seed.
-SampleSet draw_samples(const Target& target, float neighbourhood_radius, const SamplerSettings& settings);
+/// Systematic sampling in proportion to `weights` (one per target point):
+/// `count` points, each at most once (weights are capped at total/count),
+/// deterministic for a seed. The common core of the sampler plugins.
+SampleSet draw_by_weight(const Target& target, std::vector<double> weights, size_t count, uint64_t seed);
 
 /// Every target point as a sample (final D̄ over the whole target).
 SampleSet all_samples(const Target& target);

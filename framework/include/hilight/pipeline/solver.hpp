@@ -4,6 +4,7 @@
 /// §4.2 (fine-tune, add lights). The CLI and the painter both call this.
 #include "hilight/light_cache.hpp"
 #include "hilight/optimizer.hpp"
+#include "hilight/sampler.hpp"
 #include "hilight/pipeline/hierarchy.hpp"
 #include "hilight/pipeline/seeder.hpp"
 #include "hilight/target.hpp"
@@ -18,7 +19,8 @@
 namespace hilight {
 
 struct SolveSettings {
-  SamplerSettings sampler;
+  size_t samples = 3000;             ///< surface samples drawn by the sampler
+  uint64_t seed = 1;                 ///< sampling seed
   SeedSettings seeding;
   HierarchySettings hierarchy;
   LightCacheSettings cache;
@@ -63,7 +65,7 @@ public:
   /// what D̄ is measured with (the user's settings, as `hilight render` uses
   /// them; may be the same object). Both bound to `scene`.
   Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
-         Renderer& reference, Optimizer& optimizer, SolveSettings settings, ProgressFn progress = {});
+         Renderer& reference, Sampler& sampler, Optimizer& optimizer, SolveSettings settings, ProgressFn progress = {});
 
   /// Full solve: the lights for `target`.
   Lighting solve(const Target& target, SolveReport& report);
@@ -97,6 +99,7 @@ private:
   std::shared_ptr<const RayScene> m_rays;
   Renderer& m_renderer;
   Renderer& m_reference;
+  Sampler& m_sampler;
   Optimizer& m_optimizer;
   SolveSettings m_settings;
   ProgressFn m_progress;
