@@ -12,6 +12,7 @@
 #include "hilight/sampler.hpp"
 
 #include <cmath>
+#include <tbb/parallel_for.h>
 #include <unordered_map>
 
 namespace {
@@ -52,7 +53,9 @@ private:
     mean_lum = std::max(1e-12, mean_lum / double(n));
     std::vector<double> out(n);
     const float r2 = radius * radius;
-    for (uint32_t i = 0; i < n; ++i) {
+    // Each point reads the grid and writes only its own entry: parallel-safe
+    // and the same result whatever the thread count.
+    tbb::parallel_for(uint32_t(0), uint32_t(n), [&](uint32_t i) {
       const Vec3& p = target.points.positions[i];
       glm::ivec3 c = grid.coord(p);
       double sum = 0;
@@ -76,7 +79,7 @@ private:
       double contrast = std::min(1.0, std::abs(lum - local) / (0.25 * mean_lum + 0.5 * local));
       double shadow = lum < local ? std::min(1.0, (local - lum) / (local + 1e-12)) : 0.0;
       out[i] = target.weight[i] * (1.0 + m_contrast_gain * contrast + m_shadow_gain * shadow);
-    }
+    });
     return out;
   }
 
