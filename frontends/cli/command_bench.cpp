@@ -36,6 +36,18 @@ Scene bench_scene(size_t min_triangles) {
   }
 }
 
+/// About `count` of the points, evenly spaced in order.
+SurfacePoints every_kth(const SurfacePoints& points, size_t count) {
+  SurfacePoints out;
+  size_t stride = std::max<size_t>(1, points.size() / std::max<size_t>(1, count));
+  for (size_t i = 0; i < points.size() && out.size() < count; i += stride) {
+    out.positions.push_back(points.positions[i]);
+    out.normals.push_back(points.normals[i]);
+    out.albedo.push_back(points.albedo[i]);
+  }
+  return out;
+}
+
 /// A grid of point lights filling the room's interior.
 Lighting light_grid(int count) {
   Lighting lights;
@@ -94,13 +106,7 @@ int run_bench(const std::vector<std::string>& args, Registry& registry) {
   std::fflush(stdout);
 
   // First-bounce φ on a subset of points (the solver's sample count scale).
-  SurfacePoints subset;
-  size_t stride = std::max<size_t>(1, points.size() / size_t(bounce_points));
-  for (size_t i = 0; i < points.size() && subset.size() < size_t(bounce_points); i += stride) {
-    subset.positions.push_back(points.positions[i]);
-    subset.normals.push_back(points.normals[i]);
-    subset.albedo.push_back(points.albedo[i]);
-  }
+  SurfacePoints subset = every_kth(points, size_t(bounce_points));
   Properties bounce_props;
   bounce_props.set("bounces", "1");
   auto bounce = registry.create_renderer(renderer_name, bounce_props);
@@ -122,13 +128,7 @@ int run_bench(const std::vector<std::string>& args, Registry& registry) {
   // The reference renderer on the same scene and lights, when it can run:
   // seconds per 10k points for one lighting, against Embree in the same run.
   if (registry.find("renderer", "povray") && registry.renderer_unavailable_reason("povray").empty() && reference_points > 0) {
-    SurfacePoints some;
-    size_t step = std::max<size_t>(1, points.size() / size_t(reference_points));
-    for (size_t i = 0; i < points.size() && some.size() < size_t(reference_points); i += step) {
-      some.positions.push_back(points.positions[i]);
-      some.normals.push_back(points.normals[i]);
-      some.albedo.push_back(points.albedo[i]);
-    }
+    SurfacePoints some = every_kth(points, size_t(reference_points));
     Lighting few(lights.begin(), lights.begin() + std::min<size_t>(4, lights.size()));
     nlohmann::json cmp = {{"figure", "reference_renderer"}, {"points", some.size()}, {"lights", few.size()}};
     for (int bounces : {0, 1}) {
