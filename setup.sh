@@ -13,7 +13,7 @@ BUILD_TYPE=${BUILD_TYPE:-Release}
 PACKAGES=(
   build-essential cmake ninja-build pkg-config python3
   libembree-dev libassimp-dev libglm-dev libopenexr-dev libpng-dev libtbb-dev
-  nlohmann-json3-dev libcli11-dev catch2 libeigen3-dev
+  nlohmann-json3-dev libcli11-dev catch2 libeigen3-dev libstb-dev
   assimp-testmodels   # real broken and valid models the tests load
   povray              # the reference renderer (renderers/povray)
 )

@@ -1,6 +1,7 @@
 // Scene loading and tessellation: formats, albedo, normals, determinism,
 // crack-free refinement, and the bundled demo scene.
 #include "hilight/error.hpp"
+#include "hilight/io/image_io.hpp"
 #include "hilight/io/tessellate.hpp"
 #include "hilight/scene_builders.hpp"
 #include "support.hpp"
@@ -32,8 +33,9 @@ bool watertight(const Scene& s) {
   return true;
 }
 
-/// A one-quad glTF 2.0 file (JSON + .bin) with a known baseColorFactor.
-void write_quad_gltf(const std::filesystem::path& dir, const char* color) {
+/// A one-quad glTF 2.0 file (JSON + .bin) with a known baseColorFactor and,
+/// optionally, a base-colour texture file.
+void write_quad_gltf(const std::filesystem::path& dir, const char* color, const char* texture = nullptr) {
   const float pos[12] = {0, 0, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1};
   const uint16_t idx[6] = {0, 2, 1, 0, 3, 2};
   std::ofstream bin(dir / "quad.bin", std::ios::binary);
@@ -42,7 +44,10 @@ void write_quad_gltf(const std::filesystem::path& dir, const char* color) {
   bin.close();
   test::write_text(dir / "quad.gltf", std::string(R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
 "meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}],
-"materials":[{"pbrMetallicRoughness":{"baseColorFactor":)") + color + R"(}}],
+"materials":[{"pbrMetallicRoughness":{"baseColorFactor":)") + color +
+                                      (texture ? R"(,"baseColorTexture":{"index":0}}}],"textures":[{"source":0}],"images":[{"uri":")" +
+                                                     std::string(texture) + R"("}],)"
+                                               : std::string(R"(}}],)")) + R"(
 "buffers":[{"byteLength":60,"uri":"quad.bin"}],
 "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":12}],
 "accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[0,0,0],"max":[1,0,1]},
@@ -148,4 +153,24 @@ TEST_CASE("scenes with NaN coordinates, no triangles or no extent are refused wi
 
 TEST_CASE("a max-edge that would explode the mesh is refused, not attempted", "[scene][bad-input]") {
   CHECK_THROWS_WITH(load_scene(kRoom, {1e-4f}), Catch::Contains("--max-edge") && Catch::Contains("limit"));
+}
+
+TEST_CASE("a base-colour texture is averaged into the albedo (linear light), times the factor", "[scene][texture]") {
+  auto dir = test::output_dir("scene_texture");
+  // An 8x8 texture of one known linear colour, written as sRGB PNG.
+  Image texture(8, 8);
+  for (size_t i = 0; i < texture.pixels.size(); ++i) {
+    texture.pixels[i] = Rgb(0.2f, 0.4f, 0.6f);
+    texture.covered[i] = 1;
+  }
+  write_image(dir / "tex.png", texture, 1.f);
+  write_quad_gltf(dir, "[0.5,1.0,1.0,1.0]", "tex.png");
+  Scene s = load_scene(dir / "quad.gltf", {10.f});
+  CHECK(s.triangle_albedo(0).r == Approx(0.1f).epsilon(0.02));  // 0.5 × 0.2
+  CHECK(s.triangle_albedo(0).g == Approx(0.4f).epsilon(0.02));
+  CHECK(s.triangle_albedo(0).b == Approx(0.6f).epsilon(0.02));
+  // A texture that cannot be read: the scene still loads, with the factor.
+  write_quad_gltf(dir, "[0.5,1.0,1.0,1.0]", "missing.png");
+  Scene t = load_scene(dir / "quad.gltf", {10.f});
+  CHECK(t.triangle_albedo(0) == Rgb(0.5f, 1.f, 1.f));
 }

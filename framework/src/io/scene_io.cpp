@@ -2,6 +2,7 @@
 
 #include "hilight/error.hpp"
 #include "hilight/io/tessellate.hpp"
+#include "texture_average.hpp"
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
@@ -22,19 +23,23 @@ namespace {
 // rather than exhausting memory on a too-small --max-edge.
 constexpr size_t kMaxTriangles = 20'000'000;
 
-Rgb material_albedo(const aiMaterial& mat) {
+Rgb material_albedo(const aiScene& scene, const aiMaterial& mat, const fs::path& folder, const std::string& file) {
   aiString name;
   mat.Get(AI_MATKEY_NAME, name);
+  Rgb albedo(0.8f);
   aiColor4D c;
   // glTF's baseColorFactor first, then the classic diffuse colour (OBJ Kd).
-  if (mat.Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || mat.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS) {
-    // Assimp invents "DefaultMaterial" for files without materials: treat as none.
-    if (std::string(name.C_Str()) == AI_DEFAULT_MATERIAL_NAME) return Rgb(0.8f);
-    Rgb albedo(c.r, c.g, c.b);
-    if (!is_finite(albedo)) return Rgb(0.8f);
-    return glm::clamp(albedo, Rgb(0.f), Rgb(1.f));
+  // Assimp invents "DefaultMaterial" for files without materials: treat as none.
+  if (std::string(name.C_Str()) != AI_DEFAULT_MATERIAL_NAME &&
+      (mat.Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || mat.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS)) {
+    Rgb factor(c.r, c.g, c.b);
+    if (is_finite(factor)) albedo = factor;
   }
-  return Rgb(0.8f);
+  // A base-colour texture multiplies the factor; one average colour stands for it.
+  std::string problem;
+  if (auto texture = average_texture(scene, mat, folder, problem)) albedo *= *texture;
+  else if (!problem.empty()) std::fprintf(stderr, "hilight: warning: %s: material %s: %s; its colour factor is used\n", file.c_str(), name.C_Str(), problem.c_str());
+  return glm::clamp(albedo, Rgb(0.f), Rgb(1.f));
 }
 
 void validate(const Scene& scene, const std::string& file) {
@@ -157,7 +162,7 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   for (unsigned m = 0; m < ai->mNumMaterials; ++m) {
     aiString name;
     ai->mMaterials[m]->Get(AI_MATKEY_NAME, name);
-    scene.materials.push_back({name.C_Str(), material_albedo(*ai->mMaterials[m])});
+    scene.materials.push_back({name.C_Str(), material_albedo(*ai, *ai->mMaterials[m], path.parent_path(), file)});
   }
   if (scene.materials.empty()) scene.materials.push_back({"default", Rgb(0.8f)});
   for (unsigned mi = 0; mi < ai->mNumMeshes; ++mi) {
