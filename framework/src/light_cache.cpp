@@ -35,7 +35,7 @@ uint64_t LightCache::key(const Scene& scene, const std::string& renderer_key, co
 
 LightCache LightCache::build(const Scene& scene, const RayScene& rays, Renderer& renderer, const LightCacheSettings& settings) {
   LightCache cache;
-  const Bounds& b = scene.bounds;
+  const Bounds b = scene.light_bounds();
   Vec3 extent = b.extent();
   float longest = std::max(extent.x, std::max(extent.y, extent.z));
   float cell = longest / float(std::max(1, settings.cells_along_longest_axis));

@@ -21,6 +21,19 @@ Vec3 Scene::face_normal(size_t t) const {
   return len > 0.f ? n / len : Vec3(0.f, 0.f, 1.f);
 }
 
+Bounds Scene::light_bounds() const {
+  Bounds b = bounds;
+  const float minimum = 0.5f * diagonal();
+  for (int k = 0; k < 3; ++k) {
+    float extent = b.hi[k] - b.lo[k];
+    if (extent < minimum) {
+      b.lo[k] -= 0.5f * (minimum - extent);
+      b.hi[k] += 0.5f * (minimum - extent);
+    }
+  }
+  return b;
+}
+
 void Scene::update_bounds() {
   bounds = Bounds{};
   for (const auto& p : positions) bounds.extend(p);

@@ -49,8 +49,9 @@ double difference(const std::vector<Rgb>& illumination, const SampleSet& samples
 }
 
 double normalized_difference(const std::vector<Rgb>& illumination, const SampleSet& samples) {
-  double norm = samples.target_norm();
-  return norm > 0 ? difference(illumination, samples) / norm : 0.0;
+  double norm = samples.target_norm(), d = difference(illumination, samples);
+  if (norm > 0) return d / norm;
+  return d > 0 ? 1.0 : 0.0;  // a black target: any light is all error, none is none
 }
 
 double contribution(const std::vector<Rgb>& phi, size_t j, const Rgb& intensity, const SampleSet& samples) {

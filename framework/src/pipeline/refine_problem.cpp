@@ -84,7 +84,7 @@ double SampleRefineProblem::objective_with_best_intensities(std::vector<Light>& 
 }
 
 bool SampleRefineProblem::admissible(const Vec3& p) const {
-  return is_finite(p) && m_rays.scene().bounds.contains(p) && !m_rays.inside_solid(p);
+  return is_finite(p) && m_light_bounds.contains(p) && !m_rays.inside_solid(p);
 }
 
 } // namespace hilight

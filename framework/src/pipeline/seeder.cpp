@@ -31,7 +31,7 @@ std::vector<Cell> coarse_cells(const Bounds& b, int along_longest) {
 /// Cells whose centre is a valid place for a light: in the bounds, out of
 /// solid geometry, not touching a surface.
 std::vector<Cell> free_cells(const std::vector<Cell>& cells, const RayScene& rays) {
-  const Bounds& b = rays.scene().bounds;
+  const Bounds b = rays.scene().light_bounds();
   std::vector<char> ok(cells.size());
   const float clearance = 1e-3f * rays.scene().diagonal();
   tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
@@ -53,7 +53,7 @@ SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lightin
   std::vector<Rgb> spot_phi = spots.empty() ? std::vector<Rgb>{} : model.responses(spots);
 
   SeedResult result;
-  std::vector<Cell> cells = free_cells(coarse_cells(rays.scene().bounds, settings.coarse_cells), rays);
+  std::vector<Cell> cells = free_cells(coarse_cells(rays.scene().light_bounds(), settings.coarse_cells), rays);
   for (int level = 0; level < settings.iterations && !cells.empty(); ++level) {
     Lighting lights;
     for (const auto& c : cells) lights.push_back(Light::point(c.centre, Rgb(1.f)));

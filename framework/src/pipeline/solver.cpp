@@ -98,6 +98,13 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   report.seed_lights = n_points;
   report.seeds_tried = seed.lights_tried;
   if (n_points == 0 && seed.spot_count == 0) throw InputError("the seeding found no light that brightens the target");
+  if (n_points == 0) {  // only the requested spotlights: no hierarchy, refine them alone
+    Stopwatch refine_watch;
+    ResponseModel exact(m_renderer, samples, nullptr);
+    Lighting spots_only = refine_anchored(model, exact, seed.lights, report.dbar_samples);
+    report.seconds["refinement"] += refine_watch.seconds();
+    return spots_only;
+  }
   if (m_settings.fixed_count > n_points)
     throw InputError("--lights " + std::to_string(m_settings.fixed_count) + ": the seeding found only " +
                      std::to_string(n_points) + " candidate lights (lower --lights, or --weak-threshold)");
@@ -257,21 +264,31 @@ SampleSet spaced_points(const Target& target, size_t count, bool offset) {
 } // namespace
 
 double Solver::measure_dbar(const Target& target, const Lighting& lights) {
-  // Evenly spaced target points: an estimate of the whole target's D̄ at a
-  // fixed cost, whatever the target's size.
+  // Evenly spaced target points estimate the whole target's D̄ at a fixed
+  // cost — unless the target's light is concentrated where the spacing does
+  // not look (a small painted patch): then the estimate would be blind, and
+  // every point is measured.
   SampleSet measured = spaced_points(target, m_settings.evaluation_points, false);
+  const double share = double(measured.size()) / double(target.size());
+  const double energy = measured.target_norm() * measured.target_norm(), total = target.norm() * target.norm();
+  if (measured.size() < target.size() && !(energy > 0.5 * share * total && energy < 2.0 * share * total)) measured = all_samples(target);
   return normalized_difference(m_reference.illuminate(measured.points, lights), measured);
 }
 
-Lighting Solver::refit_with_reference(const Target& target, const Lighting& lights) {
+Lighting Solver::refit_with_reference(const SampleSet& samples, const Lighting& lights) {
   // The positions came from the fast model; the intensities are re-fitted by
-  // NNLS with the reference renderer on evenly spaced points (disjoint from
-  // those D̄ is measured on), removing the fast model's bias from them.
-  SampleSet fit_points = spaced_points(target, m_settings.evaluation_points, true);
-  std::vector<Rgb> phi = m_reference.unit_responses(fit_points.points, lights);
-  std::vector<Rgb> l = fit_intensities(phi, lights.size(), fit_points);
-  Lighting out = lights;
-  for (size_t j = 0; j < out.size(); ++j) out[j].intensity = l[j];
+  // NNLS with the reference renderer on the solve's samples (which cover
+  // the target's light by construction), removing the fast model's bias.
+  std::vector<Rgb> phi = m_reference.unit_responses(samples.points, lights);
+  std::vector<Rgb> l = fit_intensities(phi, lights.size(), samples);
+  Lighting out;
+  for (size_t j = 0; j < lights.size(); ++j) {
+    // A light the fit switched off does nothing: not part of the answer
+    // (unless the user fixed the count).
+    if (m_settings.fixed_count == 0 && l[j] == Rgb(0.f) && lights[j].type == LightType::Point) continue;
+    out.push_back(lights[j]);
+    out.back().intensity = l[j];
+  }
   return out;
 }
 
@@ -283,10 +300,26 @@ void Solver::finish_report(const Target& target, const Lighting& lights, SolveRe
   report.seconds["evaluation"] += watch.seconds();
 }
 
+void Solver::require_admissible(const Lighting& lights, const std::string& what) const {
+  for (size_t j = 0; j < lights.size(); ++j) {
+    const Vec3& p = lights[j].position;
+    const char* problem = !m_scene->light_bounds().contains(p) ? "is outside the space lights may take (the scene's bounds)"
+                          : m_rays->inside_solid(p)    ? "is inside solid geometry"
+                                                       : nullptr;
+    if (!problem) continue;
+    std::ostringstream message;
+    message << what << ": light " << j << " at (" << p.x << ", " << p.y << ", " << p.z << ") " << problem;
+    throw InputError(message.str());
+  }
+}
+
 SampleSet Solver::sample(const Target& target, SolveReport& report) {
   if (m_progress) m_progress("sampling");
   Stopwatch watch;
   SampleSet samples = m_sampler.draw(target, {m_settings.samples, neighbourhood_radius(), m_settings.seed});
+  // Samples that miss every lit point cannot constrain anything (a tiny lit
+  // patch in a huge target, too few samples): take every point instead.
+  if (!(samples.target_norm() > 0.0)) samples = all_samples(target);
   report.samples = samples.size();
   report.seconds["sampling"] += watch.seconds();
   return samples;
@@ -294,9 +327,10 @@ SampleSet Solver::sample(const Target& target, SolveReport& report) {
 
 Lighting Solver::solve(const Target& target, SolveReport& report) {
   Stopwatch total;
+  require_admissible(m_settings.spot_hints, "spot hints");
   ensure_cache(report);
   SampleSet samples = sample(target, report);
-  Lighting lights = refit_with_reference(target, solve_samples(samples, report));
+  Lighting lights = refit_with_reference(samples, solve_samples(samples, report));
   finish_report(target, lights, report);
   report.seconds["total"] = total.seconds();
   return lights;
@@ -304,6 +338,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
 
 Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveReport& report) {
   Stopwatch total;
+  require_admissible(lights, "lights to fine-tune");
   ensure_cache(report);
   SampleSet samples = sample(target, report);
   std::optional<LightCacheView> view;
@@ -320,12 +355,16 @@ Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveRe
 
 Lighting Solver::add_lights(const Target& target, const Lighting& lights, SolveReport& report) {
   Stopwatch total;
+  require_admissible(m_settings.spot_hints, "spot hints");
   ensure_cache(report);
   // ΔΨ = max(Ψ − I(L), 0): what the current lights leave to be lit.
   std::vector<Rgb> current = illumination(target, lights);
   Target missing = target;
   for (size_t i = 0; i < missing.size(); ++i) missing.value[i] = glm::max(target.value[i] - current[i], Rgb(0.f));
-  if (!(missing.norm() > 1e-6 * target.norm())) throw InputError(target.source, "the given lights already produce the whole target: nothing to add");
+  // What is left below ε_w of the target is model noise, not a missing light.
+  if (!(missing.norm() > m_settings.seeding.weak_threshold * target.norm()))
+    throw InputError(target.source, "the given lights already produce the target to within " +
+                                        std::to_string(int(std::round(100 * m_settings.seeding.weak_threshold))) + "%: nothing to add");
   SampleSet samples = sample(missing, report);
   Lighting added = solve_samples(samples, report);
   Lighting all = lights;

@@ -16,7 +16,7 @@ public:
   /// `exact`: the same samples without the light cache, used to anchor lights
   /// (may be null: no anchoring).
   SampleRefineProblem(ResponseModel& model, const RayScene& rays, ResponseModel* exact = nullptr)
-      : m_model(model), m_rays(rays), m_exact(exact) {}
+      : m_model(model), m_rays(rays), m_exact(exact), m_light_bounds(rays.scene().light_bounds()) {}
 
   /// Anchors light j of every later call at `lights[j]`: its response gets
   /// the correction exact(anchor) − model(anchor), which removes the light
@@ -37,6 +37,7 @@ private:
   ResponseModel& m_model;
   const RayScene& m_rays;
   ResponseModel* m_exact;
+  Bounds m_light_bounds;
   std::vector<std::vector<Rgb>> m_correction;  ///< per light index (empty: none)
   std::unordered_map<std::string, std::vector<Rgb>> m_phi;  ///< keyed by the light's geometry bytes
 };

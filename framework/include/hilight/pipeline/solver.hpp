@@ -80,8 +80,11 @@ public:
   std::vector<Rgb> illumination(const Target& target, const Lighting& lights);
   /// D̄ of `lights` on the target, measured with the reference renderer.
   double measure_dbar(const Target& target, const Lighting& lights);
-  /// `lights` with intensities re-fitted against the reference renderer.
-  Lighting refit_with_reference(const Target& target, const Lighting& lights);
+  /// `lights` with intensities re-fitted against the reference renderer on
+  /// `samples`; lights switched off by the fit are dropped (automatic count).
+  Lighting refit_with_reference(const SampleSet& samples, const Lighting& lights);
+  /// InputError unless every light may stand where it is (in bounds, out of solids).
+  void require_admissible(const Lighting& lights, const std::string& what) const;
   /// The hierarchy of the last solve (for moving between cuts).
   const std::optional<LightHierarchy>& hierarchy() const { return m_hierarchy; }
 
