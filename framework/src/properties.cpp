@@ -2,6 +2,7 @@
 
 #include "hilight/error.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
@@ -29,8 +30,10 @@ long long Properties::get_int(const std::string& key, long long fallback) const 
   auto it = m_values.find(key);
   if (it == m_values.end()) return fallback;
   char* end = nullptr;
+  errno = 0;
   long long v = std::strtoll(it->second.c_str(), &end, 10);
   if (it->second.empty() || *end != '\0') throw InputError("option " + key + "=" + it->second + " is not an integer");
+  if (errno == ERANGE) throw InputError("option " + key + "=" + it->second + " is out of range");
   return v;
 }
 

@@ -35,7 +35,10 @@ RayScene::RayScene(const Scene& scene) : m_scene(scene) {
   rtcReleaseGeometry(geom);
   rtcCommitScene(m_rtc_scene);
   if (rtcGetDeviceError(m_device) != RTC_ERROR_NONE) throw_device_error(m_device, "BVH build");
-  m_epsilon = std::max(1e-6f, 1e-5f * scene.diagonal());
+  // Offsets off surfaces: small against the scene, yet several float ulps of
+  // its largest coordinate (a scene far from the origin has coarse floats).
+  float largest = std::max(glm::length(scene.bounds.lo), glm::length(scene.bounds.hi));
+  m_epsilon = std::max({1e-6f, 1e-5f * scene.diagonal(), 1e-6f * largest});
   m_face_normals.resize(scene.triangles.size());
   for (size_t t = 0; t < scene.triangles.size(); ++t) m_face_normals[t] = scene.face_normal(t);
 }

@@ -39,7 +39,7 @@ void RendererOptions::add_to(CLI::App& app) {
       ->check(CLI::IsMember({0, 1}))
       ->capture_default_str();
   app.add_option("--bounce-samples", bounce_samples, "gather rays per point for the bounce (renderer default if 0)")
-      ->check(CLI::Range(0, 65536));
+      ->check(CLI::Range(0, 4096));
   app.add_option("--set", settings, "renderer setting key=value (repeatable)");
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
 }

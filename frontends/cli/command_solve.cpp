@@ -77,10 +77,10 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--eps-opt", s.eps_opt, "ε_opt: refine only cuts with D̄ below")->check(CLI::Range(0.0, 10.0))->capture_default_str();
   app.add_option("--eps-impro", s.eps_impro, "ε_impro: improvement ratio that justifies one more light")->check(CLI::Range(1.0, 1000.0))->capture_default_str();
   app.add_option("--weak-threshold", s.seeding.weak_threshold, "ε_w: weak-light deletion threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
-  app.add_option("--seed-cells", s.seeding.coarse_cells, "seeding cells along the longest axis")->check(CLI::Range(1, 64))->capture_default_str();
+  app.add_option("--seed-cells", s.seeding.coarse_cells, "seeding cells along the longest axis")->check(CLI::Range(1, 16))->capture_default_str();
   app.add_option("--seed-iterations", s.seeding.iterations, "seeding levels")->check(CLI::Range(1, 6))->capture_default_str();
   app.add_option("--cache-cells", s.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")
-      ->check(CLI::Range(1, 64))
+      ->check(CLI::Range(1, 24))
       ->capture_default_str();
   app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
@@ -107,7 +107,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   const bool progress = !quiet && ::isatty(2);
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
   auto rays = std::make_shared<const RayScene>(*scene);
-  ropts.settings.push_back("seed=" + std::to_string(seed));
+  // Renderer seeds are signed 64-bit settings: fold the user's seed into range.
+  ropts.settings.push_back("seed=" + std::to_string(seed & 0x7FFFFFFFFFFFFFFFull));
   // D̄ is measured with the renderer as the user set it up (as `hilight
   // render` would use it); the solve itself evaluates thousands of light
   // positions, for which Embree's bounce with direct light interpolated at

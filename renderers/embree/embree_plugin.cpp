@@ -20,7 +20,7 @@ std::unique_ptr<hilight::Renderer> create(const hilight::Properties& props) {
   s.bounces = int(props.get_int("bounces", s.bounces));
   if (s.bounces != 0 && s.bounces != 1) throw hilight::InputError("renderer embree: bounces must be 0 or 1");
   long long samples = props.get_int("bounce_samples", s.bounce_samples);
-  if (samples < 2 || samples > 65536) throw hilight::InputError("renderer embree: bounce_samples must be in [2, 65536]");
+  if (samples < 2 || samples > 4096) throw hilight::InputError("renderer embree: bounce_samples must be in [2, 4096]");
   s.bounce_samples = int(samples + (samples & 1));
   s.seed = uint64_t(props.get_int("seed", 1));
   std::string bounce_direct = props.get_string("bounce_direct", "exact");

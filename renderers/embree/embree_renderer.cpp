@@ -16,6 +16,12 @@ void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   m_embree.reset();
   m_scene = std::move(scene);
   m_embree = std::make_unique<RayScene>(*m_scene);
+  // Vertices on creases are shaded inside their triangle (shading_point);
+  // computed here, once, so no later (possibly concurrent) call has to.
+  const Scene& s = *m_scene;
+  m_vertex_shading.resize(s.positions.size());
+  tbb::parallel_for(size_t(0), s.positions.size(),
+                    [&](size_t v) { m_vertex_shading[v] = shading_point(*m_embree, s.positions[v], s.normals[v]); });
 }
 
 std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoints& points) {
@@ -45,11 +51,6 @@ std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const Prep
   // Two values per vertex and light: the side its normal points to, the other.
   const Scene& scene = *m_scene;
   const size_t v_count = scene.positions.size();
-  std::call_once(m_vertex_shading_once, [&] {  // vertices on creases: shade them inside their triangle
-    m_vertex_shading.resize(v_count);
-    tbb::parallel_for(size_t(0), v_count,
-                      [&](size_t v) { m_vertex_shading[v] = shading_point(*m_embree, scene.positions[v], scene.normals[v]); });
-  });
   std::vector<float> out(2 * v_count * lights.size());
   tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
   tbb::parallel_for(tbb::blocked_range<size_t>(0, v_count, 64), [&](const tbb::blocked_range<size_t>& r) {

@@ -8,7 +8,6 @@
 
 #include <atomic>
 #include <memory>
-#include <mutex>
 
 namespace hilight::embree {
 
@@ -54,7 +53,6 @@ private:
   std::unique_ptr<RayScene> m_embree;
   KeyedLru<BounceGather> m_gathers{4};
   KeyedLru<std::vector<Vec3>> m_shading_points{4};
-  std::once_flag m_vertex_shading_once;
   std::vector<Vec3> m_vertex_shading;  ///< shading_point() of every scene vertex
   std::atomic<uint64_t> m_rays{0};  ///< calls may come from several threads (concurrent refinements)
 };

@@ -20,14 +20,19 @@ public:
   /// The entry for `key`, made by `make()` if absent. Shared ownership: another
   /// thread may evict it while this one still reads it.
   std::shared_ptr<const T> get(uint64_t key, const std::function<std::shared_ptr<const T>()>& make) {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    auto it = std::find_if(m_items.begin(), m_items.end(), [&](const auto& e) { return e.first == key; });
-    if (it == m_items.end()) {
-      if (m_items.size() >= m_capacity) m_items.pop_back();
-      m_items.emplace(m_items.begin(), key, make());
-    } else if (it != m_items.begin()) {
-      std::rotate(m_items.begin(), it, it + 1);
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      if (auto found = find_and_touch(key)) return found;
     }
+    // Built without the lock: make() runs parallel loops, and a thread
+    // waiting in one may be handed another task that comes here (TBB work
+    // stealing) — holding the lock then would deadlock. Two threads may both
+    // build the same entry; the first stored wins, both results are equal.
+    std::shared_ptr<const T> made = make();
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (auto found = find_and_touch(key)) return found;
+    if (m_items.size() >= m_capacity) m_items.pop_back();
+    m_items.emplace(m_items.begin(), key, std::move(made));
     return m_items.front().second;
   }
   void clear() {
@@ -36,6 +41,14 @@ public:
   }
 
 private:
+  /// The entry for `key`, moved to the front; null if absent. Lock held.
+  std::shared_ptr<const T> find_and_touch(uint64_t key) {
+    auto it = std::find_if(m_items.begin(), m_items.end(), [&](const auto& e) { return e.first == key; });
+    if (it == m_items.end()) return nullptr;
+    std::rotate(m_items.begin(), it, it + 1);
+    return m_items.front().second;
+  }
+
   size_t m_capacity;
   std::mutex m_mutex;
   std::vector<std::pair<uint64_t, std::shared_ptr<const T>>> m_items;

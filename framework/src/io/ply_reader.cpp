@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <bit>
+#include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -110,12 +112,25 @@ PlyVertices read_ply_vertices(const std::filesystem::path& path) {
   if (line != "end_header" && line.substr(0, 10) != "end_header") throw InputError(file, "PLY header has no end_header");
   if (!has_format) throw InputError(file, "PLY header has no format line");
 
+  // Counts in the header are claims: never reserve more than the bytes left
+  // in the file could hold (a tiny file can claim billions of vertices).
+  const std::streampos data_start = in.tellg();
+  in.seekg(0, std::ios::end);
+  const size_t bytes_left = size_t(in.tellg() - data_start);
+  in.seekg(data_start);
   PlyVertices out;
   const bool swap = (format == Format::BinaryBE) == (std::endian::native == std::endian::little);
   for (const Element& e : elements) {
     const bool is_vertex = e.name == "vertex";
     if (is_vertex) {
       out.count = e.count;
+      size_t row_bytes = 0;
+      for (const auto& p : e.properties) row_bytes += p.is_list ? type_size(p.count_type) : type_size(p.type);
+      // ASCII takes at least 2 bytes a value ("0 "), binary its type's size.
+      const size_t min_row = format == Format::Ascii ? 2 * e.properties.size() : row_bytes;
+      if (min_row > 0 && e.count > bytes_left / min_row)
+        throw InputError(file, "the header claims " + std::to_string(e.count) + " vertices, more than the file's " +
+                                   std::to_string(bytes_left) + " bytes of data can hold");
       for (const auto& p : e.properties)
         if (!p.is_list) {
           out.properties[p.name].reserve(e.count);
@@ -132,7 +147,12 @@ PlyVertices read_ply_vertices(const std::filesystem::path& path) {
           size_t n = 1;
           if (p.is_list) {
             if (!(in >> token)) throw truncated();
-            n = size_t(std::stod(token));
+            char* end = nullptr;
+            errno = 0;
+            unsigned long long count = std::strtoull(token.c_str(), &end, 10);
+            if (token.empty() || *end != '\0' || token[0] == '-' || errno == ERANGE || count > bytes_left)
+              throw InputError(file, "element '" + e.name + "' " + std::to_string(i) + ": list length '" + token + "' is not valid");
+            n = size_t(count);
           }
           for (size_t k = 0; k < n; ++k) {
             if (!(in >> token)) throw truncated();
@@ -148,7 +168,10 @@ PlyVertices read_ply_vertices(const std::filesystem::path& path) {
           size_t n = 1;
           if (p.is_list) {
             if (!in.read(reinterpret_cast<char*>(buf), std::streamsize(type_size(p.count_type)))) throw truncated();
-            n = size_t(decode(p.count_type, buf, swap));
+            double count = decode(p.count_type, buf, swap);
+            if (!(count >= 0) || count > double(bytes_left))
+              throw InputError(file, "element '" + e.name + "' " + std::to_string(i) + ": list length " + std::to_string(count) + " is not valid");
+            n = size_t(count);
           }
           size_t sz = type_size(p.type);
           for (size_t k = 0; k < n; ++k) {

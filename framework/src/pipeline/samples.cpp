@@ -46,8 +46,12 @@ SampleSet draw_by_weight(const Target& target, std::vector<double> importance, s
     total = capped;
   }
   const double step = total / double(count);
-  // Golden-ratio offset from the seed: deterministic, different per seed.
-  double next = std::fmod(0.5 + 0.6180339887498949 * double(seed), 1.0) * step;
+  // The start from the seed, mixed so every 64-bit seed gives its own.
+  uint64_t mixed = seed + 0x9E3779B97F4A7C15ull;
+  mixed = (mixed ^ (mixed >> 30)) * 0xBF58476D1CE4E5B9ull;
+  mixed = (mixed ^ (mixed >> 27)) * 0x94D049BB133111EBull;
+  mixed ^= mixed >> 31;
+  double next = double(mixed >> 11) * (1.0 / 9007199254740992.0) * step;
   SampleSet s;
   double cumulative = 0;
   for (uint32_t i = 0; i < n && s.size() < count; ++i) {

@@ -49,7 +49,12 @@ Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScen
       m_optimizer(optimizer),
       m_settings(std::move(settings)), m_progress(std::move(progress)) {}
 
-float Solver::neighbourhood_radius() const { return 2.f * std::max(m_scene->max_edge, 1e-3f * m_scene->diagonal()); }
+float Solver::neighbourhood_radius() const {
+  // Two tessellation edges, within [diagonal/1000, diagonal/20]: a coarse
+  // --max-edge must not make "local" the whole scene (quadratic sampling).
+  const float d = m_scene->diagonal();
+  return std::clamp(2.f * m_scene->max_edge, 1e-3f * d, 0.05f * d);
+}
 
 void Solver::ensure_cache(SolveReport& report) {
   if (!m_settings.use_cache) {

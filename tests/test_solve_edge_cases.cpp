@@ -1,0 +1,88 @@
+// Regressions from review: solves that once failed silently or crashed.
+#include "hilight/io/lights_json.hpp"
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+using namespace hilight;
+
+namespace {
+const std::string kRoom = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+const std::string kLights = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room-4lights.json";
+
+std::string cache_dir() { return std::string(HILIGHT_TEST_OUTPUT_DIR) + "/solve-cache"; }
+
+std::filesystem::path render_target(const std::filesystem::path& dir) {
+  auto r = test::run_hilight({"render", kRoom, "--lights", kLights, "-o", (dir / "target.ply").string()});
+  REQUIRE(r.exit_code == 0);
+  return dir / "target.ply";
+}
+} // namespace
+
+TEST_CASE("add mode on a target the lights already produce refuses instead of adding noise", "[solve][edge]") {
+  auto dir = test::output_dir("edge_add_nothing");
+  auto target = render_target(dir);
+  auto r = test::run_hilight({"solve", kRoom, "--target", target.string(), "--mode", "add", "--initial", kLights, "-o",
+                              (dir / "out.json").string(), "--cache-dir", cache_dir()});
+  CHECK(r.exit_code == 2);
+  CHECK(test::line_count(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("nothing to add"));
+  CHECK_FALSE(std::filesystem::exists(dir / "out.json"));
+}
+
+TEST_CASE("spot hints and fine-tune lights outside the scene or inside solids are refused up front", "[solve][edge]") {
+  auto dir = test::output_dir("edge_inadmissible");
+  auto target = render_target(dir);
+  test::write_text(dir / "hint.json", R"({"lights":[{"type":"spot","position":[3,30,2.5],"direction":[0,-1,0],"cutoff_deg":30,"intensity":[1,1,1]}]})");
+  auto r = test::run_hilight({"solve", kRoom, "--target", target.string(), "--spot-hints", (dir / "hint.json").string(), "-o",
+                              (dir / "out.json").string(), "--cache-dir", cache_dir()});
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::Contains("spot hints: light 0") && Catch::Contains("outside"));
+  // Inside the cabinet (4.6..5.7, 0..1.9, 0.3..0.9).
+  test::write_text(dir / "inside.json", R"({"lights":[{"type":"point","position":[5.1,1,0.6],"intensity":[1,1,1]}]})");
+  r = test::run_hilight({"solve", kRoom, "--target", target.string(), "--mode", "fine-tune", "--initial", (dir / "inside.json").string(),
+                         "-o", (dir / "out.json").string(), "--cache-dir", cache_dir()});
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::Contains("inside solid geometry"));
+  CHECK_FALSE(std::filesystem::exists(dir / "out.json"));
+}
+
+TEST_CASE("a target lit only in a small patch gets an honest D-bar and no dead lights", "[solve][edge]") {
+  auto dir = test::output_dir("edge_small_patch");
+  // Every vertex of the room, black except a small patch on the floor.
+  Scene scene = load_scene(kRoom);
+  std::string ply = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(scene.positions.size()) +
+                    "\nproperty float x\nproperty float y\nproperty float z\nproperty float red\nproperty float green\nproperty float blue\nend_header\n";
+  size_t lit = 0;
+  for (const auto& p : scene.positions) {
+    bool on = p.y == 0.f && std::abs(p.x - 3.f) < 0.3f && std::abs(p.z - 2.5f) < 0.3f;
+    lit += on;
+    ply += std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + (on ? " 0.5 0.5 0.5\n" : " 0 0 0\n");
+  }
+  REQUIRE(lit > 0);
+  test::write_text(dir / "patch.ply", ply);
+  auto r = test::run_hilight({"solve", kRoom, "--target", (dir / "patch.ply").string(), "-o", (dir / "out.json").string(), "--report",
+                              (dir / "report.json").string(), "--cache-dir", cache_dir(), "-q"});
+  REQUIRE(r.exit_code == 0);
+  for (const auto& l : read_lights_json(dir / "out.json")) CHECK(glm::length(l.intensity) > 0.f);
+  auto report = nlohmann::json::parse(std::ifstream(dir / "report.json"));
+  // The patch cannot be lit alone (its surroundings must stay black): the
+  // report must say so rather than claim a perfect match.
+  CHECK(report["dbar"].get<double>() > 0.05);
+}
+
+TEST_CASE("a PLY target whose header claims more than the file holds is refused", "[solve][edge][bad-input]") {
+  auto dir = test::output_dir("edge_ply_claims");
+  test::write_text(dir / "huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 100000000000\nproperty float x\nproperty float y\n"
+                                     "property float z\nproperty float red\nproperty float green\nproperty float blue\nend_header\n");
+  test::write_text(dir / "list.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty list uchar int idx\nproperty float x\nend_header\nabc 1 2\n");
+  for (const char* name : {"huge.ply", "list.ply"}) {
+    auto r = test::run_hilight({"solve", kRoom, "--target", (dir / name).string(), "-o", (dir / "out.json").string()});
+    INFO(name << ": " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(test::line_count(r.err) == 1);
+    CHECK_THAT(r.err, Catch::Contains(name));
+  }
+}
