@@ -22,13 +22,15 @@ Vec3 Scene::face_normal(size_t t) const {
 }
 
 Bounds Scene::light_bounds() const {
+  // Only flat axes grow: a room keeps its walls (a light outside them would
+  // "light" their outer sides), a floor with low objects gets height.
   Bounds b = bounds;
-  const float minimum = 0.5f * diagonal();
+  const float flat = 0.25f * diagonal(), grown = 0.5f * diagonal();
   for (int k = 0; k < 3; ++k) {
     float extent = b.hi[k] - b.lo[k];
-    if (extent < minimum) {
-      b.lo[k] -= 0.5f * (minimum - extent);
-      b.hi[k] += 0.5f * (minimum - extent);
+    if (extent < flat) {
+      b.lo[k] -= 0.5f * (grown - extent);
+      b.hi[k] += 0.5f * (grown - extent);
     }
   }
   return b;

@@ -29,9 +29,9 @@ struct Scene {
   float max_edge = 0.f;                        ///< tessellation limit used
 
   float diagonal() const { return bounds.diagonal(); }
-  /// Where lights may stand: the bounds, with every axis at least half the
-  /// diagonal long (centred), so that open and flat scenes — a floor
-  /// with objects on it — have room above them for lights.
+  /// Where lights may stand: the bounds, except that an axis shorter than a
+  /// quarter of the diagonal (a flat or open scene: a floor with low objects)
+  /// is grown to half the diagonal, centred, so there is room for lights.
   Bounds light_bounds() const;
   Rgb triangle_albedo(size_t t) const { return materials[triangle_material[t]].albedo; }
   /// Albedo of a vertex: that of the first triangle using it (vertices are not
