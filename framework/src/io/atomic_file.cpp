@@ -17,7 +17,9 @@ void write_atomically(const fs::path& path, const std::function<void(const fs::p
   if (!fs::is_directory(dir, ec)) throw InputError(path.string(), "cannot write: folder " + dir.string() + " does not exist");
   if (fs::is_directory(path, ec)) throw InputError(path.string(), "cannot write: it is a folder");
   // Same folder as the target so the rename is atomic; pid keeps parallel runs apart.
-  fs::path temp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()) + path.extension().string());
+  std::string temp_name = ".";  // built by appending: GCC 12 misreports chained + (-Wrestrict)
+  temp_name.append(path.filename().string()).append(".tmp").append(std::to_string(::getpid())).append(path.extension().string());
+  fs::path temp = dir / temp_name;
   {
     std::ofstream probe(temp, std::ios::binary);
     if (!probe) throw InputError(path.string(), std::string("cannot write: ") + std::strerror(errno));
