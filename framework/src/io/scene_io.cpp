@@ -94,20 +94,20 @@ void check_off_header(const fs::path& path) {
   for (auto& c : ext) c = char(std::tolower(c));
   if (ext != ".off") return;
   std::ifstream in(path);
+  // Skip the keyword (OFF, COFF, NOFF, ...) and # comments; then come the
+  // vertex and face counts.
   std::string word;
-  double counts[2] = {0, 0};
-  while (in >> word && (word.empty() || word[0] == '#' || std::isalpha(static_cast<unsigned char>(word[0])))) {
-    if (!word.empty() && word[0] == '#') std::getline(in, word);
-  }
-  if (!in) return;
-  counts[0] = std::strtod(word.c_str(), nullptr);
-  in >> counts[1];
+  while (in >> word && (word[0] == '#' || std::isalpha(static_cast<unsigned char>(word[0]))))
+    if (word[0] == '#') std::getline(in, word);
+  double vertices = std::strtod(word.c_str(), nullptr), faces = 0;
+  if (!(in >> faces)) return;  // let assimp say what is wrong
   std::error_code ec;
-  double size = double(fs::file_size(path, ec));
-  if (ec || !in) return;
-  if (counts[0] * 6 + counts[1] * 8 > size * 1.01 + 64)
-    throw InputError(path.string(), "the OFF header claims " + std::to_string((long long)counts[0]) + " vertices and " +
-                                        std::to_string((long long)counts[1]) + " faces, more than the file can hold");
+  const double size = double(fs::file_size(path, ec));
+  // A vertex line takes at least 6 bytes ("0 0 0\n"), a face line 8.
+  if (ec || !(vertices * 6 + faces * 8 > size * 1.01 + 64)) return;
+  std::ostringstream message;
+  message << "the OFF header claims " << vertices << " vertices and " << faces << " faces, more than the file can hold";
+  throw InputError(path.string(), message.str());
 }
 
 } // namespace
