@@ -86,3 +86,23 @@ TEST_CASE("a PLY target whose header claims more than the file holds is refused"
     CHECK_THAT(r.err, Catch::Contains(name));
   }
 }
+
+TEST_CASE("a solve is byte-identical with one thread or two, and the second one loads the light cache", "[solve][determinism]") {
+  auto dir = test::output_dir("edge_threads");
+  auto target = render_target(dir);
+  const std::string cache = (dir / "cache").string();
+  auto one = test::run_hilight({"solve", kRoom, "--target", target.string(), "-o", (dir / "one.json").string(), "--threads", "1",
+                                "--cache-dir", cache, "--report", (dir / "one-report.json").string(), "-q"});
+  auto two = test::run_hilight({"solve", kRoom, "--target", target.string(), "-o", (dir / "two.json").string(), "--threads", "2",
+                                "--cache-dir", cache, "--report", (dir / "two-report.json").string(), "-q"});
+  REQUIRE(one.exit_code == 0);
+  REQUIRE(two.exit_code == 0);
+  auto slurp = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  CHECK(slurp(dir / "one.json") == slurp(dir / "two.json"));
+  auto r1 = nlohmann::json::parse(slurp(dir / "one-report.json")), r2 = nlohmann::json::parse(slurp(dir / "two-report.json"));
+  CHECK(r1["light_cache"] == "built");
+  CHECK(r2["light_cache"] == "loaded");
+}
