@@ -3,7 +3,8 @@
 // instead of 6), and it does so one light at a time — moving one light costs
 // one light's φ, the others' responses are kept by the problem. Sweeps repeat
 // until a sweep improves the objective by less than `tolerance`. A polish
-// (RefineEffort::Polish) is one sweep with small first steps.
+// (RefineEffort::Polish) is one sweep with small first steps and half the
+// evaluations.
 //
 // | property          | default | meaning                                         |
 // |-------------------|---------|-------------------------------------------------|
@@ -49,6 +50,7 @@ public:
         // A spot has 6 parameters and a long, flat valley (distance trades
         // against cutoff and intensity): it gets four times a point's budget.
         settings.max_evaluations = x.size() > 3 ? 4 * m_evaluations : m_evaluations;
+        if (effort == RefineEffort::Polish) settings.max_evaluations = std::max(12, settings.max_evaluations / 2);
         settings.x_tolerance = 2e-4;  // 0.02% of the diagonal
         SimplexResult r = nelder_mead(f, x, steps, settings);
         if (r.value < best_value) {

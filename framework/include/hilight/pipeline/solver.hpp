@@ -30,7 +30,7 @@ struct SolveSettings {
   double eps_opt = 0.15;             ///< ε_opt: only cuts with D̄ below are refined
   double eps_impro = 1.6;            ///< ε_impro of eq. 9
   size_t fixed_count = 0;            ///< --lights N (0: automatic)
-  size_t evaluation_points = 2048;   ///< target points D̄ is measured on (evenly spaced; 0: all)
+  size_t evaluation_points = 1024;   ///< target points D̄ is measured on (evenly spaced; 0: all)
   Lighting spot_hints;               ///< spotlights the user asked for
 };
 
