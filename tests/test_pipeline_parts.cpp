@@ -3,6 +3,7 @@
 #include "hilight/light_cache.hpp"
 #include "hilight/pipeline/fit.hpp"
 #include "hilight/pipeline/hierarchy.hpp"
+#include "hilight/pipeline/solver.hpp"
 #include "hilight/pipeline/samples.hpp"
 #include "hilight/sampler.hpp"
 #include "hilight/scene_builders.hpp"
@@ -125,4 +126,34 @@ TEST_CASE("the light cache's bounce is close to the exact bounce and survives a 
     // the rest by anchoring (solver.cpp).
     CHECK(error < 0.10);
   }
+}
+
+TEST_CASE("after a solve, the light count moves up and down the hierarchy's cuts without a new solve", "[solver][cuts]") {
+  auto scene = test::finish(builders::furnished_room(), 0.4f);
+  auto rays = std::make_shared<const RayScene>(*scene);
+  Lighting truth = {Light::point({1.5f, 2.5f, 1.1f}, Rgb(2.f)), Light::point({4.6f, 2.4f, 1.4f}, Rgb(2.f)),
+                    Light::point({2.3f, 1.6f, 3.9f}, Rgb(1.6f))};
+  auto reference = test::make_renderer("embree", scene, {"bounce_samples=32"});
+  auto fast = test::make_renderer("embree", scene, {"bounce_samples=32", "bounce_direct=vertex"});
+  Target target = vertex_target(*scene, reference->illuminate(SurfacePoints::from_vertices(*scene), truth));
+  auto sampler = test::registry().create_sampler("importance", {});
+  auto optimizer = test::registry().create_optimizer("varpro", {});
+  SolveSettings settings;  // cache in memory only
+  Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, settings);
+  CHECK_THROWS(solver.cut_lights(1));
+  SolveReport report;
+  Lighting found = solver.solve(target, report);
+  REQUIRE(found.size() == 3);
+  REQUIRE(solver.cut_count() >= 3);
+  CHECK(solver.cut_lights(1).size() == 1);
+  CHECK(solver.cut_lights(2).size() == 2);
+  CHECK(solver.cut_lights(solver.cut_count()).size() >= 3);
+  // The chosen cut's lights are where the solve put them (before the final re-fit).
+  Lighting three = solver.cut_lights(3);
+  for (const auto& t : truth) {
+    float best = 1e9f;
+    for (const auto& l : three) best = std::min(best, glm::length(l.position - t.position));
+    CHECK(best < 0.05f * scene->diagonal());
+  }
+  CHECK(solver.cut_lights(1000).size() == solver.cut_lights(solver.cut_count()).size());  // clamped
 }

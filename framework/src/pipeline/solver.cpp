@@ -28,7 +28,7 @@ std::string hex(uint64_t v) {
 }
 
 /// Lights of cut `k` (positions and summed intensities) followed by the spots.
-Lighting cut_lights(const LightHierarchy& h, size_t k, const Lighting& spots, std::vector<Rgb>& phi, size_t m) {
+Lighting lights_of_cut(const LightHierarchy& h, size_t k, const Lighting& spots, std::vector<Rgb>& phi) {
   Lighting lights;
   phi.clear();
   for (int node : h.cut(k)) {
@@ -36,7 +36,6 @@ Lighting cut_lights(const LightHierarchy& h, size_t k, const Lighting& spots, st
     lights.push_back(Light::point(c.position, c.intensity));
     phi.insert(phi.end(), c.phi.begin(), c.phi.end());
   }
-  (void)m;
   lights.insert(lights.end(), spots.begin(), spots.end());
   return lights;
 }
@@ -130,7 +129,7 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   std::vector<Lighting> starts(n_points);
   for (size_t k = 1; k <= n_points; ++k) {
     std::vector<Rgb> phi;
-    Lighting lights = cut_lights(*m_hierarchy, k, spots, phi, m);
+    Lighting lights = lights_of_cut(*m_hierarchy, k, spots, phi);
     phi.insert(phi.end(), spot_phi.begin(), spot_phi.end());
     std::vector<Rgb> l = fit_intensities(phi, lights.size(), samples);
     for (size_t j = 0; j < lights.size(); ++j) lights[j].intensity = l[j];
@@ -209,7 +208,16 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
     report.improvement.push_back(next > 0 ? dbar_of(k) / next : 0.0);
   }
   report.dbar_samples = report.cuts[count - 1].dbar_refined;
+  // Kept for cut_lights(): every cut, refined where the solve refined it.
+  m_cuts.clear();
+  for (size_t k = 1; k <= n_points; ++k)
+    m_cuts.push_back(report.cuts[k - 1].refined ? report.cuts[k - 1].refined_lights : starts[k - 1]);
   return report.cuts[count - 1].refined_lights;
+}
+
+Lighting Solver::cut_lights(size_t k) const {
+  if (m_cuts.empty()) throw std::logic_error("Solver::cut_lights: no solve yet");
+  return m_cuts[std::clamp<size_t>(k, 1, m_cuts.size()) - 1];
 }
 
 Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar,

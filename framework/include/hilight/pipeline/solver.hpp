@@ -87,6 +87,13 @@ public:
   void require_admissible(const Lighting& lights, const std::string& what) const;
   /// The hierarchy of the last solve (for moving between cuts).
   const std::optional<LightHierarchy>& hierarchy() const { return m_hierarchy; }
+  /// Number of cuts of the last solve (point lights of its largest cut).
+  size_t cut_count() const { return m_cuts.size(); }
+  /// The lights of the last solve's cut with `k` point lights (clamped to
+  /// [1, cut_count()]), refined if the solve refined it, else with NNLS
+  /// intensities; spots included. Moving the light count up and down the
+  /// hierarchy needs no new solve (paper §3.3, the painter's count control).
+  Lighting cut_lights(size_t k) const;
 
 private:
   void ensure_cache(SolveReport& report);
@@ -108,6 +115,7 @@ private:
   ProgressFn m_progress;
   std::optional<LightCache> m_cache;
   std::optional<LightHierarchy> m_hierarchy;
+  std::vector<Lighting> m_cuts;  ///< index k-1: the cut with k point lights
 };
 
 } // namespace hilight
