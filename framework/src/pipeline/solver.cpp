@@ -90,6 +90,8 @@ void Solver::ensure_cache(SolveReport& report) {
 
 Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   const size_t m = samples.size();
+  m_cuts.clear();
+  m_hierarchy.reset();
   std::optional<LightCacheView> view;
   if (m_cache) view.emplace(*m_cache, *m_scene, samples);
   ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
@@ -301,6 +303,9 @@ Lighting Solver::refit_with_reference(const SampleSet& samples, const Lighting& 
     if (m_settings.fixed_count == 0 && l[j] == Rgb(0.f) && lights[j].type == LightType::Point) continue;
     out.push_back(lights[j]);
     out.back().intensity = l[j];
+  }
+  if (out.empty()) {  // the reference sees none of them: keep the solve's answer as it was
+    out = lights;
   }
   return out;
 }
