@@ -106,3 +106,33 @@ TEST_CASE("a solve is byte-identical with one thread or two, and the second one 
   CHECK(r1["light_cache"] == "built");
   CHECK(r2["light_cache"] == "loaded");
 }
+
+TEST_CASE("an ASCII target whose last value has no newline after it is read", "[solve][edge]") {
+  auto dir = test::output_dir("edge_ascii_no_newline");
+  test::write_text(dir / "one.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+                                    "property float red\nproperty float green\nproperty float blue\nend_header\n3 0 2 1 1 1");
+  auto r = test::run_hilight({"solve", kRoom, "--target", (dir / "one.ply").string(), "-o", (dir / "out.json").string(),
+                              "--cache-dir", cache_dir(), "-q"});
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+}
+
+TEST_CASE("a solve where no seeding cell is free still returns the requested spotlight", "[solve][edge][spot]") {
+  auto dir = test::output_dir("edge_spots_only");
+  // A floor with a box whose corner sits at the centre of the light space:
+  // with one seeding cell, that cell's centre is on the box, so not free.
+  test::write_text(dir / "flat.obj", "v 0 0 0\nv 0 0 10\nv 10 0 10\nv 10 0 0\nf 1 2 3 4\n"
+                                     "v 4 0 4\nv 5 0 4\nv 5 0 5\nv 4 0 5\nv 4 1 4\nv 5 1 4\nv 5 1 5\nv 4 1 5\n"
+                                     "f 5 6 7 8\nf 9 12 11 10\nf 5 9 10 6\nf 6 10 11 7\nf 7 11 12 8\nf 8 12 9 5\n");
+  test::write_text(dir / "spot.json", R"({"lights":[{"type":"spot","position":[2,3,2],"direction":[0.3,-1,0.3],"cutoff_deg":35,"intensity":[3,3,3]}]})");
+  auto render = test::run_hilight({"render", (dir / "flat.obj").string(), "--lights", (dir / "spot.json").string(), "-o",
+                                   (dir / "target.ply").string()});
+  REQUIRE(render.exit_code == 0);
+  auto r = test::run_hilight({"solve", (dir / "flat.obj").string(), "--target", (dir / "target.ply").string(), "--spot-hints",
+                              (dir / "spot.json").string(), "--seed-cells", "1", "-o", (dir / "out.json").string(), "--no-cache", "-q"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  Lighting found = read_lights_json(dir / "out.json");
+  REQUIRE(found.size() >= 1);
+  CHECK(found[0].type == LightType::Spot);
+}

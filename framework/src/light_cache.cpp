@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr uint32_t kFormatVersion = 3;  // 3: side-aware bounce, shading points
+constexpr uint32_t kFormatVersion = 4;  // 4: grid over light_bounds()
 constexpr char kMagic[8] = {'H', 'L', 'C', 'A', 'C', 'H', 'E', '1'};
 
 } // namespace

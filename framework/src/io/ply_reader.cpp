@@ -128,7 +128,8 @@ PlyVertices read_ply_vertices(const std::filesystem::path& path) {
       for (const auto& p : e.properties) row_bytes += p.is_list ? type_size(p.count_type) : type_size(p.type);
       // ASCII takes at least 2 bytes a value ("0 "), binary its type's size.
       const size_t min_row = format == Format::Ascii ? 2 * e.properties.size() : row_bytes;
-      if (min_row > 0 && e.count > bytes_left / min_row)
+      // (+1: the file's very last value needs no separator after it.)
+      if (min_row > 0 && e.count > (bytes_left + 1) / min_row)
         throw InputError(file, "the header claims " + std::to_string(e.count) + " vertices, more than the file's " +
                                    std::to_string(bytes_left) + " bytes of data can hold");
       for (const auto& p : e.properties)

@@ -53,6 +53,9 @@ SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lightin
   std::vector<Rgb> spot_phi = spots.empty() ? std::vector<Rgb>{} : model.responses(spots);
 
   SeedResult result;
+  // The spots are part of the answer even if no cell is free for a point light.
+  result.lights = spots;
+  result.phi = spot_phi;
   std::vector<Cell> cells = free_cells(coarse_cells(rays.scene().light_bounds(), settings.coarse_cells), rays);
   for (int level = 0; level < settings.iterations && !cells.empty(); ++level) {
     Lighting lights;

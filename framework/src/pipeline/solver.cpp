@@ -104,6 +104,9 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   report.seed_lights = n_points;
   report.seeds_tried = seed.lights_tried;
   if (n_points == 0 && seed.spot_count == 0) throw InputError("the seeding found no light that brightens the target");
+  if (m_settings.fixed_count > n_points)
+    throw InputError("--lights " + std::to_string(m_settings.fixed_count) + ": the seeding found only " +
+                     std::to_string(n_points) + " candidate lights (lower --lights, or --weak-threshold)");
   if (n_points == 0) {  // only the requested spotlights: no hierarchy, refine them alone
     Stopwatch refine_watch;
     ResponseModel exact(m_renderer, samples, nullptr);
@@ -111,9 +114,6 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
     report.seconds["refinement"] += refine_watch.seconds();
     return spots_only;
   }
-  if (m_settings.fixed_count > n_points)
-    throw InputError("--lights " + std::to_string(m_settings.fixed_count) + ": the seeding found only " +
-                     std::to_string(n_points) + " candidate lights (lower --lights, or --weak-threshold)");
 
   if (m_progress) m_progress("building the light hierarchy");
   Stopwatch hierarchy_watch;

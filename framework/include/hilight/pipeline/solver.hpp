@@ -89,10 +89,13 @@ public:
   const std::optional<LightHierarchy>& hierarchy() const { return m_hierarchy; }
   /// Number of cuts of the last solve (point lights of its largest cut).
   size_t cut_count() const { return m_cuts.size(); }
-  /// The lights of the last solve's cut with `k` point lights (clamped to
-  /// [1, cut_count()]), refined if the solve refined it, else with NNLS
-  /// intensities; spots included. Moving the light count up and down the
-  /// hierarchy needs no new solve (paper §3.3, the painter's count control).
+  /// The lights of the last solve's (or add's: the added lights') cut with
+  /// `k` point lights (k clamped to [1, cut_count()]), refined if the solve
+  /// refined it — refinement may have pruned weak lights, so a refined cut
+  /// can hold fewer — else with NNLS intensities; spots included. Moving the
+  /// light count along the hierarchy needs no new solve (paper §3.3, the
+  /// painter's count control). Throws std::logic_error before any solve or
+  /// after a solve that found only spotlights (no cuts).
   Lighting cut_lights(size_t k) const;
 
 private:
