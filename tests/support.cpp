@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <sstream>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -32,22 +33,24 @@ std::shared_ptr<const hilight::Scene> finish(hilight::Scene raw, float max_edge)
   return std::make_shared<const hilight::Scene>(hilight::finish_scene(std::move(raw), {max_edge}));
 }
 
-namespace {
-std::string slurp(const fs::path& p) {
+std::string read_file(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
 }
-} // namespace
 
-RunResult run_hilight(const std::vector<std::string>& args) {
+RunResult run_hilight(const std::vector<std::string>& args, unsigned long long address_space) {
   // Output goes through files, not pipes, so large outputs cannot deadlock.
   static int counter = 0;
   fs::path dir = output_dir("run_hilight_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
   fs::path out_path = dir / "stdout.txt", err_path = dir / "stderr.txt";
   pid_t pid = ::fork();
   if (pid == 0) {
+    if (address_space) {
+      struct rlimit lim = {rlim_t(address_space), rlim_t(address_space)};
+      ::setrlimit(RLIMIT_AS, &lim);
+    }
     int out = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     int in = ::open("/dev/null", O_RDONLY);
@@ -64,11 +67,13 @@ RunResult run_hilight(const std::vector<std::string>& args) {
     ::_exit(127);
   }
   int status = 0;
-  ::waitpid(pid, &status, 0);
+  struct rusage usage = {};
+  ::wait4(pid, &status, 0, &usage);
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = slurp(out_path);
-  r.err = slurp(err_path);
+  r.out = read_file(out_path);
+  r.err = read_file(err_path);
+  r.max_rss_kb = usage.ru_maxrss;
   return r;
 }
 

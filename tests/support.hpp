@@ -24,9 +24,14 @@ std::shared_ptr<const hilight::Scene> finish(hilight::Scene raw, float max_edge)
 struct RunResult {
   int exit_code = -1;
   std::string out, err;
+  long max_rss_kb = 0;  ///< the child's peak resident memory
 };
 /// Runs `hilight <args>` (no shell), capturing stdout and stderr.
-RunResult run_hilight(const std::vector<std::string>& args);
+/// `address_space` > 0 caps the child's address space (RLIMIT_AS, bytes).
+RunResult run_hilight(const std::vector<std::string>& args, unsigned long long address_space = 0);
+
+/// A file's bytes ("" if it cannot be read).
+std::string read_file(const std::filesystem::path& path);
 
 /// A fresh, empty folder under the build tree for one test's files.
 std::filesystem::path output_dir(const std::string& test_name);

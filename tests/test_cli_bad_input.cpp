@@ -55,67 +55,20 @@ void check_no_output(const fs::path& dir, const std::vector<std::string>& names)
   CHECK(stray_temp_files(dir).empty());
 }
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 /// Address space granted to `hilight` on assimp's invalid models. OutOfMemory.off
 /// makes assimp allocate and touch ~16 GB (about 20 s) when nothing stops it;
 /// capped, the allocation fails at once, as it would on a smaller machine.
 constexpr rlim_t kAddressSpaceCap = rlim_t(8) << 30;
 
-struct LimitedRun {
-  test::RunResult result;
-  long max_rss_kb = 0;  ///< the child's peak resident memory
-};
-
-/// test::run_hilight with RLIMIT_AS = `address_space` in the child (0: no cap),
-/// also reporting the child's peak memory.
-LimitedRun run_hilight_limited(const std::vector<std::string>& args, rlim_t address_space) {
-  static int counter = 0;
-  fs::path dir = test::output_dir("limited_run_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-  fs::path out_path = dir / "stdout.txt", err_path = dir / "stderr.txt";
-  pid_t pid = ::fork();
-  if (pid == 0) {
-    if (address_space) {
-      struct rlimit lim = {address_space, address_space};
-      ::setrlimit(RLIMIT_AS, &lim);
-    }
-    int out = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    int in = ::open("/dev/null", O_RDONLY);
-    ::dup2(out, 1);
-    ::dup2(err, 2);
-    ::dup2(in, 0);
-    std::string bin = HILIGHT_BINARY;
-    std::vector<std::string> copy = args;
-    std::vector<char*> argv = {bin.data()};
-    for (auto& a : copy) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    ::execv(bin.c_str(), argv.data());
-    ::_exit(127);
-  }
-  int status = 0;
-  struct rusage usage = {};
-  ::wait4(pid, &status, 0, &usage);
-  LimitedRun run;
-  run.result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  run.result.out = read_bytes(out_path);
-  run.result.err = read_bytes(err_path);
-  run.max_rss_kb = usage.ru_maxrss;
-  return run;
-}
-
 /// `hilight render SCENE --lights LIGHTS -o DIR/out -o DIR/out.exr` (small and
 /// direct-light only), checking that nothing was written. `address_space`: see
-/// run_hilight_limited.
+/// test::run_hilight.
 test::RunResult bad_render(const fs::path& dir, const std::string& scene, const std::string& lights,
                            const std::vector<std::string>& extra = {}, rlim_t address_space = 0) {
   std::vector<std::string> args = {"render", scene, "--lights", lights, "-o", (dir / "out").string(), "-o",
                                    (dir / "out.exr").string(), "--bounces", "0", "--width", "64", "--height", "48"};
   args.insert(args.end(), extra.begin(), extra.end());
-  test::RunResult r = address_space ? run_hilight_limited(args, address_space).result : test::run_hilight(args);
+  test::RunResult r = test::run_hilight(args, address_space);
   check_no_output(dir, {"out.ply", "out.png", "out.exr"});
   return r;
 }
@@ -166,7 +119,7 @@ TEST_CASE("info: every one of assimp's invalid test models is refused cleanly or
   REQUIRE(files.size() >= 5);
   size_t refused = 0;
   for (const auto& file : files) {
-    auto r = run_hilight_limited({"info", file.string(), "--json"}, kAddressSpaceCap).result;
+    auto r = test::run_hilight({"info", file.string(), "--json"}, kAddressSpaceCap);
     CAPTURE(file, r.exit_code, r.out, r.err);
     // 1 is an internal error, >= 128 a signal: both are crashes here.
     REQUIRE((r.exit_code == 0 || r.exit_code == 2));
@@ -282,7 +235,7 @@ TEST_CASE("render: malformed lights JSON is named with its problem", "[cli][bad-
     lights = dir / "no-such-lights.json";
     problem = "no such file";
   }
-  CAPTURE(read_bytes(lights));
+  CAPTURE(test::read_file(lights));
   // A good scene and output requested: the lights fail, nothing is written.
   auto r = bad_render(dir, kRoom, lights.string());
   check_one_line_error(r, lights.string());
@@ -444,7 +397,7 @@ TEST_CASE("render: a failure after output was requested leaves no file and keeps
     test::write_text(dir / "old.ply", old);
     auto r = test::run_hilight({"render", kRoom, "--lights", lights.string(), "-o", (dir / "old.ply").string(), "--bounces", "0"});
     check_one_line_error(r, lights.string());
-    CHECK(read_bytes(dir / "old.ply") == old);
+    CHECK(test::read_file(dir / "old.ply") == old);
     CHECK(stray_temp_files(dir).empty());
   }
   SECTION("the renderer refuses its settings after the scene was loaded") {
@@ -493,8 +446,8 @@ TEST_CASE("info: a model declaring billions of elements is refused within bounde
     WARN(file.string() + " does not exist: skipped");
     return;
   }
-  auto run = run_hilight_limited({"info", file.string()}, 0);
+  auto run = test::run_hilight({"info", file.string()}, 0);
   CAPTURE(run.max_rss_kb);
-  check_one_line_error(run.result, file.string());
+  check_one_line_error(run, file.string());
   CHECK(run.max_rss_kb < 2L * 1024 * 1024);  // under 2 GB
 }

@@ -26,10 +26,6 @@ using Catch::Matchers::Contains;
 const std::string kRoom = HILIGHT_SOURCE_DIR "/scenes/room.obj";
 const std::string kRoomLights = HILIGHT_SOURCE_DIR "/scenes/room-lights.json";
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 /// A binary little-endian PLY as hilight writes it.
 struct Ply {
@@ -40,7 +36,7 @@ struct Ply {
 
 /// Reads the PLY, checking the exact layout hilight promises; fails the test otherwise.
 Ply read_ply(const fs::path& path) {
-  std::string bytes = read_bytes(path);
+  std::string bytes = test::read_file(path);
   REQUIRE(bytes.size() > 4);
   Ply ply;
   size_t pos = 0;
@@ -243,7 +239,7 @@ TEST_CASE("render: OUT writes a per-vertex PLY and a PNG of the requested size",
       REQUIRE(size_t(i) < ply.vertices.size());
     }
 
-  std::string png = read_bytes(dir / "out.png");
+  std::string png = test::read_file(dir / "out.png");
   REQUIRE(png.size() > 33);
   CHECK(png.compare(0, 8, std::string("\x89PNG\r\n\x1a\n", 8)) == 0);
   CHECK(png.compare(12, 4, "IHDR") == 0);
@@ -259,7 +255,7 @@ TEST_CASE("render: the same render twice gives byte-identical PLY files", "[cli]
   CAPTURE(opts);
   render({(dir / "a.ply").string()}, opts);
   render({(dir / "b.ply").string()}, opts);
-  std::string a = read_bytes(dir / "a.ply"), b = read_bytes(dir / "b.ply");
+  std::string a = test::read_file(dir / "a.ply"), b = test::read_file(dir / "b.ply");
   REQUIRE(a.size() > 1000);
   CHECK(a.size() == b.size());
   CHECK((a == b));
@@ -293,7 +289,7 @@ TEST_CASE("render: OUT.exr writes an OpenEXR image", "[cli][render]") {
   fs::path dir = test::output_dir("cli_render_exr");
   auto r = render({(dir / "out.exr").string()}, {"--bounces", "0", "--width", "64", "--height", "48"});
   CHECK_THAT(r.err, Contains("out.exr"));
-  std::string exr = read_bytes(dir / "out.exr");
+  std::string exr = test::read_file(dir / "out.exr");
   REQUIRE(exr.size() > 64 * 48);  // at least one byte per pixel
   CHECK(uint8_t(exr[0]) == 0x76);
   CHECK(uint8_t(exr[1]) == 0x2f);

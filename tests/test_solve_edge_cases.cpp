@@ -97,12 +97,8 @@ TEST_CASE("a solve is byte-identical with one thread or two, and the second one 
                                 "--cache-dir", cache, "--report", (dir / "two-report.json").string(), "-q"});
   REQUIRE(one.exit_code == 0);
   REQUIRE(two.exit_code == 0);
-  auto slurp = [](const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  };
-  CHECK(slurp(dir / "one.json") == slurp(dir / "two.json"));
-  auto r1 = nlohmann::json::parse(slurp(dir / "one-report.json")), r2 = nlohmann::json::parse(slurp(dir / "two-report.json"));
+  CHECK(test::read_file(dir / "one.json") == test::read_file(dir / "two.json"));
+  auto r1 = nlohmann::json::parse(test::read_file(dir / "one-report.json")), r2 = nlohmann::json::parse(test::read_file(dir / "two-report.json"));
   CHECK(r1["light_cache"] == "built");
   CHECK(r2["light_cache"] == "loaded");
 }
