@@ -49,17 +49,17 @@ LightCache LightCache::build(const Scene& scene, const RayScene& rays, Renderer&
   cache.m_node_valid.assign(nodes, 0);
   cache.m_node_slot.assign(nodes, UINT32_MAX);
   const float clearance = 1e-3f * scene.diagonal();
+  std::vector<Vec3> positions(nodes);
   tbb::parallel_for(size_t(0), nodes, [&](size_t n) {
-    int x = int(n % cache.m_dims.x), y = int((n / cache.m_dims.x) % cache.m_dims.y), z = int(n / (size_t(cache.m_dims.x) * cache.m_dims.y));
-    Vec3 p = cache.node_position(x, y, z);
-    cache.m_node_valid[n] = !rays.inside_solid(p) && !rays.closest_point(p, clearance).valid();
+    const size_t x = n % cache.m_dims.x, y = (n / cache.m_dims.x) % cache.m_dims.y, z = n / (size_t(cache.m_dims.x) * cache.m_dims.y);
+    positions[n] = cache.node_position(int(x), int(y), int(z));
+    cache.m_node_valid[n] = !rays.inside_solid(positions[n]) && !rays.closest_point(positions[n], clearance).valid();
   });
   Lighting lights;
   for (size_t n = 0; n < nodes; ++n)
     if (cache.m_node_valid[n]) {
       cache.m_node_slot[n] = uint32_t(lights.size());
-      int x = int(n % cache.m_dims.x), y = int((n / cache.m_dims.x) % cache.m_dims.y), z = int(n / (size_t(cache.m_dims.x) * cache.m_dims.y));
-      lights.push_back(Light::point(cache.node_position(x, y, z), Rgb(1.f)));
+      lights.push_back(Light::point(positions[n], Rgb(1.f)));
     }
   cache.m_vertex_count = scene.positions.size();
   cache.m_key = key(scene, renderer.settings_key(), settings);

@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <iostream>
-#include <unistd.h>
 
 namespace hilight::cli {
 
@@ -54,12 +53,5 @@ std::unique_ptr<Renderer> RendererOptions::create(const Registry& registry, std:
   return renderer;
 }
 
-void check_writable(const fs::path& path) {
-  fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(path.string(), "cannot write: folder " + dir.string() + " does not exist");
-  if (fs::is_directory(path, ec)) throw InputError(path.string(), "cannot write: it is a folder");
-  if (::access(dir.c_str(), W_OK) != 0) throw InputError(path.string(), "cannot write: folder " + dir.string() + " is not writable");
-}
 
 } // namespace hilight::cli

@@ -1,6 +1,7 @@
 #pragma once
 /// Helpers shared by the CLI's commands: argument parsing with CLI11, the
 /// scene/renderer options every command takes, and output-path checks.
+#include "hilight/io/atomic_file.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/registry.hpp"
 
@@ -33,7 +34,5 @@ struct RendererOptions {
 /// CLI11 validator: a finite number ≥ 0 (NonNegativeNumber lets NaN through).
 extern const CLI::Validator FiniteNonNegative;
 
-/// Fails early (before any work) if `path` cannot be created.
-void check_writable(const std::filesystem::path& path);
 
 } // namespace hilight::cli

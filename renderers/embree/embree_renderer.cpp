@@ -124,13 +124,13 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
   const Scene& scene = *m_scene;
   // Indirect irradiance at the vertices, interpolated across each triangle;
   // direct light is exact per pixel so shadow edges stay sharp.
+  const std::vector<PreparedLight> prepared(lights.begin(), lights.end());
   std::vector<Rgb> vertex_indirect;
   if (m_settings.bounces > 0) {
     SurfacePoints vertices = SurfacePoints::from_vertices(scene);
     auto gather_owner = gather_for(vertices);
     const BounceGather& gather = *gather_owner;
     vertex_indirect.assign(vertices.size(), Rgb(0.f));
-    std::vector<PreparedLight> prepared(lights.begin(), lights.end());
     tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
     tbb::parallel_for(tbb::blocked_range<size_t>(0, vertices.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i != r.end(); ++i)
@@ -138,7 +138,6 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
     });
     m_rays += rays.combine(std::plus<uint64_t>());
   }
-  std::vector<PreparedLight> prepared(lights.begin(), lights.end());
   Image image(width, height);
   const Camera::Basis b = camera.basis();
   const float aspect = float(width) / float(height);
@@ -180,16 +179,17 @@ std::vector<std::pair<std::string, double>> EmbreeRenderer::baseline_figures(con
   std::vector<Segment> segments;
   segments.reserve(points.size() * lights.size());
   const float eps = m_embree->epsilon();
+  const auto shading = shading_points(points);  // where unit_responses starts its rays
   for (size_t i0 = 0; i0 < points.size(); i0 += 32)
     for (const auto& light : prepared)
       for (size_t i = i0; i < std::min(points.size(), i0 + 32); ++i) {
-        Vec3 d = light.position - points.positions[i];
+        Vec3 d = light.position - (*shading)[i];
         float dist = glm::length(d);
         if (dist <= eps) continue;
         Vec3 w = d / dist;
         const Vec3& n = points.normals[i];
         if (glm::dot(n, w) == 0.f || light.angular(-w) == 0.f) continue;
-        segments.push_back({points.positions[i] + (glm::dot(n, w) >= 0.f ? n : -n) * eps, w, dist - 2.f * eps});
+        segments.push_back({(*shading)[i] + (glm::dot(n, w) >= 0.f ? n : -n) * eps, w, dist - 2.f * eps});
       }
   tbb::combinable<uint64_t> blocked([] { return uint64_t(0); });
   auto start = std::chrono::steady_clock::now();

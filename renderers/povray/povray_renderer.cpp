@@ -13,6 +13,14 @@ namespace hilight::povray {
 
 namespace fs = std::filesystem;
 
+namespace {
+Lighting scaled_lights(std::span<const Light> lights, float scale) {
+  Lighting out(lights.begin(), lights.end());
+  for (auto& l : out) l.intensity *= scale;
+  return out;
+}
+} // namespace
+
 void PovrayRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   m_scene = std::move(scene);
   m_rays = std::make_unique<RayScene>(*m_scene);
@@ -41,8 +49,7 @@ std::vector<Rgb> PovrayRenderer::bake(const SurfacePoints& points, std::span<con
   std::vector<Rgb> out(m, Rgb(0.f));
   if (m == 0 || lights.empty()) return out;
   const float scale = exposure_scale(lights);
-  Lighting scaled(lights.begin(), lights.end());
-  for (auto& l : scaled) l.intensity *= scale;
+  const Lighting scaled = scaled_lights(lights, scale);
 
   TempFolder folder;
   const fs::path pov = folder.path() / "bake.pov";
@@ -118,9 +125,8 @@ std::vector<Rgb> PovrayRenderer::unit_responses(const SurfacePoints& points, std
 
 Image PovrayRenderer::render_image(const Camera& camera, std::span<const Light> lights, int width, int height) {
   if (!m_scene) throw std::logic_error("PovrayRenderer: set_scene was not called");
-  const float scale = lights.empty() ? 1.f : exposure_scale(lights);
-  Lighting scaled(lights.begin(), lights.end());
-  for (auto& l : scaled) l.intensity *= scale;
+  const float scale = exposure_scale(lights);
+  const Lighting scaled = scaled_lights(lights, scale);
   TempFolder folder;
   {
     std::ofstream file(folder.path() / "image.pov");

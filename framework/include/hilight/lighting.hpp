@@ -39,11 +39,6 @@ struct Light {
 
 using Lighting = std::vector<Light>;
 
-/// Angular factor of a light toward unit direction `to_point` (from the light):
-/// 1 for point lights; for spots 1 inside cutoff-falloff, 0 outside cutoff,
-/// smoothstep in the cosine between (as POV-Ray's radius/falloff).
-float spot_factor(const Light& light, const Vec3& to_point);
-
 const char* to_string(LightType type);
 
 } // namespace hilight

@@ -1,5 +1,7 @@
 #include "hilight/pipeline/hierarchy.hpp"
 
+#include "hilight/pipeline/fit.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,16 +11,6 @@
 namespace hilight {
 
 namespace {
-
-/// ‖φ l‖ of a cluster: the weights of eq. 7.
-double contribution_norm(const Cluster& c, const SampleSet& s) {
-  double sum = 0;
-  for (size_t i = 0; i < c.phi.size(); ++i) {
-    DVec3 v(c.phi[i] * c.intensity);
-    sum += s.weight[i] * glm::dot(v, v);
-  }
-  return std::sqrt(sum);
-}
 
 } // namespace
 
@@ -76,7 +68,8 @@ LightHierarchy LightHierarchy::build(ResponseModel& model, const Lighting& leave
     std::vector<size_t> missing_pair;
     for (size_t p = 0; p < pairs.size(); ++p) {
       const Cluster &a = h.m_nodes[pairs[p].first], &b = h.m_nodes[pairs[p].second];
-      const double na = contribution_norm(a, samples), nb = contribution_norm(b, samples);
+      // Eq. 7 weights: ‖φ l‖ of each cluster.
+      const double na = contribution(a.phi, 0, a.intensity, samples), nb = contribution(b.phi, 0, b.intensity, samples);
       weighted_pos[p] = na + nb > 0 ? Vec3((DVec3(a.position) * na + DVec3(b.position) * nb) / (na + nb))
                                     : 0.5f * (a.position + b.position);
       if (!weighted_phi.count(pairs[p])) {

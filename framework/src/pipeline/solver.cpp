@@ -268,12 +268,11 @@ std::vector<Rgb> Solver::illumination(const Target& target, const Lighting& ligh
 }
 
 namespace {
-/// `count` evenly spaced target points, starting half a stride in when
-/// `offset` (so two calls give disjoint sets when the target is large).
-SampleSet spaced_points(const Target& target, size_t count, bool offset) {
+/// `count` evenly spaced target points (every point if there are fewer).
+SampleSet spaced_points(const Target& target, size_t count) {
   const size_t n = target.size(), want = count == 0 ? n : std::min(n, count);
   SampleSet s;
-  for (size_t k = 0; k < want; ++k) s.add(target, uint32_t(std::min(n - 1, (2 * k + (offset ? 1 : 0)) * n / (2 * want))));
+  for (size_t k = 0; k < want; ++k) s.add(target, uint32_t(std::min(n - 1, k * n / want)));
   return s;
 }
 } // namespace
@@ -283,7 +282,7 @@ double Solver::measure_dbar(const Target& target, const Lighting& lights) {
   // cost — unless the target's light is concentrated where the spacing does
   // not look (a small painted patch): then the estimate would be blind, and
   // every point is measured.
-  SampleSet measured = spaced_points(target, m_settings.evaluation_points, false);
+  SampleSet measured = spaced_points(target, m_settings.evaluation_points);
   const double share = double(measured.size()) / double(target.size());
   const double energy = measured.target_norm() * measured.target_norm(), total = target.norm() * target.norm();
   if (measured.size() < target.size() && !(energy > 0.5 * share * total && energy < 2.0 * share * total)) measured = all_samples(target);

@@ -6,6 +6,11 @@
 
 namespace hilight {
 
+/// InputError naming `path` unless it can be created: its folder exists and
+/// is writable, and it is not itself a folder. Cheap: callers use it to fail
+/// before any work.
+void check_writable(const std::filesystem::path& path);
+
 /// Calls write(temp_path), then renames temp_path to `path`. On any exception
 /// the temporary is removed and the exception continues (an unwritable folder
 /// becomes an InputError naming `path`).
