@@ -16,6 +16,8 @@ PACKAGES=(
   nlohmann-json3-dev libcli11-dev catch2 libeigen3-dev libstb-dev
   assimp-testmodels   # real broken and valid models the tests load
   povray              # the reference renderer (renderers/povray)
+  libvulkan-dev mesa-vulkan-drivers glslc vulkan-validationlayers  # renderers/ism-vulkan (lavapipe without a GPU)
+  libglfw3-dev libgl-dev libimgui-dev xvfb xauth  # frontends/painter (OpenGL through Mesa; Xvfb for headless tests)
 )
 
 install_deps() {
@@ -53,7 +55,10 @@ demo() {
 }
 
 run_tests() {
-  (cd "$BUILD_DIR" && ctest --output-on-failure -j "$(nproc)")
+  # The painter's tests open windows: give them a virtual display when there is none.
+  local display=()
+  [ -n "${DISPLAY:-}" ] || display=(xvfb-run -a -s "-screen 0 1280x1024x24")
+  (cd "$BUILD_DIR" && "${display[@]}" ctest --output-on-failure -j "$(nproc)")
 }
 
 case "${1:-}" in
