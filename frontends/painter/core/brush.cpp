@@ -1,0 +1,87 @@
+#include "core/brush.hpp"
+
+#include <algorithm>
+
+namespace hilight::painter {
+
+float brush_coverage(const BrushSettings& brush, float distance) {
+  const float radius = std::max(brush.radius, 1e-12f);
+  const float hard = std::clamp(brush.hardness, 0.f, 1.f) * radius;
+  if (distance <= hard) return 1.f;
+  if (distance >= radius) return 0.f;
+  float t = (radius - distance) / (radius - hard);  // 1 at the hard core, 0 at the rim
+  return t * t * (3.f - 2.f * t);
+}
+
+size_t apply_dab(const Scene& scene, PaintState& state, const BrushSettings& brush, BrushMode mode,
+                 const SurfacePick& centre) {
+  const Rgb value = brush.value();
+  size_t touched = 0;
+  for (const auto& [v, distance] : vertices_in_dab(scene, centre, brush.radius)) {
+    const float a = brush_coverage(brush, distance);
+    if (!(a > 0.f)) continue;
+    ++touched;
+    float& w = state.weight[v];
+    if (mode == BrushMode::Erase) {
+      w *= 1.f - a;
+      if (w < 1e-3f) w = 0.f;
+      continue;
+    }
+    // A "don't care" vertex has no colour to blend from.
+    state.psi[v] = w > 0.f ? state.psi[v] + a * (value - state.psi[v]) : value;
+    w = std::max(w, a);
+  }
+  return touched;
+}
+
+Stroke::Stroke(Document& document, const BrushSettings& brush, BrushMode mode)
+    : m_document(document), m_brush(brush), m_mode(mode) {
+  m_document.begin_edit();
+}
+
+Stroke::~Stroke() { finish(); }
+
+void Stroke::dab(const SurfacePick& centre) {
+  if (!m_open) return;
+  if (apply_dab(m_document.scene(), m_document.begin_edit(), m_brush, m_mode, centre)) m_document.bump();
+  m_points.push_back(centre.position);
+  m_last = centre;
+}
+
+bool Stroke::dab_at(const Vec3& world) {
+  auto pick = pick_near(m_document.rays(), world);
+  if (!pick) return false;
+  dab(*pick);
+  return true;
+}
+
+void Stroke::drag_to(const SurfacePick& centre) {
+  if (!m_last) {
+    dab(centre);
+    return;
+  }
+  const SurfacePick from = *m_last;
+  const float spacing = std::max(0.25f * m_brush.radius, 1e-6f);
+  const int steps = std::min(1000, int(glm::length(centre.position - from.position) / spacing));
+  for (int i = 1; i <= steps; ++i) {
+    float t = float(i) / float(steps + 1);
+    SurfacePick mid{glm::mix(from.position, centre.position, t), glm::normalize(glm::mix(from.normal, centre.normal, t))};
+    if (!is_finite(mid.normal)) mid.normal = centre.normal;
+    dab(mid);
+  }
+  dab(centre);
+}
+
+void Stroke::finish() {
+  if (!m_open) return;
+  m_open = false;
+  m_document.commit_edit(m_mode == BrushMode::Erase ? "erase" : "paint");
+}
+
+void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode, const std::vector<Vec3>& world_points) {
+  Stroke stroke(document, brush, mode);
+  for (const Vec3& p : world_points) stroke.dab_at(p);
+  stroke.finish();
+}
+
+} // namespace hilight::painter

@@ -1,0 +1,70 @@
+#pragma once
+/// The brush: paints Ψ and weight on scene vertices around a world-space dab.
+///
+/// Coverage of a vertex at distance d from the dab's centre: 1 inside
+/// hardness·radius, falling to 0 at the radius by smoothstep (hardness 1: a
+/// hard disc; 0: soft all the way from the centre). Painting blends Ψ toward
+/// colour·brightness by the coverage (a vertex that was "don't care" takes the
+/// colour outright) and raises the weight to at least the coverage; the
+/// eraser lowers the weight by the coverage, back to 0 = "don't care".
+/// A stroke is a sequence of dabs and one undo step.
+#include "core/document.hpp"
+#include "core/region.hpp"
+
+namespace hilight::painter {
+
+struct BrushSettings {
+  float radius = 0.25f;    ///< world units
+  Rgb colour{1.f};         ///< linear RGB, usually in [0, 1]
+  float brightness = 1.f;  ///< multiplies colour: Ψ = colour · brightness (radiance)
+  float hardness = 0.5f;   ///< 0 soft .. 1 hard disc
+
+  Rgb value() const { return colour * brightness; }
+  bool operator==(const BrushSettings&) const = default;
+};
+
+enum class BrushMode { Paint, Erase };
+
+/// Coverage in [0, 1] of a vertex at `distance` (see above).
+float brush_coverage(const BrushSettings& brush, float distance);
+
+/// Applies one dab to `state`; returns how many vertices it touched.
+size_t apply_dab(const Scene& scene, PaintState& state, const BrushSettings& brush, BrushMode mode,
+                 const SurfacePick& centre);
+
+/// One stroke = one undo step. Dabs show at once (the document's revision
+/// moves); finish() commits, and so does the destructor if finish() was not
+/// called. A stroke that touched nothing leaves no step.
+class Stroke {
+public:
+  Stroke(Document& document, const BrushSettings& brush, BrushMode mode);
+  ~Stroke();
+  Stroke(const Stroke&) = delete;
+  Stroke& operator=(const Stroke&) = delete;
+
+  /// A dab at a picked surface point.
+  void dab(const SurfacePick& centre);
+  /// A dab at a bare world point, snapped to the nearest surface; false if
+  /// no surface is near.
+  bool dab_at(const Vec3& world);
+  /// Dabs along the segment from the last dab to `centre`, spaced a quarter
+  /// radius apart, so fast mouse moves leave no gaps.
+  void drag_to(const SurfacePick& centre);
+  void finish();
+
+  /// World positions of the dabs so far (what a session script records).
+  const std::vector<Vec3>& points() const { return m_points; }
+
+private:
+  Document& m_document;
+  BrushSettings m_brush;
+  BrushMode m_mode;
+  std::vector<Vec3> m_points;
+  std::optional<SurfacePick> m_last;
+  bool m_open = true;
+};
+
+/// A whole stroke from world points (session replay): one undo step.
+void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode, const std::vector<Vec3>& world_points);
+
+} // namespace hilight::painter

@@ -1,0 +1,181 @@
+#include "core/document.hpp"
+
+#include "core/target_ply.hpp"
+#include "hilight/error.hpp"
+#include "hilight/io/lights_json.hpp"
+
+#include <stdexcept>
+
+namespace hilight::painter {
+
+namespace {
+
+bool same_light(const Light& a, const Light& b) {
+  return a.type == b.type && a.position == b.position && a.intensity == b.intensity && a.direction == b.direction &&
+         a.cutoff_deg == b.cutoff_deg && a.falloff_deg == b.falloff_deg;
+}
+
+bool same_lights(const Lighting& a, const Lighting& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (!same_light(a[i], b[i])) return false;
+  return true;
+}
+
+} // namespace
+
+bool PaintState::operator==(const PaintState& other) const {
+  return psi == other.psi && weight == other.weight && same_lights(lights, other.lights) &&
+         same_lights(spot_hints, other.spot_hints);
+}
+
+Document::Document(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays)
+    : m_scene(std::move(scene)), m_rays(std::move(rays)) {
+  m_state.psi.assign(m_scene->positions.size(), Rgb(0.f));
+  m_state.weight.assign(m_scene->positions.size(), 0.f);
+}
+
+PaintState& Document::begin_edit() {
+  if (!m_editing) {
+    m_edit_start = m_state;
+    m_editing = true;
+  }
+  return m_state;
+}
+
+void Document::commit_edit(const std::string& label) {
+  if (!m_editing) return;
+  m_editing = false;
+  if (m_state == m_edit_start) return;
+  m_undo.push_back({std::move(m_edit_start), label});
+  m_edit_start = PaintState{};
+  m_redo.clear();
+  trim_history();
+  ++m_revision;
+}
+
+void Document::cancel_edit() {
+  if (!m_editing) return;
+  m_editing = false;
+  m_state = std::move(m_edit_start);
+  m_edit_start = PaintState{};
+  ++m_revision;
+}
+
+void Document::apply(const std::string& label, const std::function<void(PaintState&)>& edit) {
+  PaintState& state = begin_edit();
+  try {
+    edit(state);
+  } catch (...) {
+    cancel_edit();
+    throw;
+  }
+  commit_edit(label);
+}
+
+void Document::set_lights(const Lighting& lights, const std::string& label) {
+  apply(label, [&](PaintState& s) { s.lights = lights; });
+}
+
+std::string Document::undo_label() const { return m_undo.empty() ? std::string() : m_undo.back().label; }
+std::string Document::redo_label() const { return m_redo.empty() ? std::string() : m_redo.back().label; }
+
+void Document::undo() {
+  if (m_editing) commit_edit("edit");
+  if (m_undo.empty()) return;
+  Step step = std::move(m_undo.back());
+  m_undo.pop_back();
+  m_redo.push_back({std::move(m_state), step.label});
+  m_state = std::move(step.before);
+  ++m_revision;
+}
+
+void Document::redo() {
+  if (m_editing) commit_edit("edit");
+  if (m_redo.empty()) return;
+  Step step = std::move(m_redo.back());
+  m_redo.pop_back();
+  m_undo.push_back({std::move(m_state), step.label});
+  m_state = std::move(step.before);
+  ++m_revision;
+}
+
+void Document::set_history_limit(size_t steps) {
+  m_history_limit = std::max<size_t>(steps, 1);
+  trim_history();
+}
+
+void Document::trim_history() {
+  while (m_undo.size() > m_history_limit) m_undo.pop_front();
+}
+
+size_t Document::painted_count() const {
+  size_t n = 0;
+  for (float w : m_state.weight) n += w > 0.f;
+  return n;
+}
+
+namespace {
+
+TargetPoints painted_points(const Scene& scene, const PaintState& state) {
+  TargetPoints points;
+  for (size_t v = 0; v < state.weight.size(); ++v) {
+    if (!(state.weight[v] > 0.f)) continue;
+    points.positions.push_back(scene.positions[v]);
+    points.normals.push_back(scene.normals[v]);
+    points.values.push_back(state.psi[v]);
+    points.weights.push_back(state.weight[v]);
+  }
+  return points;
+}
+
+} // namespace
+
+Target Document::target() const {
+  TargetPoints points = painted_points(*m_scene, m_state);
+  if (points.positions.empty()) throw InputError("painted target", "nothing is painted (every weight is 0)");
+  return bind_target("painted target", points.positions, points.values, points.weights, *m_scene, *m_rays,
+                     points.normals);
+}
+
+void Document::save_target(const std::filesystem::path& path) const {
+  TargetPoints points = painted_points(*m_scene, m_state);
+  if (points.positions.empty()) throw InputError(path.string(), "nothing is painted: no target to save");
+  write_target_ply(path, points);
+}
+
+void Document::load_target(const std::filesystem::path& path) {
+  Target target = read_target(path, *m_scene, *m_rays);
+  const size_t n = m_scene->positions.size();
+  std::vector<Rgb> sum(n, Rgb(0.f));
+  std::vector<float> weight_sum(n, 0.f);
+  std::vector<uint32_t> hits(n, 0);
+  std::vector<Rgb> first(n);  // one point per vertex (a file the painter wrote) keeps its exact value
+  for (size_t i = 0; i < target.size(); ++i) {
+    const SurfaceBinding& b = target.binding[i];
+    const auto& tri = m_scene->triangles[b.triangle];
+    const float bary[3] = {1.f - b.u - b.v, b.u, b.v};
+    int nearest = bary[1] > bary[0] ? 1 : 0;
+    if (bary[2] > bary[nearest]) nearest = 2;
+    const uint32_t v = tri[size_t(nearest)];
+    if (!hits[v]) first[v] = target.value[i];
+    sum[v] += target.weight[i] * target.value[i];
+    weight_sum[v] += target.weight[i];
+    ++hits[v];
+  }
+  apply("load target " + path.filename().string(), [&](PaintState& s) {
+    for (size_t v = 0; v < n; ++v) {
+      s.psi[v] = hits[v] == 1 ? first[v] : weight_sum[v] > 0.f ? sum[v] / weight_sum[v] : Rgb(0.f);
+      s.weight[v] = hits[v] ? weight_sum[v] / float(hits[v]) : 0.f;
+    }
+  });
+}
+
+void Document::save_lights(const std::filesystem::path& path) const { write_lights_json(path, m_state.lights); }
+
+void Document::load_lights(const std::filesystem::path& path) {
+  Lighting lights = read_lights_json(path);
+  set_lights(lights, "load lights " + path.filename().string());
+}
+
+} // namespace hilight::painter

@@ -1,0 +1,110 @@
+#pragma once
+/// The painter's document: the scene, the painted target Ψ per scene vertex,
+/// the current lights and an undo/redo history of complete snapshots.
+///
+/// Every edit is one undoable step: call begin_edit(), change the state it
+/// returns (live: the UI shows it at once), then commit_edit(label) — or
+/// cancel_edit() to restore. apply() does all three for one-shot edits.
+#include "hilight/lighting.hpp"
+#include "hilight/ray_scene.hpp"
+#include "hilight/target.hpp"
+
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hilight::painter {
+
+/// Everything an undo step restores.
+struct PaintState {
+  std::vector<Rgb> psi;       ///< painted Ψ per scene vertex, linear RGB radiance
+  std::vector<float> weight;  ///< per scene vertex; 0 = "don't care"
+  Lighting lights;            ///< the current lights (point and spot)
+  Lighting spot_hints;        ///< spotlights the designer asked for (join every full solve)
+
+  bool operator==(const PaintState& other) const;
+};
+
+class Document {
+public:
+  Document(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays);
+
+  const Scene& scene() const { return *m_scene; }
+  const std::shared_ptr<const Scene>& scene_ptr() const { return m_scene; }
+  const RayScene& rays() const { return *m_rays; }
+  const std::shared_ptr<const RayScene>& rays_ptr() const { return m_rays; }
+
+  const PaintState& state() const { return m_state; }
+  /// Increases on every change of state() (edits, undo, redo): the UI
+  /// re-uploads colours or re-renders when it moves.
+  uint64_t revision() const { return m_revision; }
+
+  // --- Editing -----------------------------------------------------------
+  /// Starts an undoable edit (a no-op if one is open) and returns the state to
+  /// change. The edit is visible at once; bump() after live changes.
+  PaintState& begin_edit();
+  /// Marks a live change inside an open edit (raises revision()).
+  void bump() { ++m_revision; }
+  bool editing() const { return m_editing; }
+  /// Closes the open edit as one undo step named `label`. An edit that
+  /// changed nothing leaves no step. Clears the redo list.
+  void commit_edit(const std::string& label);
+  /// Closes the open edit and restores the state from before it.
+  void cancel_edit();
+  /// One-shot edit: begin_edit, edit(state), commit_edit(label).
+  void apply(const std::string& label, const std::function<void(PaintState&)>& edit);
+  /// Replaces the lights (a solve's result, a cut, a loaded file) as one step.
+  void set_lights(const Lighting& lights, const std::string& label);
+
+  // --- History -----------------------------------------------------------
+  bool can_undo() const { return !m_undo.empty(); }
+  bool can_redo() const { return !m_redo.empty(); }
+  /// Label of the step undo() / redo() would revert / re-apply ("" if none).
+  std::string undo_label() const;
+  std::string redo_label() const;
+  /// Restores the state before the last step (commits an open edit first).
+  void undo();
+  void redo();
+  /// Steps kept; the oldest are dropped beyond it (snapshots are whole states).
+  void set_history_limit(size_t steps);
+
+  // --- Target and files --------------------------------------------------
+  /// Number of vertices with weight > 0.
+  size_t painted_count() const;
+  /// Ψ of the painted vertices bound to the surface (bind_target with the
+  /// vertex positions and normals): what the solver takes. InputError when
+  /// nothing is painted.
+  Target target() const;
+  /// Writes the painted vertices as a target PLY `hilight solve --target` reads.
+  void save_target(const std::filesystem::path& path) const;
+  /// Reads a target PLY (any `hilight solve` accepts): each point goes to the
+  /// nearest vertex of the triangle it binds to; vertices that several points
+  /// reach get their weighted mean. Replaces the painted target (one step).
+  void load_target(const std::filesystem::path& path);
+  void save_lights(const std::filesystem::path& path) const;
+  /// Replaces the lights with a lights JSON file (one step).
+  void load_lights(const std::filesystem::path& path);
+
+private:
+  struct Step {
+    PaintState before;
+    std::string label;
+  };
+  void trim_history();
+
+  std::shared_ptr<const Scene> m_scene;
+  std::shared_ptr<const RayScene> m_rays;
+  PaintState m_state;
+  PaintState m_edit_start;
+  bool m_editing = false;
+  std::deque<Step> m_undo;
+  std::vector<Step> m_redo;  ///< each holds the state to restore on redo
+  size_t m_history_limit = 200;
+  uint64_t m_revision = 1;
+};
+
+} // namespace hilight::painter

@@ -1,0 +1,112 @@
+#pragma once
+/// Applies session actions to a Document and a SolveJob. World-space actions
+/// run here; what needs the window — camera moves, screen→world picking,
+/// screenshots, tool display — goes through hooks the UI provides (each may
+/// be empty: a headless replay then fails clearly on screen coordinates and
+/// ignores camera and screenshot actions).
+///
+/// The UI can drive its own buttons through apply() too, so what it records
+/// is exactly what a replay does.
+#include "core/brush.hpp"
+#include "core/document.hpp"
+#include "core/region_adjust.hpp"
+#include "core/scene_objects.hpp"
+#include "core/session.hpp"
+#include "core/shadow_candidates.hpp"
+#include "core/shadow_erase.hpp"
+#include "core/solve_job.hpp"
+#include "core/spot_region.hpp"
+
+#include <array>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace hilight::painter {
+
+/// The painter's tools (the `tool` action).
+enum class Tool { Brush, Eraser, Shadow, EraseShadow, Spot, Adjust };
+const char* to_string(Tool tool);
+/// InputError-free lookup: nullopt for an unknown name.
+std::optional<Tool> tool_from_string(const std::string& name);
+
+/// Where the camera is (spot_region without an explicit eye/direction).
+struct CameraPose {
+  Vec3 eye{0.f, 0.f, 1.f};
+  Vec3 direction{0.f, 0.f, -1.f};  ///< unit view direction
+};
+
+struct PlayerHooks {
+  /// Applies a `camera` action (orbit / pan / zoom / eye+target+fov).
+  std::function<void(const Action&)> camera;
+  /// The current camera (spot_region without "eye"/"direction").
+  std::function<CameraPose()> camera_pose;
+  /// Screen pixel (x right, y down) → surface point under it, nullopt on a miss.
+  std::function<std::optional<SurfacePick>(const std::array<float, 2>&)> pick_screen;
+  /// Writes a screenshot to the path.
+  std::function<void(const std::filesystem::path&)> screenshot;
+  /// Several occluder–light pairs shadow an erase_shadow click and the action
+  /// has no "pick": returns the index to erase (default: the first).
+  std::function<size_t(const std::vector<ShadowPair>&)> choose_shadow_pair;
+  /// A tool or brush change (the UI updates its panels); after the player's own state changed.
+  std::function<void(const Action&)> tool_changed;
+  /// One line per finished action or solve result, for a log panel / stderr.
+  std::function<void(const std::string&)> log;
+};
+
+struct PlayerOptions {
+  /// Replays wait for each solve (true); the interactive UI starts them and
+  /// calls poll() every frame (false).
+  bool wait_for_solves = true;
+  /// Relative paths of save/load actions are taken from here.
+  std::filesystem::path base_dir = ".";
+  /// Name used in error messages ("<source>: action N: ...").
+  std::string source = "session";
+};
+
+class SessionPlayer {
+public:
+  SessionPlayer(Document& document, SolveJob& job, PlayerHooks hooks, PlayerOptions options);
+
+  /// Validates every action, then applies them in order (waiting for solves
+  /// when wait_for_solves). Errors: InputError("<source>: action N: ...").
+  void play(const Session& session);
+  /// Applies one action (`index` only names it in errors).
+  void apply(const Action& action, size_t index = 0);
+  /// Commits a finished background solve to the document (one undo step
+  /// labelled with the job kind); returns it, or nullopt if none is ready.
+  /// Failures come back as a JobResult with outcome Failed/Cancelled and
+  /// leave the document as it was.
+  std::optional<JobResult> poll();
+
+  Tool tool() const { return m_tool; }
+  void set_tool(Tool tool) { m_tool = tool; }
+  const BrushSettings& brush() const { return m_brush; }
+  void set_brush(const BrushSettings& brush) { m_brush = brush; }
+  const SceneObjects& objects() const { return m_objects; }
+  /// Estimate of the last `shadow` action (for drawing candidates).
+  const std::optional<ShadowEstimate>& last_shadow_estimate() const { return m_last_estimate; }
+  /// Pairs found by the last `erase_shadow` action.
+  const std::vector<ShadowPair>& last_shadow_pairs() const { return m_last_pairs; }
+
+private:
+  std::vector<Vec3> world_points(const Action& action, const std::string& where) const;
+  SurfacePick one_point(const nlohmann::json& value, bool screen, const std::string& where) const;
+  /// Waits for the running job and commits its result (InputError if it failed).
+  void finish_solve(const std::string& where);
+  void commit(const JobResult& result);
+  void log(const std::string& line) const;
+
+  Document& m_document;
+  SolveJob& m_job;
+  PlayerHooks m_hooks;
+  PlayerOptions m_options;
+  SceneObjects m_objects;
+  Tool m_tool = Tool::Brush;
+  BrushSettings m_brush;
+  std::optional<ShadowEstimate> m_last_estimate;
+  std::vector<ShadowPair> m_last_pairs;
+};
+
+} // namespace hilight::painter

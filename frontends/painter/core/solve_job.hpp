@@ -1,0 +1,123 @@
+#pragma once
+/// Runs the shared pipeline (hilight::Solver, the same object `hilight solve`
+/// drives) in a background thread: solve, fine-tune and add lights, with
+/// progress text, a cancel request and a result the UI polls. The Solver and
+/// its renderers live as long as the job, so the scene's BVH and light cache
+/// are built once; only a change of spot hints (a Solver setting) makes a
+/// new Solver (the light cache then comes back from `cache_dir` on disk when set).
+///
+/// Renderers are made as the CLI makes them: the reference as configured,
+/// and for Embree a fast twin with `bounce_direct=vertex` for φ.
+///
+/// Cancelling: the Solver reports each stage (sampling, cache, seeding,
+/// hierarchy, each cut's refinement); the job throws SolveCancelled from that
+/// report, so a cancel takes effect at the next stage boundary.
+#include "hilight/pipeline/solver.hpp"
+#include "hilight/registry.hpp"
+
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace hilight::painter {
+
+/// Thrown inside the worker when a cancel was requested.
+class SolveCancelled : public std::runtime_error {
+public:
+  SolveCancelled() : std::runtime_error("solve cancelled") {}
+};
+
+struct SolveJobOptions {
+  std::string renderer = "embree";
+  std::vector<std::string> renderer_settings;   ///< "key=value", as `--set`
+  std::string optimizer = "varpro";
+  std::vector<std::string> optimizer_settings;  ///< "key=value", as `--opt`
+  std::string sampler = "importance";
+  SolveSettings solve;                          ///< spot_hints are ignored: pass them per solve
+};
+
+enum class JobKind { Solve, FineTune, AddLights };
+const char* to_string(JobKind kind);
+
+enum class JobOutcome { Done, Failed, Cancelled };
+
+struct JobResult {
+  JobKind kind = JobKind::Solve;
+  JobOutcome outcome = JobOutcome::Done;
+  Lighting lights;      ///< the result (Done only)
+  SolveReport report;   ///< (Done only)
+  std::string error;    ///< one line (Failed only)
+};
+
+class SolveJob {
+public:
+  /// Creates the renderers, sampler and optimizer from `registry` (InputError
+  /// for unknown or unavailable ones) and binds them to `scene`.
+  SolveJob(const Registry& registry, std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays,
+           SolveJobOptions options);
+  /// Cancels a running job and waits for it.
+  ~SolveJob();
+  SolveJob(const SolveJob&) = delete;
+  SolveJob& operator=(const SolveJob&) = delete;
+
+  /// Full solve of `target`; `spot_hints` are spotlights the designer asked for.
+  void start_solve(Target target, Lighting spot_hints = {});
+  /// Re-optimizes `lights` (the count never changes).
+  void start_fine_tune(Target target, Lighting lights);
+  /// Appends lights for what `lights` leave unlit; `lights` come back unchanged.
+  void start_add_lights(Target target, Lighting lights);
+
+  /// True from a start_* until the result is ready.
+  bool busy() const { return m_busy.load(); }
+  /// The stage the running job is in ("" when idle).
+  std::string progress() const;
+  /// Asks the running job to stop at its next stage (no-op when idle).
+  void cancel() { m_cancel = true; }
+  /// The finished job's result, once (nullopt while running or when taken).
+  std::optional<JobResult> take_result();
+  /// Blocks until the running job (if any) finishes, then takes its result;
+  /// nullopt if there was none to take.
+  std::optional<JobResult> wait();
+
+  /// The light-count control: the last solve's (or add's) hierarchy cut with
+  /// k point lights, no new solve. std::logic_error while busy or when no
+  /// solve has finished since the last Solver was made.
+  Lighting cut_lights(size_t k) const;
+  /// Number of cuts available to cut_lights (0 if none).
+  size_t cut_count() const;
+
+  /// The reference renderer (the user's settings), for the painter's own
+  /// evaluations (region adjustment, shadow erase, display). Only while not
+  /// busy(): the worker uses it.
+  Renderer& renderer();
+
+private:
+  void start(JobKind kind, Target target, Lighting lights, Lighting spot_hints);
+  Solver& solver_for(const Lighting& spot_hints);
+
+  std::shared_ptr<const Scene> m_scene;
+  std::shared_ptr<const RayScene> m_rays;
+  SolveJobOptions m_options;
+  std::unique_ptr<Renderer> m_fast, m_reference;
+  std::unique_ptr<Sampler> m_sampler;
+  std::unique_ptr<Optimizer> m_optimizer;
+  std::unique_ptr<Solver> m_solver;
+  Lighting m_solver_hints;
+  Lighting m_cut_base;  ///< lights an add kept (cut_lights puts them first)
+  bool m_cuts_valid = false;
+
+  std::thread m_worker;
+  std::atomic<bool> m_busy{false}, m_cancel{false};
+  mutable std::mutex m_mutex;
+  std::condition_variable m_done;
+  std::string m_progress;
+  std::optional<JobResult> m_result;
+};
+
+} // namespace hilight::painter
