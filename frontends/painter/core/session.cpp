@@ -167,7 +167,7 @@ void validate_action(const Action& action, const std::string& source, size_t ind
   auto it = specs().find(action.type);
   if (it == specs().end()) fail("unknown type '" + action.type + "'");
   const Spec& spec = it->second;
-  if (!action.params.is_object()) fail(action.type + ": parameters must be an object");
+  if (!action.params.is_object() && !action.params.is_null()) fail(action.type + ": parameters must be an object");
   for (const auto& [key, value] : action.params.items()) {
     const Field* field = nullptr;
     for (const Field& f : spec.fields)
@@ -188,7 +188,7 @@ void validate_action(const Action& action, const std::string& source, size_t ind
     for (const char* name : group) given += action.params.contains(name);
     if (given != 0 && given != group.size()) fail(action.type + ": give " + join(group) + " together");
   }
-  if (spec.needs_some && action.params.empty()) fail(action.type + ": needs at least one setting");
+  if (spec.needs_some && (action.params.is_null() || action.params.empty())) fail(action.type + ": needs at least one setting");
   if (action.type == "tool") {
     static const std::vector<std::string> tools = {"brush", "eraser", "shadow", "erase_shadow", "spot", "adjust"};
     const std::string name = action.params["tool"].get<std::string>();

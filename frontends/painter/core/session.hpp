@@ -19,7 +19,7 @@ namespace hilight::painter {
 
 struct Action {
   std::string type;
-  nlohmann::json params = nlohmann::json::object();  ///< the action's other fields
+  nlohmann::json params = nlohmann::json::object();  ///< the action's other fields (null counts as {})
 
   bool operator==(const Action&) const = default;
 };

@@ -1,0 +1,175 @@
+// Session scripts: parsing (good and bad input, one-line errors that name the
+// action), serializing (what the painter records reads back the same), and
+// headless replays of world-space scripts through Document + SolveJob.
+#include "core/session.hpp"
+#include "core/session_player.hpp"
+#include "hilight/error.hpp"
+#include "hilight/io/lights_json.hpp"
+#include "hilight/surface_points.hpp"
+#include "painter_fixtures.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace hilight;
+using namespace hilight::painter;
+using Catch::Matchers::Contains;
+
+namespace {
+
+std::string parse_error(const std::string& text) {
+  try {
+    parse_session(text, "s.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+} // namespace
+
+TEST_CASE("painter: session scripts parse, serialize and reject bad input", "[painter]") {
+  const std::string text = R"({"actions": [
+    {"type": "camera", "orbit": [30, -10]},
+    {"type": "camera", "eye": [1, 2, 3], "target": [0, 0, 0], "fov": 45},
+    {"type": "tool", "tool": "eraser"},
+    {"type": "brush", "radius": 0.3, "colour": [1, 0.9, 0.8], "brightness": 2, "hardness": 0.5},
+    {"type": "stroke", "world": [[0, 0, 0], [1, 0, 0]]},
+    {"type": "stroke", "screen": [[100, 200]], "mode": "erase"},
+    {"type": "shadow", "pairs": [{"occluder": [0, 0.5, 0], "world": [[1, 0, 1]]}]},
+    {"type": "erase_shadow", "world": [1, 0, 1], "pick": 0},
+    {"type": "spot_region", "world": [[0, 0, 0]], "eye": [0, 3, 3], "direction": [0, -1, -1]},
+    {"type": "adjust_region", "world": [[0, 0, 0]], "multiplier": 1.5},
+    {"type": "solve"}, {"type": "fine_tune"}, {"type": "add_lights"}, {"type": "cut", "k": 2},
+    {"type": "undo"}, {"type": "redo"}, {"type": "save_target", "path": "t.ply"},
+    {"type": "save_lights", "path": "l.json"}, {"type": "screenshot", "path": "s.png"}]})";
+  Session s = parse_session(text, "s.json");
+  REQUIRE(s.actions.size() == 19);
+  CHECK(s.actions[3].params["radius"] == 0.3);
+  CHECK(parse_session(session_to_json(s), "again") == s);
+  CHECK(parse_session(R"({"actions": []})", "empty").actions.empty());
+
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "solve"}, {"type": "foo"}]})"),
+             Contains("s.json: action 1: unknown type 'foo'"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "stroke"}]})"), Contains("action 0: stroke: needs exactly one of world, screen"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "stroke", "world": [[0, 0]]}]})"), Contains("'world' must be a non-empty list of [x, y, z]"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "brush", "hardness": 2}]})"), Contains("'hardness' must be a number in [0, 1]"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "cut", "k": 0}]})"), Contains("'k' must be an integer ≥ 1"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "cut"}]})"), Contains("cut: missing 'k'"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "solve", "fast": true}]})"), Contains("solve: unknown field 'fast'"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "tool", "tool": "hammer"}]})"), Contains("unknown tool 'hammer'"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "camera", "eye": [0, 0, 1]}]})"), Contains("give eye, target together"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "shadow", "pairs": [{"world": [[0, 0, 0]]}]}]})"),
+             Contains("pair 0: exactly one of occluder, occluder_screen"));
+  CHECK_THAT(parse_error(R"({"actions": [3]})"), Contains("action 0: must be an object"));
+  CHECK_THAT(parse_error(R"({"actions": [{"k": 3}]})"), Contains("action 0: missing \"type\""));
+  CHECK_THAT(parse_error(R"({"steps": []})"), Contains("s.json: a session is a JSON object"));
+  CHECK_THAT(parse_error(R"({"actions": [)"), Contains("s.json: not valid JSON"));
+  CHECK(test::line_count(parse_error(R"({"actions": [{"type": "foo"}]})")) == 1);
+
+  SessionRecorder recorder;
+  recorder.record({"brush", {{"radius", 0.5}}});
+  CHECK_THROWS_AS(recorder.record({"nonsense", {}}), std::logic_error);
+  const auto dir = test::output_dir("painter_session_parse");
+  recorder.save(dir / "session.json");
+  CHECK(read_session(dir / "session.json") == recorder.session());
+  CHECK_THROWS_AS(read_session(dir / "missing.json"), InputError);
+}
+
+TEST_CASE("painter: a replayed script paints a bright patch, solves and lights it", "[painter]") {
+  auto world = painter_test::make_world(builders::box_room({4.f, 3.f, 4.f}), 0.4f);
+  auto doc = world.document();
+  SolveJob job(test::registry(), world.scene, world.rays, painter_test::quick_options());
+  const auto dir = test::output_dir("painter_session_replay");
+  std::vector<std::string> log;
+  PlayerOptions options;
+  options.base_dir = dir;
+  options.source = "replay.json";
+  PlayerHooks hooks;
+  hooks.log = [&](const std::string& line) { log.push_back(line); };
+  SessionPlayer player(*doc, job, hooks, options);
+
+  // A dim floor with a bright patch near one corner.
+  std::string dim_floor;
+  for (float x = 0.25f; x < 4.f; x += 0.5f)
+    for (float z = 0.25f; z < 4.f; z += 0.5f)
+      dim_floor += std::string(dim_floor.empty() ? "" : ", ") + "[" + std::to_string(x) + ", 0, " + std::to_string(z) + "]";
+  const std::string script = R"({"actions": [
+    {"type": "brush", "radius": 0.45, "colour": [1, 1, 1], "brightness": 0.02, "hardness": 1},
+    {"type": "stroke", "world": [)" + dim_floor + R"(]},
+    {"type": "brush", "radius": 0.5, "brightness": 0.6, "hardness": 0.8},
+    {"type": "stroke", "world": [[1, 0, 1], [1.2, 0, 1.1]]},
+    {"type": "camera", "orbit": [10, 0]},
+    {"type": "screenshot", "path": "ignored.png"},
+    {"type": "solve"},
+    {"type": "save_target", "path": "target.ply"},
+    {"type": "save_lights", "path": "lights.json"}]})";
+  player.play(parse_session(script, "replay.json"));
+
+  const Lighting lights = doc->state().lights;
+  REQUIRE(!lights.empty());
+  CHECK(read_lights_json(dir / "lights.json").size() == lights.size());
+  CHECK(read_target(dir / "target.ply", *world.scene, *world.rays).size() == doc->painted_count());
+  auto renderer = test::make_renderer("embree", world.scene, {"bounce_samples=16"});
+  SurfacePoints probes;
+  probes.positions = {{1.1f, 0.f, 1.05f}, {3.5f, 0.f, 3.5f}};
+  probes.normals = {{0.f, 1.f, 0.f}, {0.f, 1.f, 0.f}};
+  probes.albedo = {Rgb(0.8f), Rgb(0.8f)};
+  std::vector<Rgb> lit = renderer->illuminate(probes, lights);
+  INFO("patch " << lit[0].g << ", far corner " << lit[1].g);
+  CHECK(lit[0].g > 0.3f);
+  CHECK(lit[0].g > 4.f * lit[1].g);
+  CHECK(doc->undo_label().rfind("solve", 0) == 0);
+  REQUIRE(!log.empty());
+
+  // Count control, undo and redo through the player.
+  player.apply({"cut", {{"k", 1}}}, 0);
+  CHECK(doc->state().lights.size() == 1);
+  player.apply({"undo", {}}, 1);
+  REQUIRE(doc->state().lights.size() == lights.size());
+  for (size_t j = 0; j < lights.size(); ++j) CHECK(doc->state().lights[j].position == lights[j].position);
+  player.apply({"redo", {}}, 2);
+  CHECK(doc->state().lights.size() == 1);
+
+  // Screen coordinates without a window: a clear error naming the action.
+  try {
+    player.apply({"stroke", {{"screen", {{10, 10}}}}}, 7);
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK_THAT(std::string(e.what()), Contains("replay.json: action 7 (stroke): screen coordinates need the painter's window"));
+  }
+}
+
+TEST_CASE("painter: replayed shadow, spotlight, adjust and erase-shadow actions", "[painter]") {
+  auto world = painter_test::floor_with_boxes({{{-0.5f, 0.f, -0.5f}, {0.5f, 1.f, 0.5f}}});
+  auto doc = world.document();
+  SolveJob job(test::registry(), world.scene, world.rays, painter_test::quick_options());
+  SessionPlayer player(*doc, job, {}, {});
+  // Shadow stroked on the floor behind the box, away from +x: the light is on the +x side.
+  player.apply({"shadow", {{"pairs", {{{"occluder", {0.5, 0.5, 0.0}},
+                                        {"world", {{-1.0, 0.0, 0.0}, {-1.4, 0.0, 0.2}, {-1.2, 0.0, -0.2}, {-0.8, 0.0, 0.1}}}}}}}},
+               0);
+  REQUIRE(doc->state().lights.size() == 1);
+  const Light estimated = doc->state().lights[0];
+  CHECK(estimated.position.x > 0.5f);
+  REQUIRE(player.last_shadow_estimate());
+
+  // The estimated light now casts a shadow there: clicking it finds the box and that light.
+  player.apply({"erase_shadow", {{"world", {-1.0, 0.0, 0.0}}}}, 1);
+  REQUIRE(player.last_shadow_pairs().size() == 1);
+  CHECK(player.last_shadow_pairs()[0].occluder == 1);
+  CHECK(doc->undo_label() == "erase shadow");
+
+  player.apply({"spot_region", {{"world", {{2.0, 0.0, 2.0}, {2.5, 0.0, 2.4}}}, {"eye", {2.0, 2.5, 0.0}}, {"direction", {0.1, -1.0, 0.8}}}}, 2);
+  REQUIRE(doc->state().lights.size() == 2);
+  CHECK(doc->state().lights[1].type == LightType::Spot);
+  CHECK(doc->state().spot_hints.size() == 1);
+
+  const Rgb before = doc->state().lights[0].intensity;
+  player.apply({"adjust_region", {{"world", {{3.0, 0.0, -2.0}}}, {"multiplier", 2.0}, {"radius", 0.5}}}, 3);
+  CHECK(doc->state().lights[0].intensity == 2.f * before);
+
+  // Four undoable steps, all undone back to the empty document.
+  for (int i = 0; i < 4; ++i) doc->undo();
+  CHECK(doc->state().lights.empty());
+  CHECK(doc->painted_count() == 0);
+}
