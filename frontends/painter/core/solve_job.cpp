@@ -36,14 +36,14 @@ bool same_hints(const Lighting& a, const Lighting& b) {
 
 SolveJob::SolveJob(const Registry& registry, std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays,
                    SolveJobOptions options)
-    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_options(std::move(options)) {
+    : m_registry(registry), m_scene(std::move(scene)), m_rays(std::move(rays)), m_options(std::move(options)) {
   // As `hilight solve` does: the renderer's sample streams follow the solve's
   // seed, the reference is the renderer as configured, and for Embree the
   // solve's own φ uses the fast bounce (direct light interpolated at vertices).
   std::vector<std::string> settings = m_options.renderer_settings;
   if (!has_setting(settings, "seed")) settings.push_back("seed=" + std::to_string(m_options.solve.seed & 0x7FFFFFFFFFFFFFFFull));
-  m_reference = registry.create_renderer(m_options.renderer, Properties::from_assignments(settings));
-  m_reference->set_scene(m_scene);
+  m_reference_settings = settings;
+  m_reference = make_renderer();
   if (m_options.renderer == "embree" && !has_setting(settings, "bounce_direct")) settings.push_back("bounce_direct=vertex");
   m_fast = registry.create_renderer(m_options.renderer, Properties::from_assignments(settings));
   m_fast->set_scene(m_scene);
@@ -157,6 +157,12 @@ Lighting SolveJob::cut_lights(size_t k) const {
 size_t SolveJob::cut_count() const {
   if (m_busy || !m_cuts_valid || !m_solver) return 0;
   return m_solver->cut_count();
+}
+
+std::unique_ptr<Renderer> SolveJob::make_renderer() const {
+  auto renderer = m_registry.create_renderer(m_options.renderer, Properties::from_assignments(m_reference_settings));
+  renderer->set_scene(m_scene);
+  return renderer;
 }
 
 Renderer& SolveJob::renderer() {

@@ -96,14 +96,20 @@ public:
   /// evaluations (region adjustment, shadow erase, display). Only while not
   /// busy(): the worker uses it.
   Renderer& renderer();
+  /// A new renderer configured like the reference and bound to the scene, for
+  /// the window's own evaluations while a job runs (each thread its own).
+  std::unique_ptr<Renderer> make_renderer() const;
+  const SolveJobOptions& options() const { return m_options; }
 
 private:
   void start(JobKind kind, Target target, Lighting lights, Lighting spot_hints);
   Solver& solver_for(const Lighting& spot_hints);
 
+  const Registry& m_registry;
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
   SolveJobOptions m_options;
+  std::vector<std::string> m_reference_settings;
   std::unique_ptr<Renderer> m_fast, m_reference;
   std::unique_ptr<Sampler> m_sampler;
   std::unique_ptr<Optimizer> m_optimizer;
