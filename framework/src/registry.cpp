@@ -13,10 +13,11 @@ namespace hilight {
 
 namespace fs = std::filesystem;
 
-void PluginRegistrar::renderer(RendererFactory create, ProbeFunction probe) {
+void PluginRegistrar::renderer(RendererFactory create, ProbeFunction probe, ProbeFunction detail) {
   if (m_record.kind != "renderer") throw std::logic_error("module " + m_record.name + " registers a renderer but says it is a " + m_record.kind);
   m_record.create_renderer = std::move(create);
   m_record.probe = std::move(probe);
+  m_record.detail = std::move(detail);
 }
 
 void PluginRegistrar::frontend(FrontendFactory create) {

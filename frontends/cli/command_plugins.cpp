@@ -21,7 +21,7 @@ int run_plugins(const std::vector<std::string>& args, Registry& registry) {
     std::string status;
     if (!m->loaded) status = "not loaded: " + m->problem;
     else if (std::string why = m->probe ? m->probe() : std::string(); !why.empty()) status = "unavailable: " + why;
-    else status = "ok - " + m->description;
+    else status = "ok - " + m->description + (m->detail ? " (" + m->detail() + ")" : std::string());
     std::printf("%-10s %-12s %-8s %s\n", m->kind.empty() ? "?" : m->kind.c_str(), m->name.c_str(),
                 m->version.empty() ? "-" : m->version.c_str(), status.c_str());
     if (verbose) std::printf("           %s\n", m->path.c_str());

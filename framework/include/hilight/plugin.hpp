@@ -4,7 +4,7 @@
 /// build_key *before* any C++ type crosses the module boundary.
 #include <cstdint>
 
-#define HILIGHT_ABI_VERSION 1u
+#define HILIGHT_ABI_VERSION 2u
 
 #define HILIGHT_STRINGIFY2(x) #x
 #define HILIGHT_STRINGIFY(x) HILIGHT_STRINGIFY2(x)

@@ -30,6 +30,7 @@ struct ModuleRecord {
 
   RendererFactory create_renderer;
   ProbeFunction probe;
+  ProbeFunction detail;  ///< extra status text when available (may be empty)
   FrontendFactory create_frontend;
   OptimizerFactory create_optimizer;
   SamplerFactory create_sampler;
@@ -39,7 +40,8 @@ struct ModuleRecord {
 class PluginRegistrar {
 public:
   explicit PluginRegistrar(ModuleRecord& record) : m_record(record) {}
-  void renderer(RendererFactory create, ProbeFunction probe = {});
+  /// `detail` (optional) says more for `hilight plugins`, e.g. which device a renderer uses.
+  void renderer(RendererFactory create, ProbeFunction probe = {}, ProbeFunction detail = {});
   void frontend(FrontendFactory create);
   void optimizer(OptimizerFactory create);
   void sampler(SamplerFactory create);

@@ -1,0 +1,498 @@
+#include "ism_renderer.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/scene.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <random>
+#include <stdexcept>
+#include <tbb/parallel_for.h>
+
+namespace hilight::ism {
+
+namespace {
+
+// SPIR-V compiled from shaders/ by glslc at build time.
+const uint32_t kDistanceVert[] =
+#include "distance.vert.inc"
+    ;
+const uint32_t kDistanceFrag[] =
+#include "distance.frag.inc"
+    ;
+const uint32_t kDirect[] =
+#include "direct.comp.inc"
+    ;
+const uint32_t kVplGenerate[] =
+#include "vpl_generate.comp.inc"
+    ;
+const uint32_t kIsmSplat[] =
+#include "ism_splat.comp.inc"
+    ;
+const uint32_t kIsmPull[] =
+#include "ism_pull.comp.inc"
+    ;
+const uint32_t kIsmPush[] =
+#include "ism_push.comp.inc"
+    ;
+const uint32_t kGather[] =
+#include "gather.comp.inc"
+    ;
+
+struct GpuLight {
+  float position[4];
+  float direction[4];
+  float cone[4];  // cos cutoff, cos of the full-intensity core, spot?, unused
+};
+
+GpuLight to_gpu(const Light& light) {
+  GpuLight g{};
+  for (int k = 0; k < 3; ++k) {
+    g.position[k] = light.position[k];
+    g.direction[k] = light.direction[k];
+  }
+  if (light.type == LightType::Spot) {
+    const float to_radians = float(kPi / 180.0);
+    g.cone[0] = std::cos(light.cutoff_deg * to_radians);
+    g.cone[1] = std::cos(std::max(0.f, light.cutoff_deg - light.falloff_deg) * to_radians);
+    g.cone[2] = 1.f;
+  }
+  return g;
+}
+
+struct DirectParams {
+  uint32_t points, lights, size;
+  float bias_texels, bias_const;
+};
+struct VplParams {
+  uint32_t lights, vpls, size, seed;
+  float lift;
+};
+struct SplatParams {
+  uint32_t vpls, per_vpl, pool, size;
+};
+struct PullParams {
+  uint32_t vpls, size, source, target, from_ism;
+};
+struct PushParams {
+  uint32_t vpls, size, source, target;
+};
+struct GatherParams {
+  uint32_t points, lights, vpls, size;
+  float min_dist2, bias_rel, bias_const;
+};
+
+/// Offsets (in floats) of each level of a VPL's pull-push pyramid, finest first.
+std::vector<uint32_t> pyramid_offsets(uint32_t vpls, uint32_t size) {
+  std::vector<uint32_t> offsets;
+  uint32_t offset = 0;
+  for (uint32_t s = size; s >= 1; s /= 2) {
+    offsets.push_back(offset);
+    offset += vpls * s * s;
+  }
+  offsets.push_back(offset);  // total
+  return offsets;
+}
+
+template <class T, size_t N> std::span<const uint32_t> spirv(const T (&code)[N]) { return {code, N}; }
+
+} // namespace
+
+struct IsmRenderer::PointBuffers {
+  uint64_t key = 0;
+  size_t count = 0;
+  Buffer positions, normals, albedo;
+};
+
+struct IsmRenderer::Workspace {
+  uint32_t lights = 0;
+  size_t points = 0;
+  Buffer light_data, distances, triangles, vpls, ism, pyramid, result;
+};
+
+struct IsmRenderer::Kernels {
+  ComputeKernel direct, vpl, splat, pull, push, gather;
+  Kernels(VulkanContext& c, uint32_t w)
+      : direct(c, spirv(kDirect), 6, sizeof(DirectParams), w), vpl(c, spirv(kVplGenerate), 6, sizeof(VplParams), w),
+        splat(c, spirv(kIsmSplat), 3, sizeof(SplatParams), w), pull(c, spirv(kIsmPull), 2, sizeof(PullParams), w),
+        push(c, spirv(kIsmPush), 1, sizeof(PushParams), w), gather(c, spirv(kGather), 6, sizeof(GatherParams), w) {}
+};
+
+/// GPU timestamps between the stages of a submission, summed per stage.
+class IsmRenderer::StageClock {
+public:
+  explicit StageClock(VulkanContext& context) : m_context(context) {
+    m_supported = context.properties().limits.timestampComputeAndGraphics;
+    m_period_ns = context.properties().limits.timestampPeriod;
+    if (!m_supported) return;
+    VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    info.queryCount = kMaxMarks;
+    check(vkCreateQueryPool(context.device(), &info, nullptr, &m_pool), "vkCreateQueryPool");
+  }
+  ~StageClock() {
+    if (m_pool) vkDestroyQueryPool(m_context.device(), m_pool, nullptr);
+  }
+  void start(VkCommandBuffer cmd) {
+    m_names.clear();
+    if (!m_supported) return;
+    vkCmdResetQueryPool(cmd, m_pool, 0, kMaxMarks);
+    mark(cmd, "");
+  }
+  /// The time since the previous mark is booked to `stage`.
+  void mark(VkCommandBuffer cmd, const char* stage) {
+    if (!m_supported || m_names.size() >= kMaxMarks) return;
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, m_pool, uint32_t(m_names.size()));
+    m_names.emplace_back(stage);
+  }
+  void collect(std::map<std::string, double>& seconds) {
+    if (!m_supported || m_names.size() < 2) return;
+    std::vector<uint64_t> stamps(m_names.size());
+    check(vkGetQueryPoolResults(m_context.device(), m_pool, 0, uint32_t(stamps.size()), stamps.size() * sizeof(uint64_t),
+                                stamps.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+          "vkGetQueryPoolResults");
+    for (size_t k = 1; k < stamps.size(); ++k) seconds[m_names[k]] += double(stamps[k] - stamps[k - 1]) * m_period_ns * 1e-9;
+  }
+
+private:
+  static constexpr uint32_t kMaxMarks = 16;
+  VulkanContext& m_context;
+  VkQueryPool m_pool = VK_NULL_HANDLE;
+  bool m_supported = false;
+  double m_period_ns = 1;
+  std::vector<std::string> m_names;
+};
+
+IsmRenderer::IsmRenderer(const IsmSettings& settings) : m_settings(settings) {
+  m_context = std::make_unique<VulkanContext>(settings.device);
+  m_context->set_memory_budget(VkDeviceSize(settings.memory_mb) << 20);
+  VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  info.commandPool = m_context->command_pool();
+  info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  info.commandBufferCount = 1;
+  check(vkAllocateCommandBuffers(m_context->device(), &info, &m_cmd), "vkAllocateCommandBuffers");
+  VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  check(vkCreateFence(m_context->device(), &fence, nullptr, &m_fence), "vkCreateFence");
+  m_clock = std::make_unique<StageClock>(*m_context);
+}
+
+IsmRenderer::~IsmRenderer() {
+  vkDeviceWaitIdle(m_context->device());
+  // Everything that holds Vulkan objects goes before the device does.
+  m_clock.reset();
+  m_workspace.reset();
+  m_points.reset();
+  m_kernels.reset();
+  m_raster.reset();
+  m_corners.reset();
+  m_triangle_albedo.reset();
+  m_pool.reset();
+  if (m_fence) vkDestroyFence(m_context->device(), m_fence, nullptr);
+  if (m_cmd) vkFreeCommandBuffers(m_context->device(), m_context->command_pool(), 1, &m_cmd);
+}
+
+void IsmRenderer::set_scene(std::shared_ptr<const Scene> scene) {
+  std::lock_guard lock(m_mutex);
+  if (m_scene) throw std::logic_error("IsmRenderer: set_scene may be called once");
+  const Scene& s = *scene;
+  const size_t triangles = s.triangles.size();
+  if (triangles == 0) throw InputError(s.source, "the scene has no triangles");
+  if (triangles > (size_t(1) << 30) / 3) throw InputError(s.source, "too many triangles for the ism-vulkan renderer");
+  m_rays = std::make_unique<RayScene>(s);
+  VulkanContext& ctx = *m_context;
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  m_corners = std::make_unique<Buffer>(ctx, triangles * 9 * sizeof(float), storage | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true,
+                                       "the scene's triangles");
+  m_triangle_albedo = std::make_unique<Buffer>(ctx, triangles * 4 * sizeof(float), storage, true, "the scene's albedo");
+  float* corners = m_corners->data<float>();
+  float* albedo = m_triangle_albedo->data<float>();
+  std::vector<double> cumulative_area(triangles);
+  double area = 0;
+  for (size_t t = 0; t < triangles; ++t) {
+    for (int k = 0; k < 3; ++k)
+      for (int a = 0; a < 3; ++a) corners[t * 9 + k * 3 + a] = s.positions[s.triangles[t][k]][a];
+    Rgb rho = s.triangle_albedo(t);
+    for (int a = 0; a < 3; ++a) albedo[t * 4 + a] = rho[a];
+    albedo[t * 4 + 3] = 0.f;
+    const Vec3 &p0 = s.positions[s.triangles[t][0]], &p1 = s.positions[s.triangles[t][1]], &p2 = s.positions[s.triangles[t][2]];
+    area += 0.5 * double(glm::length(glm::cross(p1 - p0, p2 - p0)));
+    cumulative_area[t] = area;
+  }
+  if (!(area > 0)) throw InputError(s.source, "the scene's triangles have no area");
+  // The ISMs' point samples: uniform over the surface area, in random order
+  // (each VPL splats a run of them, i.e. its own random subset).
+  const uint32_t pool_size = m_settings.ism_points;
+  m_pool = std::make_unique<Buffer>(ctx, size_t(pool_size) * 4 * sizeof(float), storage, true, "the ISM point samples");
+  float* pool = m_pool->data<float>();
+  std::mt19937_64 rng(m_settings.seed * 0x9E3779B97F4A7C15ull + 17);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (uint32_t k = 0; k < pool_size; ++k) {
+    size_t t = size_t(std::lower_bound(cumulative_area.begin(), cumulative_area.end(), uniform(rng) * area) - cumulative_area.begin());
+    t = std::min(t, triangles - 1);
+    float r1 = float(std::sqrt(uniform(rng))), r2 = float(uniform(rng));
+    const Vec3 &p0 = s.positions[s.triangles[t][0]], &p1 = s.positions[s.triangles[t][1]], &p2 = s.positions[s.triangles[t][2]];
+    Vec3 q = (1.f - r1) * p0 + r1 * (1.f - r2) * p1 + r1 * r2 * p2;
+    pool[4 * k] = q.x;
+    pool[4 * k + 1] = q.y;
+    pool[4 * k + 2] = q.z;
+    pool[4 * k + 3] = 1.f;
+  }
+  m_raster = std::make_unique<DistanceRaster>(ctx, *m_corners, uint32_t(triangles), spirv(kDistanceVert), spirv(kDistanceFrag));
+  m_kernels = std::make_unique<Kernels>(ctx, m_settings.workgroup);
+  m_scene = std::move(scene);
+}
+
+const IsmRenderer::PointBuffers& IsmRenderer::upload_points(const SurfacePoints& points) {
+  const uint64_t key = points.content_key();
+  if (m_points && m_points->key == key && m_points->count == points.size()) return *m_points;
+  m_points.reset();
+  auto pb = std::make_unique<PointBuffers>();
+  const size_t n = points.size();
+  const VkDeviceSize bytes = n * 4 * sizeof(float);
+  pb->positions = Buffer(*m_context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the surface points");
+  pb->normals = Buffer(*m_context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the surface normals");
+  pb->albedo = Buffer(*m_context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the surface albedo");
+  float *pos = pb->positions.data<float>(), *nor = pb->normals.data<float>(), *alb = pb->albedo.data<float>();
+  // Shaded a hair inside their triangle, as every renderer does (rendering model).
+  tbb::parallel_for(size_t(0), n, [&](size_t i) {
+    Vec3 p = shading_point(*m_rays, points.positions[i], points.normals[i]);
+    for (int a = 0; a < 3; ++a) {
+      pos[4 * i + a] = p[a];
+      nor[4 * i + a] = points.normals[i][a];
+      alb[4 * i + a] = points.albedo[i][a];
+    }
+    pos[4 * i + 3] = nor[4 * i + 3] = alb[4 * i + 3] = 0.f;
+  });
+  pb->key = key;
+  pb->count = n;
+  m_points = std::move(pb);
+  return *m_points;
+}
+
+uint32_t IsmRenderer::lights_per_chunk(size_t light_count, size_t point_count) const {
+  const IsmSettings& s = m_settings;
+  const uint64_t texels = uint64_t(s.shadow_size) * s.shadow_size;
+  uint64_t per_light = 6 * texels * 16 + point_count * 16 + sizeof(GpuLight);
+  if (s.bounces > 0) per_light += uint64_t(s.vpls) * (48 + uint64_t(s.ism_size) * s.ism_size * 10);
+  uint64_t chunk = std::max<uint64_t>(1, (uint64_t(s.chunk_mb) << 20) / per_light);
+  chunk = std::min<uint64_t>(chunk, m_context->properties().limits.maxImageArrayLayers / 6);
+  return uint32_t(std::max<uint64_t>(1, std::min<uint64_t>(chunk, light_count)));
+}
+
+IsmRenderer::Workspace& IsmRenderer::workspace(uint32_t lights, size_t point_count) {
+  if (m_workspace && m_workspace->lights >= lights && m_workspace->points >= point_count) return *m_workspace;
+  m_workspace.reset();
+  const IsmSettings& s = m_settings;
+  VulkanContext& ctx = *m_context;
+  auto ws = std::make_unique<Workspace>();
+  ws->lights = lights;
+  ws->points = point_count;
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  const VkBufferUsageFlags filled = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  const VkDeviceSize texels = VkDeviceSize(lights) * 6 * s.shadow_size * s.shadow_size;
+  ws->light_data = Buffer(ctx, lights * sizeof(GpuLight), storage, true, "the lights");
+  ws->distances = Buffer(ctx, texels * 4, filled, false, "the shadow maps");
+  ws->triangles = Buffer(ctx, texels * 4, filled, false, "the shadow maps' triangles");
+  ws->result = Buffer(ctx, VkDeviceSize(lights) * point_count * 16, filled, true, "the results");
+  if (s.bounces > 0) {
+    const uint32_t vpls = lights * s.vpls;
+    ws->vpls = Buffer(ctx, VkDeviceSize(vpls) * 48, storage, false, "the VPLs");
+    ws->ism = Buffer(ctx, VkDeviceSize(vpls) * s.ism_size * s.ism_size * 4, filled, false, "the imperfect shadow maps");
+    ws->pyramid = Buffer(ctx, VkDeviceSize(pyramid_offsets(vpls, s.ism_size).back()) * 4, storage, false, "the ISM pyramids");
+  }
+  m_workspace = std::move(ws);
+  return *m_workspace;
+}
+
+void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std::span<const Light> lights, Transport transport,
+                               Workspace& ws, StageClock& clock) {
+  const IsmSettings& s = m_settings;
+  const uint32_t c = uint32_t(lights.size()), n = uint32_t(pb.count);
+  const float diagonal = m_scene->diagonal();
+  GpuLight* gpu = ws.light_data.data<GpuLight>();
+  std::vector<RasterView> views;
+  for (uint32_t j = 0; j < c; ++j) {
+    gpu[j] = to_gpu(lights[j]);
+    for (const auto& v : cube_views(lights[j].position, 1e-4f * diagonal, 4.f * diagonal)) views.push_back(v);
+  }
+  clock.start(cmd);
+  m_raster->record(cmd, views, s.shadow_size, s.shadow_size, ws.distances, ws.triangles);
+  full_barrier(cmd);
+  clock.mark(cmd, "shadow_maps");
+  const Kernels& k = *m_kernels;
+  if (transport != Transport::IndirectOnly) {
+    DirectParams p{n, c, s.shadow_size, s.shadow_bias, 2e-4f * diagonal};
+    k.direct.dispatch(cmd, {&pb.positions, &pb.normals, &pb.albedo, &ws.light_data, &ws.distances, &ws.result}, &p, uint64_t(n) * c);
+  } else {
+    vkCmdFillBuffer(cmd, ws.result.handle(), 0, VK_WHOLE_SIZE, 0);
+  }
+  full_barrier(cmd);
+  clock.mark(cmd, "direct");
+  if (s.bounces == 0 || transport == Transport::DirectOnly) return;
+
+  const uint32_t vpls = c * s.vpls;
+  VplParams vp{c, s.vpls, s.shadow_size, uint32_t(s.seed * 2654435761u), 1e-4f * diagonal};
+  k.vpl.dispatch(cmd, {&ws.light_data, &ws.distances, &ws.triangles, m_corners.get(), m_triangle_albedo.get(), &ws.vpls}, &vp, vpls);
+  vkCmdFillBuffer(cmd, ws.ism.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
+  full_barrier(cmd);
+  clock.mark(cmd, "vpls");
+  SplatParams sp{vpls, s.points_per_vpl, s.ism_points, s.ism_size};
+  k.splat.dispatch(cmd, {&ws.vpls, m_pool.get(), &ws.ism}, &sp, uint64_t(vpls) * s.points_per_vpl);
+  full_barrier(cmd);
+  clock.mark(cmd, "ism_splat");
+  const std::vector<uint32_t> offsets = pyramid_offsets(vpls, s.ism_size);
+  const size_t levels = offsets.size() - 1;
+  PullParams resolve{vpls, s.ism_size, 0, 0, 1};
+  k.pull.dispatch(cmd, {&ws.ism, &ws.pyramid}, &resolve, uint64_t(vpls) * s.ism_size * s.ism_size);
+  full_barrier(cmd);
+  for (size_t l = 1; l < levels; ++l) {
+    const uint32_t size = s.ism_size >> l;
+    PullParams pull{vpls, size, offsets[l - 1], offsets[l], 0};
+    k.pull.dispatch(cmd, {&ws.ism, &ws.pyramid}, &pull, uint64_t(vpls) * size * size);
+    full_barrier(cmd);
+  }
+  for (size_t l = levels - 1; l-- > 0;) {
+    const uint32_t size = s.ism_size >> l;
+    PushParams push{vpls, size, offsets[l + 1], offsets[l]};
+    k.push.dispatch(cmd, {&ws.pyramid}, &push, uint64_t(vpls) * size * size);
+    full_barrier(cmd);
+  }
+  clock.mark(cmd, "pull_push");
+  const float min_dist = s.vpl_clamp * diagonal;
+  GatherParams gp{n, c, s.vpls, s.ism_size, min_dist * min_dist, s.ism_bias, 2e-3f * diagonal};
+  k.gather.dispatch(cmd, {&pb.positions, &pb.normals, &pb.albedo, &ws.vpls, &ws.pyramid, &ws.result}, &gp, uint64_t(n) * c);
+  full_barrier(cmd);
+  clock.mark(cmd, "gather");
+}
+
+void IsmRenderer::submit_and_wait(VkCommandBuffer cmd) {
+  check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  check(vkResetFences(m_context->device(), 1, &m_fence), "vkResetFences");
+  check(vkQueueSubmit(m_context->queue(), 1, &submit, m_fence), "vkQueueSubmit");
+  check(vkWaitForFences(m_context->device(), 1, &m_fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+}
+
+std::vector<Rgb> IsmRenderer::unit_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport) {
+  std::lock_guard lock(m_mutex);
+  if (!m_scene) throw std::logic_error("IsmRenderer: set_scene was not called");
+  const size_t n = points.size();
+  std::vector<Rgb> out(n * lights.size(), Rgb(0.f));
+  m_stage_seconds.clear();
+  if (n == 0 || lights.empty()) return out;
+  const PointBuffers& pb = upload_points(points);
+  uint32_t chunk = lights_per_chunk(lights.size(), n);
+  // Thread numbers in the shaders are 32-bit: keep points × lights within them.
+  chunk = uint32_t(std::min<size_t>(chunk, std::max<size_t>(1, (size_t(1) << 31) / n)));
+  Workspace& ws = workspace(chunk, n);
+  for (size_t start = 0; start < lights.size(); start += chunk) {
+    const size_t count = std::min<size_t>(chunk, lights.size() - start);
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    check(vkResetCommandBuffer(m_cmd, 0), "vkResetCommandBuffer");
+    check(vkBeginCommandBuffer(m_cmd, &begin), "vkBeginCommandBuffer");
+    record_chunk(m_cmd, pb, lights.subspan(start, count), transport, ws, *m_clock);
+    submit_and_wait(m_cmd);
+    m_clock->collect(m_stage_seconds);
+    const float* result = ws.result.data<float>();
+    for (size_t j = 0; j < count; ++j)
+      for (size_t i = 0; i < n; ++i) {
+        const float* r = result + 4 * (j * n + i);
+        out[(start + j) * n + i] = Rgb(r[0], r[1], r[2]);
+      }
+  }
+  m_context->throw_on_validation_errors();
+  return out;
+}
+
+std::vector<Rgb> IsmRenderer::illuminate(const SurfacePoints& points, std::span<const Light> lights) {
+  // Linear in the intensities: Σ_j I_j ⊙ φ_j, from one batch.
+  std::vector<Rgb> unit = unit_responses(points, lights, Transport::All);
+  const size_t n = points.size();
+  std::vector<Rgb> out(n, Rgb(0.f));
+  for (size_t j = 0; j < lights.size(); ++j)
+    for (size_t i = 0; i < n; ++i) out[i] += lights[j].intensity * unit[j * n + i];
+  return out;
+}
+
+Image IsmRenderer::render_image(const Camera& camera, std::span<const Light> lights, int width, int height) {
+  if (width <= 0 || height <= 0) throw InputError("renderer ism-vulkan: image size must be positive");
+  const Scene& scene = *m_scene;
+  SurfacePoints pixels;
+  std::vector<size_t> pixel_index;
+  {
+    std::lock_guard lock(m_mutex);
+    if (!m_scene) throw std::logic_error("IsmRenderer: set_scene was not called");
+    // The camera's G-buffer from the same raster as the shadow maps:
+    // distance along each pixel's ray and the triangle seen.
+    const Camera::Basis b = camera.basis();
+    const float aspect = float(width) / float(height);
+    RasterView view{camera.eye, b.forward, b.right / (b.tan_half_fov * aspect), -b.up / b.tan_half_fov,
+                    1e-3f * scene.diagonal(), glm::length(camera.eye - scene.bounds.center()) + 2.f * scene.diagonal()};
+    const VkDeviceSize bytes = VkDeviceSize(width) * height * 4;
+    Buffer distances(*m_context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "the image's distances");
+    Buffer triangles(*m_context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "the image's triangles");
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    check(vkResetCommandBuffer(m_cmd, 0), "vkResetCommandBuffer");
+    check(vkBeginCommandBuffer(m_cmd, &begin), "vkBeginCommandBuffer");
+    m_raster->record(m_cmd, std::span<const RasterView>(&view, 1), uint32_t(width), uint32_t(height), distances, triangles);
+    full_barrier(m_cmd);
+    submit_and_wait(m_cmd);
+    m_context->throw_on_validation_errors();
+    const float* dist = distances.data<float>();
+    const uint32_t* tri = triangles.data<uint32_t>();
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const size_t k = size_t(y) * width + x;
+        if (tri[k] == 0) continue;
+        const size_t t = tri[k] - 1;
+        float sx = (2.f * (float(x) + 0.5f) / float(width) - 1.f) * b.tan_half_fov * aspect;
+        float sy = (1.f - 2.f * (float(y) + 0.5f) / float(height)) * b.tan_half_fov;
+        Vec3 p = camera.eye + glm::normalize(b.forward + sx * b.right + sy * b.up) * dist[k];
+        // Shading normal: the vertex normals at p's barycentrics.
+        const auto& ids = scene.triangles[t];
+        const Vec3 &a = scene.positions[ids[0]], &e1 = scene.positions[ids[1]] - a, &e2 = scene.positions[ids[2]] - a;
+        Vec3 q = p - a;
+        float d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+        float denom = d11 * d22 - d12 * d12;
+        float u = denom > 0 ? (d22 * glm::dot(q, e1) - d12 * glm::dot(q, e2)) / denom : 0.f;
+        float v = denom > 0 ? (d11 * glm::dot(q, e2) - d12 * glm::dot(q, e1)) / denom : 0.f;
+        u = std::clamp(u, 0.f, 1.f);
+        v = std::clamp(v, 0.f, 1.f - u);
+        Vec3 n = (1.f - u - v) * scene.normals[ids[0]] + u * scene.normals[ids[1]] + v * scene.normals[ids[2]];
+        n = glm::dot(n, n) > 0 ? glm::normalize(n) : scene.face_normal(t);
+        pixels.positions.push_back(a + u * e1 + v * e2);
+        pixels.normals.push_back(n);
+        pixels.albedo.push_back(scene.triangle_albedo(t));
+        pixel_index.push_back(k);
+      }
+  }
+  std::vector<Rgb> shaded = illuminate(pixels, lights);
+  Image image(width, height);
+  for (size_t k = 0; k < pixel_index.size(); ++k) {
+    image.pixels[pixel_index[k]] = shaded[k];
+    image.covered[pixel_index[k]] = 1;
+  }
+  return image;
+}
+
+std::vector<std::pair<std::string, double>> IsmRenderer::baseline_figures(const SurfacePoints& points,
+                                                                          std::span<const Light> lights) {
+  unit_responses(points, lights, Transport::All);
+  std::lock_guard lock(m_mutex);
+  std::vector<std::pair<std::string, double>> out;
+  for (const auto& [stage, seconds] : m_stage_seconds) out.emplace_back("gpu_" + stage + "_seconds", seconds);
+  return out;
+}
+
+std::string IsmSettings::key() const {
+  return "ism-vulkan/bounces=" + std::to_string(bounces) + "/shadow=" + std::to_string(shadow_size) + "/vpls=" +
+         std::to_string(vpls) + "/ism=" + std::to_string(ism_size) + "/ppv=" + std::to_string(points_per_vpl) + "/pool=" +
+         std::to_string(ism_points) + "/bias=" + std::to_string(shadow_bias) + "," + std::to_string(ism_bias) + "/clamp=" +
+         std::to_string(vpl_clamp) + "/seed=" + std::to_string(seed);
+}
+
+} // namespace hilight::ism

@@ -1,0 +1,65 @@
+#pragma once
+/// The ism-vulkan renderer: direct light from cube shadow maps, the first
+/// bounce from virtual point lights with imperfect shadow maps (Ritschel et
+/// al. 2008), all on one Vulkan device (lavapipe when there is no GPU).
+/// How a batch of lights flows through the stages: docs/ism-vulkan.md.
+#include "compute_kernel.hpp"
+#include "distance_raster.hpp"
+#include "ism_settings.hpp"
+#include "hilight/ray_scene.hpp"
+#include "hilight/renderer.hpp"
+
+#include <map>
+#include <memory>
+#include <mutex>
+
+namespace hilight::ism {
+
+class IsmRenderer final : public Renderer {
+public:
+  explicit IsmRenderer(const IsmSettings& settings);
+  ~IsmRenderer() override;
+
+  void set_scene(std::shared_ptr<const Scene> scene) override;
+  std::vector<Rgb> illuminate(const SurfacePoints& points, std::span<const Light> lights) override;
+  std::vector<Rgb> unit_responses(const SurfacePoints& points, std::span<const Light> lights,
+                                  Transport transport = Transport::All) override;
+  std::string settings_key() const override { return m_settings.key(); }
+  Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) override;
+  /// Seconds per stage of the last call, from GPU timestamps.
+  std::vector<std::pair<std::string, double>> baseline_figures(const SurfacePoints& points,
+                                                               std::span<const Light> lights) override;
+  std::string device_description() const { return m_context->description(); }
+
+private:
+  struct PointBuffers;
+  struct Workspace;
+  struct Kernels;
+  class StageClock;
+
+  /// The points on the device (shading points, normals, albedo), kept while the same set comes back.
+  const PointBuffers& upload_points(const SurfacePoints& points);
+  Workspace& workspace(uint32_t lights_per_chunk, size_t point_count);
+  uint32_t lights_per_chunk(size_t light_count, size_t point_count) const;
+  /// Records the whole pipeline for one chunk of lights into `cmd`.
+  void record_chunk(VkCommandBuffer cmd, const PointBuffers& points, std::span<const Light> lights, Transport transport,
+                    Workspace& ws, StageClock& clock);
+  void submit_and_wait(VkCommandBuffer cmd);
+
+  IsmSettings m_settings;
+  std::unique_ptr<VulkanContext> m_context;
+  std::shared_ptr<const Scene> m_scene;
+  std::unique_ptr<RayScene> m_rays;
+  std::unique_ptr<Buffer> m_corners, m_triangle_albedo, m_pool;
+  std::unique_ptr<DistanceRaster> m_raster;
+  std::unique_ptr<Kernels> m_kernels;
+  std::unique_ptr<PointBuffers> m_points;
+  std::unique_ptr<Workspace> m_workspace;
+  std::unique_ptr<StageClock> m_clock;
+  VkCommandBuffer m_cmd = VK_NULL_HANDLE;
+  VkFence m_fence = VK_NULL_HANDLE;
+  std::map<std::string, double> m_stage_seconds;
+  std::mutex m_mutex;  ///< one queue: calls (possibly from several solver threads) take turns
+};
+
+} // namespace hilight::ism

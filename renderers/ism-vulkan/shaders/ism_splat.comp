@@ -1,0 +1,36 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Imperfect shadow maps: each VPL splats its own random subset of the
+// scene's point samples into a small paraboloid depth map over its
+// hemisphere (nearest wins; depths as float bits order like the floats).
+#include "common.glsl"
+
+layout(push_constant) uniform Params {
+  uint vpls;       // all VPLs of the batch
+  uint per_vpl;    // points splatted per VPL
+  uint pool;       // scene point samples in all
+  uint size;       // ISM resolution
+} params;
+
+layout(std430, binding = 0) readonly buffer Vpls { vec4 vpls[]; };
+layout(std430, binding = 1) readonly buffer Pool { vec4 pool[]; };
+layout(std430, binding = 2) buffer Ism { uint ism[]; };
+
+void main() {
+  uint id = thread_id();
+  if (id >= params.vpls * params.per_vpl) return;
+  uint v = id / params.per_vpl, j = id % params.per_vpl;
+  vec4 origin = vpls[3u * v];
+  if (origin.w == 0.0) return;
+  vec3 n = vpls[3u * v + 1u].xyz;
+  // The pool is shuffled: a run of it from a per-VPL start is a random subset.
+  vec3 q = pool[(hash_u32(v) + j) % params.pool].xyz;
+  vec3 w = q - origin.xyz;
+  float len = length(w);
+  vec3 t, b;
+  basis_around(n, t, b);
+  vec3 local = vec3(dot(w, t), dot(w, b), dot(w, n));
+  if (local.z <= 1e-6 * len || len == 0.0) return;
+  ivec2 texel = paraboloid_texel(local, len, params.size);
+  atomicMin(ism[v * params.size * params.size + uint(texel.y) * params.size + uint(texel.x)], floatBitsToUint(len));
+}

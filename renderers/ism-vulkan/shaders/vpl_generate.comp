@@ -1,0 +1,69 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Virtual point lights: each light sends `vpls` directions, evenly spread
+// over its emission cap (a Fibonacci spiral: the sphere for a point light,
+// the cone for a spot), and finds the first surface in its cube map. A VPL
+// re-emits that surface's reflected share: radiant intensity power·cos θ.
+#include "common.glsl"
+
+layout(push_constant) uniform Params {
+  uint lights;
+  uint vpls;     // per light
+  uint size;     // cube face resolution
+  uint seed;
+  float lift;    // VPLs sit this far off their surface (scene units)
+} params;
+
+layout(std430, binding = 0) readonly buffer Lights { Light lights[]; };
+layout(std430, binding = 1) readonly buffer Distances { float distances[]; };
+layout(std430, binding = 2) readonly buffer Triangles { uint triangles[]; };
+layout(std430, binding = 3) readonly buffer Corners { float corners[]; };
+layout(std430, binding = 4) readonly buffer TriangleAlbedo { vec4 triangle_albedo[]; };
+layout(std430, binding = 5) writeonly buffer Vpls { vec4 vpls[]; };  // position (w: 1 = valid), normal, power
+
+vec3 corner(uint t, uint k) {
+  uint o = (3u * t + k) * 3u;
+  return vec3(corners[o], corners[o + 1u], corners[o + 2u]);
+}
+
+void main() {
+  uint id = thread_id();
+  if (id >= params.lights * params.vpls) return;
+  uint c = id / params.vpls, k = id % params.vpls;
+  Light light = lights[c];
+  vec3 axis = light.cone.z != 0.0 ? light.direction.xyz : vec3(0.0, 1.0, 0.0);
+  float cos_max = light.cone.z != 0.0 ? light.cone.x : -1.0;
+  float cos_theta = 1.0 - (1.0 - cos_max) * (float(k) + 0.5) / float(params.vpls);
+  float sin_theta = sqrt(max(1.0 - cos_theta * cos_theta, 0.0));
+  float rotation = float(hash_u32(params.seed ^ hash_u32(c + 1u)) & 0xffffu) / 65536.0;
+  float phi = 2.0 * PI * fract(float(k) * 0.61803398875 + rotation);
+  vec3 t, b;
+  basis_around(axis, t, b);
+  vec3 dir = normalize(sin_theta * cos(phi) * t + sin_theta * sin(phi) * b + cos_theta * axis);
+
+  vpls[3u * id] = vec4(0.0);
+  vpls[3u * id + 1u] = vec4(0.0);
+  vpls[3u * id + 2u] = vec4(0.0);
+  uint f = cube_face(dir);
+  ivec2 texel = clamp(ivec2(cube_texel(dir, f, params.size)), ivec2(0), ivec2(int(params.size) - 1));
+  uint index = (c * 6u + f) * params.size * params.size + uint(texel.y) * params.size + uint(texel.x);
+  uint hit = triangles[index];
+  if (hit == 0u) return;
+  uint tri = hit - 1u;
+  vec3 a = corner(tri, 0u), e1 = corner(tri, 1u) - a, e2 = corner(tri, 2u) - a;
+  vec3 n = cross(e1, e2);
+  if (dot(n, n) == 0.0) return;
+  n = normalize(n);
+  if (dot(n, dir) > 0.0) n = -n;  // the lit side faces the light
+  // Exact hit on the triangle's plane along this direction (the map's texel
+  // centre may lie a little off); fall back to the map's distance at grazing angles.
+  float denom = dot(n, dir);
+  float dist = distances[index];
+  if (denom < -1e-3) dist = dot(n, a - light.position.xyz) / denom;
+  if (!(dist > 0.0)) return;
+  float solid_angle = 2.0 * PI * (1.0 - cos_max) / float(params.vpls);
+  vec3 power = triangle_albedo[tri].rgb * (solid_angle * spot_factor(light, dir) / PI);
+  vpls[3u * id] = vec4(light.position.xyz + dir * dist + n * params.lift, 1.0);
+  vpls[3u * id + 1u] = vec4(n, 0.0);
+  vpls[3u * id + 2u] = vec4(power, 0.0);
+}

@@ -1,0 +1,125 @@
+// Cross-validation of the ism-vulkan renderer against Embree on the same
+// scenes and lights. Skipped ("SKIPPED: …") where no Vulkan device exists.
+// Validation layers are on for every ism-vulkan renderer these tests make:
+// any validation error fails the call that caused it.
+#include "hilight/scene_builders.hpp"
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+using namespace hilight;
+
+#define SKIP_WITHOUT_VULKAN()                                                                       \
+  if (std::string why = test::registry().renderer_unavailable_reason("ism-vulkan"); !why.empty()) { \
+    std::cout << "SKIPPED: ism-vulkan renderer unavailable: " << why << std::endl;                  \
+    return;                                                                                         \
+  }
+
+namespace {
+
+/// Relative L2 difference, as the solve's D̄.
+double dbar(const std::vector<Rgb>& a, const std::vector<Rgb>& reference) {
+  double num = 0, den = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    DVec3 d = DVec3(a[i]) - DVec3(reference[i]);
+    num += glm::dot(d, d);
+    den += glm::dot(DVec3(reference[i]), DVec3(reference[i]));
+  }
+  return std::sqrt(num / den);
+}
+
+std::unique_ptr<Renderer> ism(std::shared_ptr<const Scene> scene, std::vector<std::string> settings = {}) {
+  settings.push_back("validation=true");
+  return test::make_renderer("ism-vulkan", std::move(scene), settings);
+}
+
+/// The bundled demo room (furniture on a floor: shadows, contact corners), at
+/// the tessellation `hilight solve` uses by default.
+std::shared_ptr<const Scene> furnished_room() {
+  Scene raw = builders::furnished_room();
+  raw.update_bounds();
+  const float max_edge = raw.diagonal() / 40.f;
+  return test::finish(std::move(raw), max_edge);
+}
+
+/// Points at the triangles' centroids, with their face normals: away from
+/// creases, where the model's "a hair inside the triangle" is finer than any
+/// shadow map texel (docs/ism-vulkan.md).
+SurfacePoints centroids(const Scene& scene) {
+  SurfacePoints out;
+  for (size_t t = 0; t < scene.triangles.size(); ++t) {
+    const auto& v = scene.triangles[t];
+    out.positions.push_back((scene.positions[v[0]] + scene.positions[v[1]] + scene.positions[v[2]]) / 3.f);
+    out.normals.push_back(scene.face_normal(t));
+    out.albedo.push_back(scene.triangle_albedo(t));
+  }
+  return out;
+}
+
+/// A closed room with a floating slab: every light path stays inside.
+std::shared_ptr<const Scene> closed_room() {
+  Scene raw = builders::box_room({4.f, 3.f, 5.f}, Rgb(0.7f, 0.6f, 0.5f));
+  builders::add_box(raw, {1.5f, 0.8f, 2.f}, {2.5f, 1.f, 3.f}, Rgb(0.3f, 0.5f, 0.7f), false, "floating slab");
+  return test::finish(std::move(raw), 0.25f);
+}
+
+} // namespace
+
+TEST_CASE("ism-vulkan: direct light with shadows matches Embree within 2% D-bar", "[ism][cross][shadow]") {
+  SKIP_WITHOUT_VULKAN();
+  auto scene = furnished_room();
+  auto points = centroids(*scene);
+  Lighting lights = {Light::point({1.5f, 2.5f, 1.1f}, Rgb(2.f)), Light::point({4.6f, 2.4f, 1.4f}, Rgb(2.f, 1.9f, 1.7f)),
+                     Light::point({2.3f, 1.6f, 3.9f}, Rgb(1.6f, 1.7f, 2.f))};
+  auto embree = test::make_renderer("embree", scene, {"bounces=0"})->illuminate(points, lights);
+  auto gpu = ism(scene, {"bounces=0"})->illuminate(points, lights);
+  double d = dbar(gpu, embree);
+  INFO("D-bar " << d << " over " << points.size() << " points");
+  CHECK(d < 0.02);
+}
+
+TEST_CASE("ism-vulkan: a spotlight matches Embree within 2% D-bar, dark outside its cone", "[ism][cross][spot]") {
+  SKIP_WITHOUT_VULKAN();
+  auto scene = furnished_room();
+  auto points = centroids(*scene);
+  Lighting lights = {Light::spot({3.f, 2.8f, 1.5f}, {-0.3f, -1.f, 0.4f}, 35.f, Rgb(6.f), 8.f),
+                     Light::spot({5.f, 2.f, 4.f}, {-1.f, -0.6f, -0.2f}, 20.f, Rgb(3.f))};
+  auto embree = test::make_renderer("embree", scene, {"bounces=0"})->illuminate(points, lights);
+  auto gpu = ism(scene, {"bounces=0"})->illuminate(points, lights);
+  double d = dbar(gpu, embree);
+  size_t lit_outside = 0;
+  for (size_t i = 0; i < points.size(); ++i) lit_outside += embree[i].r == 0.f && gpu[i].r > 0.f;
+  INFO("D-bar " << d << "; points lit by ism-vulkan but dark in Embree: " << lit_outside);
+  CHECK(d < 0.02);
+  CHECK(lit_outside < points.size() / 200);
+}
+
+TEST_CASE("ism-vulkan: the first bounce of a closed room matches Embree, closer with more VPLs", "[ism][cross][bounce]") {
+  SKIP_WITHOUT_VULKAN();
+  auto scene = closed_room();
+  auto points = centroids(*scene);
+  Lighting lights = {Light::point({1.f, 2.4f, 1.2f}, Rgb(4.f))};
+  auto embree = test::make_renderer("embree", scene, {"bounce_samples=1024"})->illuminate(points, lights);
+  auto embree_direct = test::make_renderer("embree", scene, {"bounces=0"})->illuminate(points, lights);
+  auto bounce_of = [&](const std::vector<Rgb>& total) {
+    std::vector<Rgb> out(total.size());
+    for (size_t i = 0; i < total.size(); ++i) out[i] = total[i] - embree_direct[i];
+    return out;
+  };
+  auto gpu = ism(scene)->illuminate(points, lights);
+  auto few = ism(scene, {"vpls=16"})->illuminate(points, lights);
+  double total = dbar(gpu, embree);
+  double bounce = dbar(bounce_of(gpu), bounce_of(embree)), bounce_few = dbar(bounce_of(few), bounce_of(embree));
+  double sum_gpu = 0, sum_embree = 0;
+  for (size_t i = 0; i < points.size(); ++i) sum_gpu += gpu[i].r - embree_direct[i].r, sum_embree += embree[i].r - embree_direct[i].r;
+  INFO("bounce energy ism/embree " << sum_gpu / sum_embree);
+  INFO("D-bar of the total " << total << "; of the bounce alone " << bounce << " (256 VPLs) vs " << bounce_few << " (16 VPLs)");
+  // Stated tolerance: 8% D̄ of the total (measured 5.2%); the bounce alone is
+  // further off (18%), mostly near concave creases, where the clamped VPLs
+  // miss the strong near-field bounce (docs/ism-vulkan.md).
+  CHECK(total < 0.08);
+  CHECK(bounce < bounce_few);
+}
