@@ -9,6 +9,8 @@
 #include "painter_fixtures.hpp"
 
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <thread>
 
 using namespace hilight;
 using namespace hilight::painter;
@@ -172,4 +174,30 @@ TEST_CASE("painter: replayed shadow, spotlight, adjust and erase-shadow actions"
   for (int i = 0; i < 4; ++i) doc->undo();
   CHECK(doc->state().lights.empty());
   CHECK(doc->painted_count() == 0);
+}
+
+TEST_CASE("painter: an interactive solve result waits for the stroke in progress", "[painter]") {
+  auto world = painter_test::make_world(builders::box_room({4.f, 3.f, 4.f}), 0.5f);
+  auto doc = world.document();
+  SolveJob job(test::registry(), world.scene, world.rays, painter_test::quick_options());
+  PlayerOptions options;
+  options.wait_for_solves = false;
+  SessionPlayer player(*doc, job, {}, options);
+  player.apply({"brush", {{"radius", 0.6}, {"brightness", 0.5}}}, 0);
+  player.apply({"stroke", {{"world", {{1.0, 0.0, 1.0}, {2.0, 0.0, 1.5}}}}}, 1);
+  player.apply({"solve", {}}, 2);
+  {
+    Stroke stroke(*doc, player.brush(), BrushMode::Paint);
+    stroke.dab_at({3.f, 0.f, 3.f});
+    while (job.busy()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    CHECK_FALSE(player.poll());  // mid-stroke: not yet
+  }
+  std::optional<JobResult> result = player.poll();
+  REQUIRE(result);
+  REQUIRE(result->outcome == JobOutcome::Done);
+  CHECK(doc->state().lights.size() == result->lights.size());
+  CHECK(doc->undo_label().rfind("solve", 0) == 0);
+  doc->undo();
+  CHECK(doc->undo_label() == "paint");  // the stroke kept its own step
+  CHECK(doc->state().lights.empty());
 }

@@ -191,3 +191,21 @@ TEST_CASE("painter: the region's spotlight has the least cutoff that covers it",
   CHECK_THROWS_AS(spot_for_region(eye, direction, {}), InputError);
   CHECK_THROWS_AS(spot_for_region(eye, direction, {{0.f, 3.f, 6.f}}), InputError);  // behind the eye
 }
+
+TEST_CASE("painter: a spotlight from a camera outside the room moves inside", "[painter]") {
+  auto world = painter_test::make_world(builders::box_room({4.f, 3.f, 4.f}), 0.5f);
+  const std::vector<Vec3> region = {{2.f, 0.f, 2.f}, {2.4f, 0.f, 2.3f}, {1.7f, 0.f, 2.2f}};
+  const Vec3 eye(2.f, 2.f, 7.f);  // behind the wall z = 4
+  const Vec3 direction = glm::normalize(Vec3(2.f, 0.f, 2.1f) - eye);
+  const Light spot = spot_for_region_in_scene(*world.rays, eye, direction, region);
+  INFO(spot.position.x << ", " << spot.position.y << ", " << spot.position.z);
+  CHECK(spot.position.z < 4.f);
+  CHECK(world.scene->light_bounds().contains(spot.position));
+  CHECK_FALSE(world.rays->inside_solid(spot.position));
+  CHECK(glm::length(spot.direction - direction) < 1e-6f);
+  // Still the least cutoff that covers the region, now from the new apex.
+  CHECK(double(spot.cutoff_deg) == Approx(max_angle_deg(spot.position, direction, region)).margin(2e-3));
+  // A camera already inside stays where it is.
+  const Vec3 inside(2.f, 2.5f, 3.5f);
+  CHECK(spot_for_region_in_scene(*world.rays, inside, Vec3(0.f, -1.f, -0.5f), region).position == inside);
+}

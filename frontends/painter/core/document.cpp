@@ -63,6 +63,7 @@ void Document::cancel_edit() {
 }
 
 void Document::apply(const std::string& label, const std::function<void(PaintState&)>& edit) {
+  if (m_editing) commit_edit("edit");  // an open stroke stays its own step
   PaintState& state = begin_edit();
   try {
     edit(state);

@@ -55,7 +55,9 @@ public:
   void commit_edit(const std::string& label);
   /// Closes the open edit and restores the state from before it.
   void cancel_edit();
-  /// One-shot edit: begin_edit, edit(state), commit_edit(label).
+  /// One-shot edit: begin_edit, edit(state), commit_edit(label). An edit left
+  /// open (a stroke) is committed first as its own step. If `edit` throws,
+  /// the state is restored and the exception continues.
   void apply(const std::string& label, const std::function<void(PaintState&)>& edit);
   /// Replaces the lights (a solve's result, a cut, a loaded file) as one step.
   void set_lights(const Lighting& lights, const std::string& label);

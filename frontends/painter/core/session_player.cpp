@@ -159,9 +159,9 @@ void SessionPlayer::apply(const Action& action, size_t index) {
       const std::vector<Vec3> region = world_points(action, where);
       SpotRegionSettings settings;
       if (p.contains("falloff_deg")) settings.falloff_deg = p["falloff_deg"].get<float>();
-      const float d = glm::length(centroid(region) - pose.eye);
-      settings.intensity = p.contains("intensity") ? colour(p["intensity"]) : Rgb(d * d);  // about irradiance 1 at the region
-      const Light spot = spot_for_region(pose.eye, pose.direction, region, settings);
+      Light spot = spot_for_region_in_scene(m_document.rays(), pose.eye, pose.direction, region, settings);
+      const float d = glm::length(centroid(region) - spot.position);
+      spot.intensity = p.contains("intensity") ? colour(p["intensity"]) : Rgb(d * d);  // about irradiance 1 at the region
       m_document.apply("spotlight for a region", [&](PaintState& s) {
         s.lights.push_back(spot);
         s.spot_hints.push_back(spot);
@@ -233,6 +233,7 @@ void SessionPlayer::finish_solve(const std::string& where) {
 }
 
 std::optional<JobResult> SessionPlayer::poll() {
+  if (m_document.editing()) return std::nullopt;  // mid-stroke: commit the result after it
   std::optional<JobResult> result = m_job.take_result();
   if (result) commit(*result);
   return result;

@@ -77,7 +77,8 @@ public:
   /// Commits a finished background solve to the document (one undo step
   /// labelled with the job kind); returns it, or nullopt if none is ready.
   /// Failures come back as a JobResult with outcome Failed/Cancelled and
-  /// leave the document as it was.
+  /// leave the document as it was. While the document has an open edit (a
+  /// stroke in progress) the result waits for the next poll.
   std::optional<JobResult> poll();
 
   Tool tool() const { return m_tool; }

@@ -1,5 +1,6 @@
 #include "core/spot_region.hpp"
 
+#include "core/region.hpp"
 #include "hilight/error.hpp"
 
 #include <algorithm>
@@ -32,6 +33,36 @@ Light spot_for_region(const Vec3& eye, const Vec3& direction, const std::vector<
     throw InputError(what, "the region spans " + std::to_string(int(std::round(alpha))) +
                                "° from the view direction: a spotlight covers less than 90° (look at the region)");
   return Light::spot(eye, direction, float(cutoff), settings.intensity, falloff);
+}
+
+Light spot_for_region_in_scene(const RayScene& rays, const Vec3& eye, const Vec3& direction,
+                               const std::vector<Vec3>& region, const SpotRegionSettings& settings) {
+  const std::string what = "spot region";
+  if (region.empty()) throw InputError(what, "the region is empty");
+  if (!(glm::length(direction) > 0.f) || !is_finite(direction)) throw InputError(what, "the view direction is zero");
+  const Scene& scene = rays.scene();
+  const Bounds bounds = scene.light_bounds();
+  const Vec3 axis = glm::normalize(direction);
+  const Vec3 target = centroid(region);
+  // Stop before the region's own plane: the apex must stay in front of it.
+  const float limit = glm::dot(target - eye, axis);
+  const float step = 0.01f * scene.diagonal();
+  auto usable = [&](const Vec3& p) {
+    if (!bounds.contains(p) || rays.inside_solid(p)) return false;
+    const Vec3 to_target = target - p;
+    const float distance = glm::length(to_target);
+    // The centroid lies on a surface: stop the shadow ray just short of it.
+    return distance > 0.f && !rays.occluded(p, to_target / distance, distance * 0.999f);
+  };
+  float t = 0.f;
+  for (int guard = 0; guard < 10000 && t < limit; ++guard) {
+    const Vec3 p = eye + t * axis;
+    if (usable(p)) return spot_for_region(p, axis, region, settings);
+    // Past the next surface along the view, or one step on in free space.
+    Hit hit = rays.intersect(p, axis, limit - t);
+    t = hit.valid() && hit.t < step ? t + hit.t + step : t + step;
+  }
+  throw InputError(what, "no place for a spotlight between the camera and the region (move the camera)");
 }
 
 } // namespace hilight::painter

@@ -9,6 +9,7 @@
 /// width (`falloff_deg`) so every region point gets the full intensity
 /// (α ≤ cutoff − falloff), plus 1e-3° so rounding keeps the farthest point in.
 #include "hilight/lighting.hpp"
+#include "hilight/ray_scene.hpp"
 
 #include <vector>
 
@@ -24,6 +25,15 @@ struct SpotRegionSettings {
 /// limited to below 90°).
 Light spot_for_region(const Vec3& eye, const Vec3& direction, const std::vector<Vec3>& region,
                       const SpotRegionSettings& settings = {});
+
+/// The same, for a camera that may stand where no light may (outside the
+/// room, inside a wall, outside Scene::light_bounds()): the apex slides along
+/// the view direction, past each surface in the way, to the first point that
+/// is admissible (in light_bounds(), not inside a solid) and from which the
+/// region's centroid is unblocked; the cutoff is then the least for that
+/// apex. InputError when no such point lies before the region.
+Light spot_for_region_in_scene(const RayScene& rays, const Vec3& eye, const Vec3& direction,
+                               const std::vector<Vec3>& region, const SpotRegionSettings& settings = {});
 
 /// Largest angle (degrees) between `direction` and eye→point over the region.
 double max_angle_deg(const Vec3& eye, const Vec3& direction, const std::vector<Vec3>& region);
