@@ -106,8 +106,10 @@ TEST_CASE("painter: cancel stops a running solve promptly", "[painter]") {
   job.start_solve(c.target);
   for (int i = 0; i < 2000 && job.busy() && job.progress().find("seeding") == std::string::npos; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  const auto t1 = std::chrono::steady_clock::now();
   job.cancel();
   result = job.wait();
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count() < 1.0);
   REQUIRE(result);
   CHECK(result->outcome != JobOutcome::Failed);
   job.start_solve(c.target);

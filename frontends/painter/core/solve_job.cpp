@@ -1,5 +1,6 @@
 #include "core/solve_job.hpp"
 
+#include "core/cancellable_renderer.hpp"
 #include "hilight/error.hpp"
 
 #include <stdexcept>
@@ -47,6 +48,8 @@ SolveJob::SolveJob(const Registry& registry, std::shared_ptr<const Scene> scene,
   if (m_options.renderer == "embree" && !has_setting(settings, "bounce_direct")) settings.push_back("bounce_direct=vertex");
   m_fast = registry.create_renderer(m_options.renderer, Properties::from_assignments(settings));
   m_fast->set_scene(m_scene);
+  m_fast_guarded = std::make_unique<CancellableRenderer>(*m_fast, m_cancel);
+  m_reference_guarded = std::make_unique<CancellableRenderer>(*m_reference, m_cancel);
   m_sampler = registry.create_sampler(m_options.sampler, {});
   m_optimizer = registry.create_optimizer(m_options.optimizer, Properties::from_assignments(m_options.optimizer_settings));
   m_options.solve.spot_hints.clear();
@@ -62,7 +65,7 @@ Solver& SolveJob::solver_for(const Lighting& spot_hints) {
     SolveSettings settings = m_options.solve;
     settings.spot_hints = spot_hints;
     for (auto& h : settings.spot_hints) h.intensity = Rgb(1.f);
-    m_solver = std::make_unique<Solver>(m_scene, m_rays, *m_fast, *m_reference, *m_sampler, *m_optimizer, settings,
+    m_solver = std::make_unique<Solver>(m_scene, m_rays, *m_fast_guarded, *m_reference_guarded, *m_sampler, *m_optimizer, settings,
                                         [this](const std::string& stage) {
                                           if (m_cancel) throw SolveCancelled();
                                           std::lock_guard<std::mutex> lock(m_mutex);

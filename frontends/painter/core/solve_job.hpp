@@ -9,9 +9,10 @@
 /// Renderers are made as the CLI makes them: the reference as configured,
 /// and for Embree a fast twin with `bounce_direct=vertex` for φ.
 ///
-/// Cancelling: the Solver reports each stage (sampling, cache, seeding,
-/// hierarchy, each cut's refinement); the job throws SolveCancelled from that
-/// report, so a cancel takes effect at the next stage boundary.
+/// Cancelling: the Solver sees its renderers through a wrapper that throws
+/// SolveCancelled before the next batch of φ once cancel() was called (and
+/// the Solver's stage reports check too), so a cancel takes effect within one
+/// renderer batch; the light cache's build is one batch.
 #include "hilight/pipeline/solver.hpp"
 #include "hilight/registry.hpp"
 
@@ -111,6 +112,7 @@ private:
   SolveJobOptions m_options;
   std::vector<std::string> m_reference_settings;
   std::unique_ptr<Renderer> m_fast, m_reference;
+  std::unique_ptr<Renderer> m_fast_guarded, m_reference_guarded;  ///< what the Solver sees: they throw on cancel
   std::unique_ptr<Sampler> m_sampler;
   std::unique_ptr<Optimizer> m_optimizer;
   std::unique_ptr<Solver> m_solver;
