@@ -5,6 +5,7 @@
 #include "core/document.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/lights_json.hpp"
+#include "hilight/io/ply.hpp"
 #include "painter_fixtures.hpp"
 
 #include <catch2/catch.hpp>
@@ -154,6 +155,18 @@ TEST_CASE("painter: the saved target reads back through read_target", "[painter]
   other->load_target(dir / "target.ply");
   CHECK(other->state().psi == before.psi);
   CHECK(other->state().weight == before.weight);
+
+  // A rendered PLY (what `hilight render` writes: every vertex, no weights)
+  // loads as a target on every vertex with its exact colours.
+  std::vector<Rgb> radiance(world.scene->positions.size());
+  for (size_t v = 0; v < radiance.size(); ++v) radiance[v] = Rgb(0.01f * float(v % 97), 0.5f, 0.25f);
+  write_illuminated_ply(dir / "rendered.ply", *world.scene, radiance);
+  auto rendered = world.document();
+  rendered->load_target(dir / "rendered.ply");
+  CHECK(rendered->painted_count() == radiance.size());
+  size_t exact = 0;
+  for (size_t v = 0; v < radiance.size(); ++v) exact += rendered->state().psi[v] == radiance[v];
+  CHECK(exact == radiance.size());
 
   // Lights through the lights JSON.
   Lighting lights = {Light::point({1.f, 1.5f, 1.f}, Rgb(3.f, 2.f, 1.f)),
