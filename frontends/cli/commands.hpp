@@ -13,4 +13,5 @@ int run_solve(const std::vector<std::string>& args, Registry& registry);
 int run_export(const std::vector<std::string>& args, Registry& registry);
 int run_bench(const std::vector<std::string>& args, Registry& registry);
 int run_bench_solve(const std::vector<std::string>& args, Registry& registry);
+int run_bench_renderers(const std::vector<std::string>& args, Registry& registry);
 } // namespace hilight::cli

@@ -96,9 +96,9 @@ std::vector<RasterView> cube_views(const Vec3& eye, float near_plane, float far_
   return views;
 }
 
-DistanceRaster::DistanceRaster(VulkanContext& context, const Buffer& corners, uint32_t triangle_count,
+DistanceRaster::DistanceRaster(VulkanContext& context, const Buffer& vertices, const Buffer& indices, uint32_t triangle_count,
                                std::span<const uint32_t> vertex_spirv, std::span<const uint32_t> fragment_spirv)
-    : m_context(context), m_corners(corners), m_triangles(triangle_count) {
+    : m_context(context), m_vertices(vertices), m_indices(indices), m_triangles(triangle_count) {
   VkDevice device = context.device();
   try {
     m_pass = create_pass(device);
@@ -227,7 +227,7 @@ void DistanceRaster::record(VkCommandBuffer cmd, std::span<const RasterView> vie
   VkViewport viewport{0.f, 0.f, float(width), float(height), 0.f, 1.f};
   VkRect2D scissor{{0, 0}, {width, height}};
   VkDeviceSize offset = 0;
-  VkBuffer vertex_buffer = m_corners.handle();
+  VkBuffer vertex_buffer = m_vertices.handle();
   for (uint32_t layer = 0; layer < layers; ++layer) {
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = m_pass;
@@ -240,9 +240,10 @@ void DistanceRaster::record(VkCommandBuffer cmd, std::span<const RasterView> vie
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
+    vkCmdBindIndexBuffer(cmd, m_indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     ViewConstants constants = view_constants(views[layer]);
     vkCmdPushConstants(cmd, m_layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(constants), &constants);
-    vkCmdDraw(cmd, 3 * m_triangles, 1, 0, 0);
+    vkCmdDrawIndexed(cmd, 3 * m_triangles, 1, 0, 0, 0);
     vkCmdEndRenderPass(cmd);
   }
   VkBufferImageCopy region{};

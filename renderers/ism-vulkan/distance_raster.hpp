@@ -23,9 +23,10 @@ std::vector<RasterView> cube_views(const Vec3& eye, float near_plane, float far_
 
 class DistanceRaster {
 public:
-  /// `corners`: three world positions (vec3 floats) per triangle, in triangle order.
-  DistanceRaster(VulkanContext& context, const Buffer& corners, uint32_t triangle_count, std::span<const uint32_t> vertex_spirv,
-                 std::span<const uint32_t> fragment_spirv);
+  /// `vertices`: world positions (vec3 floats); `indices`: three per triangle,
+  /// in triangle order (shared vertices let the vertex stage run once per vertex).
+  DistanceRaster(VulkanContext& context, const Buffer& vertices, const Buffer& indices, uint32_t triangle_count,
+                 std::span<const uint32_t> vertex_spirv, std::span<const uint32_t> fragment_spirv);
   ~DistanceRaster();
   DistanceRaster(const DistanceRaster&) = delete;
   DistanceRaster& operator=(const DistanceRaster&) = delete;
@@ -42,7 +43,8 @@ private:
   void release();
 
   VulkanContext& m_context;
-  const Buffer& m_corners;
+  const Buffer& m_vertices;
+  const Buffer& m_indices;
   uint32_t m_triangles;
   VkRenderPass m_pass = VK_NULL_HANDLE;
   VkPipelineLayout m_layout = VK_NULL_HANDLE;

@@ -185,6 +185,8 @@ IsmRenderer::~IsmRenderer() {
   m_kernels.reset();
   m_raster.reset();
   m_corners.reset();
+  m_vertices.reset();
+  m_indices.reset();
   m_triangle_albedo.reset();
   m_pool.reset();
   if (m_fence) vkDestroyFence(m_context->device(), m_fence, nullptr);
@@ -201,8 +203,14 @@ void IsmRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   m_rays = std::make_unique<RayScene>(s);
   VulkanContext& ctx = *m_context;
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-  m_corners = std::make_unique<Buffer>(ctx, triangles * 9 * sizeof(float), storage | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true,
+  m_vertices = std::make_unique<Buffer>(ctx, s.positions.size() * 3 * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true,
+                                        "the scene's vertices");
+  m_indices = std::make_unique<Buffer>(ctx, triangles * 3 * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, true,
                                        "the scene's triangles");
+  std::memcpy(m_vertices->data<float>(), s.positions.data(), s.positions.size() * 3 * sizeof(float));
+  std::memcpy(m_indices->data<uint32_t>(), s.triangles.data(), triangles * 3 * sizeof(uint32_t));
+  // Corner positions per triangle, for the VPL stage's exact hit points.
+  m_corners = std::make_unique<Buffer>(ctx, triangles * 9 * sizeof(float), storage, true, "the scene's triangle corners");
   m_triangle_albedo = std::make_unique<Buffer>(ctx, triangles * 4 * sizeof(float), storage, true, "the scene's albedo");
   float* corners = m_corners->data<float>();
   float* albedo = m_triangle_albedo->data<float>();
@@ -237,7 +245,8 @@ void IsmRenderer::set_scene(std::shared_ptr<const Scene> scene) {
     pool[4 * k + 2] = q.z;
     pool[4 * k + 3] = 1.f;
   }
-  m_raster = std::make_unique<DistanceRaster>(ctx, *m_corners, uint32_t(triangles), spirv(kDistanceVert), spirv(kDistanceFrag));
+  m_raster = std::make_unique<DistanceRaster>(ctx, *m_vertices, *m_indices, uint32_t(triangles), spirv(kDistanceVert),
+                                              spirv(kDistanceFrag));
   m_kernels = std::make_unique<Kernels>(ctx, m_settings.workgroup);
   m_scene = std::move(scene);
 }

@@ -50,7 +50,7 @@ private:
   std::unique_ptr<VulkanContext> m_context;
   std::shared_ptr<const Scene> m_scene;
   std::unique_ptr<RayScene> m_rays;
-  std::unique_ptr<Buffer> m_corners, m_triangle_albedo, m_pool;
+  std::unique_ptr<Buffer> m_vertices, m_indices, m_corners, m_triangle_albedo, m_pool;
   std::unique_ptr<DistanceRaster> m_raster;
   std::unique_ptr<Kernels> m_kernels;
   std::unique_ptr<PointBuffers> m_points;

@@ -195,7 +195,14 @@ VulkanContext::VulkanContext(const DeviceOptions& options) {
     queue.queueCount = 1;
     queue.pQueuePriorities = &priority;
     const char* extension = VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME;
+    // The raster names triangles by gl_PrimitiveID in its fragment stage,
+    // which Vulkan ties to the geometry-shader feature.
+    VkPhysicalDeviceFeatures supported{}, features{};
+    vkGetPhysicalDeviceFeatures(m_physical, &supported);
+    if (!supported.geometryShader) throw VulkanError("renderer ism-vulkan: the device lacks the geometryShader feature");
+    features.geometryShader = VK_TRUE;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.pEnabledFeatures = &features;
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
     info.enabledExtensionCount = 1;
