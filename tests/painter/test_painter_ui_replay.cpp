@@ -116,7 +116,7 @@ TEST_CASE("painter ui: a replayed patch-and-shadow session finds the light the s
   centre /= float(shadow.size());
 
   // The camera looks at the box's centre, so the window's centre pixel is on the box.
-  const nlohmann::json camera = {{"type", "camera"}, {"eye", {3.5, 4.0, 5.0}}, {"target", {0.0, 0.5, 0.0}}, {"fov", 50}};
+  const nlohmann::json camera = {{"type", "camera"}, {"eye", {-3.0, 5.0, 7.0}}, {"target", {0.0, 0.5, 0.0}}, {"fov", 60}};
   const nlohmann::json actions = {
       camera,
       {{"type", "brush"}, {"radius", 2.0}, {"colour", 1.0}, {"brightness", 0.2}, {"hardness", 0.7}},

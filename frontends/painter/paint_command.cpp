@@ -1,0 +1,97 @@
+// hilight paint SCENE [options]: parses the command line, loads the scene and
+// the script (so bad input fails before any window opens), runs the painter.
+#include "paint_command.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/io/scene_io.hpp"
+#include "hilight/light_cache.hpp"
+#include "hilight/threads.hpp"
+#include "painter_app.hpp"
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+namespace hilight::painter {
+
+namespace {
+
+/// "WxH" with both in [64, 8192].
+void parse_size(const std::string& text, int& width, int& height) {
+  int w = 0, h = 0;
+  char x = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || (x != 'x' && x != 'X') || w < 64 || h < 64 ||
+      w > 8192 || h > 8192)
+    throw InputError("paint: --size must be WIDTHxHEIGHT, each 64..8192 (e.g. 1280x800), not '" + text + "'");
+  width = w;
+  height = h;
+}
+
+} // namespace
+
+int run_paint(const std::vector<std::string>& args, Registry& registry) {
+  CLI::App app("Paint the illumination you want onto a scene; hilight finds the lights", "paint");
+  PaintOptions o;
+  std::string scene, target, lights, script, screenshot, record, timings, size = "1280x800", cache_dir;
+  int threads = 0, bounces = 1;
+  bool no_auto = false, no_cache = false;
+  app.add_option("scene", scene, "scene file (any format assimp reads)")->required();
+  app.add_option("--max-edge", o.max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::Range(0.f, 1e30f));
+  app.add_option("--target", target, "target PLY to start from (as `hilight solve --target` reads)");
+  app.add_option("--lights", lights, "lights JSON to start from");
+  app.add_option("--renderer", o.job.renderer, "renderer plugin for the view and the solve")->capture_default_str();
+  app.add_option("--bounces", bounces, "0 = direct light only, 1 = plus the first diffuse bounce")->check(CLI::IsMember({0, 1}))->capture_default_str();
+  app.add_option("--set", o.job.renderer_settings, "renderer setting key=value (repeatable)");
+  app.add_option("--optimizer", o.job.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
+  app.add_option("--opt", o.job.optimizer_settings, "optimizer setting key=value (repeatable)");
+  app.add_option("--sampler", o.job.sampler, "surface sampling plugin")->capture_default_str();
+  app.add_option("--samples", o.job.solve.samples, "surface samples used by the solve")->check(CLI::Range(10, 10000000))->capture_default_str();
+  app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
+  app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
+  app.add_option("--cache-cells", o.job.solve.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")
+      ->check(CLI::Range(1, 24))
+      ->capture_default_str();
+  app.add_option("--script", script, "session JSON to replay ({\"actions\": [...]}, docs/painter.md)");
+  app.add_option("--screenshot", screenshot, "write the final frame (after the script) as PNG");
+  app.add_flag("--exit", o.exit_after_script, "quit after the script and screenshot (headless replay)");
+  app.add_option("--record", record, "record this session here (default: $XDG_STATE_HOME/hilight/sessions/)");
+  app.add_flag("--no-record", o.no_record, "do not record the session (unless --record is given)");
+  app.add_option("--size", size, "window size WIDTHxHEIGHT")->capture_default_str();
+  app.add_option("--timings", timings, "write frame and stroke-to-fine-tune times as JSON ('-': stdout)");
+  app.add_flag("--bench", o.bench, "after the script: timed orbit, strokes and fine-tunes (use with --timings)");
+  app.add_flag("--no-auto-fine-tune", no_auto, "do not fine-tune the lights after each brush stroke");
+  app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them back to front
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    throw InputError(std::string("paint: ") + e.what());
+  }
+  parse_size(size, o.width, o.height);
+  o.scene = scene;
+  o.target = target;
+  o.lights = lights;
+  o.script = script;
+  o.screenshot = screenshot;
+  o.record = record;
+  o.timings = timings;
+  o.auto_fine_tune = !no_auto;
+  o.job.renderer_settings.push_back("bounces=" + std::to_string(bounces));
+  o.job.solve.use_cache = !no_cache;
+  o.job.solve.cache_dir = no_cache ? std::filesystem::path() : cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir);
+  if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty())
+    throw InputError("paint: --exit without --script, --screenshot or --bench would do nothing");
+  set_thread_limit(threads);
+
+  // Input first: a bad renderer, scene or script fails before any window opens.
+  registry.renderer_unavailable_reason(o.job.renderer);
+  std::optional<Session> session;
+  if (!o.script.empty()) session = read_session(o.script);
+  auto loaded = std::make_shared<const Scene>(load_scene(o.scene, {o.max_edge}));
+  PainterApp painter(o, registry, loaded, std::move(session));
+  return painter.run();
+}
+
+} // namespace hilight::painter

@@ -1,0 +1,27 @@
+#pragma once
+/// What `hilight paint` was asked to do (parsed by paint_command.cpp).
+#include "core/solve_job.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace hilight::painter {
+
+struct PaintOptions {
+  std::filesystem::path scene;
+  float max_edge = 0.f;              ///< tessellation limit (0: diagonal/40, as everywhere)
+  std::filesystem::path target;      ///< target PLY to start from
+  std::filesystem::path lights;      ///< lights JSON to start from
+  std::filesystem::path script;      ///< session to replay
+  std::filesystem::path screenshot;  ///< final frame, written after the script
+  std::filesystem::path record;      ///< where this session is recorded ("" = the default place)
+  bool no_record = false;            ///< record nothing (an explicit --record still wins)
+  std::filesystem::path timings;     ///< frame/latency figures as JSON ("-": stdout)
+  bool bench = false;                ///< after the script: scripted orbit + stroke + fine-tune, timed
+  bool exit_after_script = false;
+  int width = 1280, height = 800;
+  bool auto_fine_tune = true;        ///< fine-tune after each stroke when there are lights
+  SolveJobOptions job;               ///< renderer, optimizer, sampler and solve settings
+};
+
+} // namespace hilight::painter

@@ -1,0 +1,346 @@
+#include "painter_app.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/io/atomic_file.hpp"
+#include "ui/gl.hpp"
+#include "ui/light_markers.hpp"
+#include "ui/screenshot.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <imgui.h>
+#include <iostream>
+
+namespace hilight::painter {
+
+namespace {
+
+bool same_lights(const Lighting& a, const Lighting& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const Light &x = a[i], &y = b[i];
+    if (x.type != y.type || x.position != y.position || x.intensity != y.intensity || x.direction != y.direction ||
+        x.cutoff_deg != y.cutoff_deg || x.falloff_deg != y.falloff_deg)
+      return false;
+  }
+  return true;
+}
+
+Properties settings_without(const std::vector<std::string>& settings, const std::vector<std::string>& keys) {
+  std::vector<std::string> kept;
+  for (const auto& kv : settings) {
+    bool drop = false;
+    for (const auto& key : keys) drop |= kv.rfind(key + "=", 0) == 0;
+    if (!drop) kept.push_back(kv);
+  }
+  return Properties::from_assignments(kept);
+}
+
+/// The display renderers, quick to exact. The exact one is the job's renderer
+/// with the same settings and seed, so the result view shows what the solve
+/// measures; for Embree with the bounce, a quick stage with few gather rays
+/// and interpolated direct light comes first (a stroke's fine-tune shows in
+/// a fraction of the exact render's time).
+std::vector<std::unique_ptr<Renderer>> display_renderers(const Registry& registry, const SolveJobOptions& job,
+                                                         const std::shared_ptr<const Scene>& scene) {
+  std::vector<std::string> settings = job.renderer_settings;
+  bool has_seed = false, direct_only = false, user_bounce = false;
+  for (const auto& kv : settings) {
+    has_seed |= kv.rfind("seed=", 0) == 0;
+    direct_only |= kv == "bounces=0";
+    user_bounce |= kv.rfind("bounce_samples=", 0) == 0 || kv.rfind("bounce_direct=", 0) == 0;
+  }
+  if (!has_seed) settings.push_back("seed=" + std::to_string(job.solve.seed & 0x7FFFFFFFFFFFFFFFull));
+  std::vector<std::unique_ptr<Renderer>> stages;
+  if (job.renderer == "embree" && !direct_only && !user_bounce) {
+    Properties quick = settings_without(settings, {"bounce_samples", "bounce_direct"});
+    quick.set("bounce_samples", "16");
+    quick.set("bounce_direct", "vertex");
+    stages.push_back(registry.create_renderer(job.renderer, quick));
+  }
+  stages.push_back(registry.create_renderer(job.renderer, Properties::from_assignments(settings)));
+  for (auto& stage : stages) stage->set_scene(scene);
+  return stages;
+}
+
+/// Shading shown before there are any lights: albedo under a fixed soft key
+/// light, dim, so the designer sees the geometry but not "a result".
+std::vector<Rgb> preview_radiance(const Scene& scene, const std::vector<Rgb>& albedo) {
+  const Vec3 key = glm::normalize(Vec3(0.3f, 1.f, 0.5f));
+  std::vector<Rgb> out(scene.positions.size());
+  for (size_t i = 0; i < out.size(); ++i)
+    out[i] = albedo[i] * (0.12f + 0.18f * std::max(0.f, glm::dot(scene.normals[i], key)));
+  return out;
+}
+
+} // namespace
+
+PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, std::shared_ptr<const Scene> scene,
+                       std::optional<Session> script)
+    : m_options(options), m_scene(std::move(scene)), m_script(std::move(script)) {
+  m_rays = std::make_shared<const RayScene>(*m_scene);
+  m_albedo = m_scene->vertex_albedo();
+  m_document = std::make_unique<Document>(m_scene, m_rays);
+  m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
+  auto renderers = display_renderers(registry, m_options.job, m_scene);
+
+  // The window last: input problems surface first, even without a display.
+  m_window = std::make_unique<ui::Window>(m_options.width, m_options.height,
+                                          "hilight paint - " + m_options.scene.filename().string(), true);
+  m_mesh = std::make_unique<ui::SceneMesh>(*m_scene);
+  m_lines = std::make_unique<ui::LineBatch>();
+  m_view_buffer = std::make_unique<ui::SceneFramebuffer>();
+  m_camera = ui::OrbitCamera::framing(m_scene->bounds, aspect());
+  // Background results wake the event loop at once (glfwPostEmptyEvent is thread-safe).
+  m_illumination_worker = std::make_unique<ui::IlluminationWorker>(std::move(renderers), *m_scene, [] { glfwPostEmptyEvent(); });
+  m_job_waker = std::thread([this] {
+    bool was_busy = false;
+    while (!m_stop_waker) {
+      const bool busy = m_job->busy();
+      if (was_busy && !busy) glfwPostEmptyEvent();
+      was_busy = busy;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  });
+
+  m_headless = m_options.exit_after_script;
+  m_player = std::make_unique<SessionPlayer>(*m_document, *m_job, make_hooks(),
+                                             PlayerOptions{true, ".", m_options.script.empty() ? "session" : m_options.script.string()});
+  m_recorded_brush = m_player->brush();
+  const std::string stem = m_options.scene.stem().string();
+  m_target_path = m_options.target.empty() ? stem + "-target.ply" : m_options.target.string();
+  m_lights_path = m_options.lights.empty() ? stem + "-lights.json" : m_options.lights.string();
+  m_screenshot_path = stem + ".png";
+  if (!m_options.no_record || !m_options.record.empty()) {
+    const bool interactive = !m_options.exit_after_script;
+    if (!m_options.record.empty()) m_record_path = m_options.record;
+    else if (interactive) m_record_path = default_record_path();
+  }
+  // The starting files are the session's first actions, so a recording replays from the same state.
+  auto absolute = [](const std::filesystem::path& p) { return std::filesystem::absolute(p).lexically_normal().string(); };
+  if (!m_options.target.empty()) {
+    Action a{"load_target", {{"path", absolute(m_options.target)}}};
+    m_player->apply(a);
+    record(a);
+  }
+  if (!m_options.lights.empty()) {
+    Action a{"load_lights", {{"path", absolute(m_options.lights)}}};
+    m_player->apply(a);
+    record(a);
+  }
+}
+
+PainterApp::~PainterApp() {
+  // Stop background work and free GL objects before the context goes.
+  m_view_buffer.reset();
+  m_stop_waker = true;
+  if (m_job_waker.joinable()) m_job_waker.join();
+  m_illumination_worker.reset();
+  m_job.reset();
+}
+
+float PainterApp::aspect() const {
+  int w = 1, h = 1;
+  m_window->framebuffer_size(w, h);
+  return float(std::max(w, 1)) / float(std::max(h, 1));
+}
+
+int PainterApp::run() {
+  frame(false);  // the scene as it opens
+  if (m_script) {
+    for (size_t i = 0; i < m_script->actions.size(); ++i) {
+      const Action& action = m_script->actions[i];
+      m_player->apply(action, i);
+      record(action);
+      if (action.type == "camera") m_last_activity = "camera";
+      frame(false);
+      m_last_activity = "idle";
+    }
+  }
+  if (!m_options.screenshot.empty()) screenshot(m_options.screenshot);
+  if (m_options.bench) run_bench();
+  if (!m_options.timings.empty()) {
+    const std::string text = m_timer.to_json();
+    if (m_options.timings == "-") std::cout << text;
+    else write_atomically(m_options.timings, [&](const std::filesystem::path& temp) { std::ofstream(temp) << text; });
+  }
+  if (m_options.exit_after_script) return 0;
+
+  // Interactive: solves run in the background and the player polls them.
+  m_headless = false;
+  Tool tool = m_player->tool();
+  BrushSettings brush = m_player->brush();
+  m_player = std::make_unique<SessionPlayer>(*m_document, *m_job, make_hooks(), PlayerOptions{false, ".", "session"});
+  m_player->set_tool(tool);
+  m_player->set_brush(brush);
+  if (!m_record_path.empty()) status("recording this session to " + m_record_path.string());
+  while (!m_window->should_close()) frame(true);
+  m_job->cancel();
+  return 0;
+}
+
+void PainterApp::frame(bool interactive) {
+  const auto start = Clock::now();
+  if (interactive) {
+    // Dragging: draw as fast as the mouse moves. Background work: wake at
+    // 30 Hz to show its progress, leaving the cores to the work. Idle: sleep
+    // until an event.
+    const bool dragging = m_stroke || m_dragging_camera || m_region_drag;
+    if (dragging) glfwPollEvents();
+    else if (m_job->busy() || m_illumination_pending) glfwWaitEventsTimeout(1.0 / 30.0);
+    else glfwWaitEventsTimeout(0.25);
+  } else {
+    glfwPollEvents();
+  }
+  poll_workers();
+  m_window->begin_frame();
+  if (interactive) handle_input();
+  request_illumination();
+  refresh_colours();
+  draw_scene();
+  draw_panels();
+  m_window->end_frame();
+  const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  if (m_last_activity != "idle" || !interactive) m_timer.add_frame(m_last_activity, ms);
+}
+
+void PainterApp::poll_workers() {
+  if (std::optional<JobResult> result = m_player->poll()) {
+    if (result->outcome == JobOutcome::Failed) status(std::string(to_string(result->kind)) + " failed: " + result->error);
+    else if (result->outcome == JobOutcome::Cancelled) status(std::string(to_string(result->kind)) + " cancelled");
+    if (result->outcome == JobOutcome::Done && result->kind == JobKind::FineTune)
+      m_timer.add_latency("fine_tune_solver", 1000.0 * result->report.seconds["total"]);
+    if (result->outcome == JobOutcome::Done && m_fine_tune_after_stroke && m_stroke_released) {
+      m_timer.add_latency("stroke_to_fine_tune",
+                          std::chrono::duration<double, std::milli>(Clock::now() - *m_stroke_released).count());
+    }
+    m_fine_tune_after_stroke = false;
+  }
+  if (std::optional<ui::Illumination> done = m_illumination_worker->take()) {
+    m_radiance = std::move(done->radiance);
+    m_radiance_final = done->final;
+    m_radiance_lights = std::move(done->lights);
+    m_colours_dirty = true;
+  }
+  m_illumination_pending = m_illumination_worker->busy();
+  // The stroke's fine-tune is over and the view shows its lights.
+  if (m_stroke_released && !m_fine_tune_after_stroke && !m_job->busy() &&
+      m_requested_lights && same_lights(*m_requested_lights, m_document->state().lights) &&
+      same_lights(m_radiance_lights, m_document->state().lights)) {
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - *m_stroke_released).count();
+    if (!m_stroke_shown) m_timer.add_latency("stroke_to_display", ms);
+    m_stroke_shown = true;
+    if (m_radiance_final) {
+      m_timer.add_latency("stroke_to_exact_display", ms);
+      m_stroke_released.reset();
+      m_stroke_shown = false;
+    }
+  }
+  if (!m_illumination_worker->error().empty()) status("display renderer: " + m_illumination_worker->error());
+}
+
+void PainterApp::request_illumination() {
+  const Lighting& lights = m_document->state().lights;
+  if (m_requested_lights && same_lights(lights, *m_requested_lights)) return;
+  m_requested_lights = lights;
+  m_illumination_worker->request(lights, m_document->revision());
+  m_illumination_pending = true;
+}
+
+void PainterApp::settle() {
+  request_illumination();
+  m_illumination_worker->wait_idle();
+  poll_workers();
+  refresh_colours();
+}
+
+void PainterApp::refresh_colours() {
+  const PaintState& s = m_document->state();
+  if (!m_colours_dirty && m_colours_revision == m_document->revision()) return;
+  if (m_radiance.size() != m_scene->positions.size()) return;  // nothing rendered yet
+  const bool no_lights = s.lights.empty();
+  if (!m_exposure_from_result) {
+    // Once, from the first lit result (until then from the target): later
+    // changes of brightness stay visible instead of being normalized away,
+    // and target and result are shown alike.
+    const float from_result = no_lights || !m_radiance_final ? 0.f : ui::auto_exposure(m_radiance);
+    if (from_result > 0.f) {
+      m_exposure = from_result;
+      m_exposure_from_result = true;
+    } else if (m_document->painted_count() > 0) {
+      m_exposure = ui::auto_exposure(s.psi, s.weight);
+    }
+  }
+  const float exposure = (m_exposure > 0.f ? m_exposure : 1.f) * std::exp2(m_exposure_stops);
+  std::vector<ui::VertexColour> colours;
+  switch (m_view) {
+  case ui::ViewMode::Result:
+    colours = no_lights ? ui::result_colours(preview_radiance(*m_scene, m_albedo), 1.f) : ui::result_colours(m_radiance, exposure);
+    break;
+  case ui::ViewMode::Target: colours = ui::target_colours(s.psi, s.weight, m_albedo, exposure); break;
+  case ui::ViewMode::Difference: colours = ui::difference_colours(s.psi, s.weight, m_radiance, exposure); break;
+  }
+  m_mesh->set_colours(colours);
+  ++m_colour_uploads;
+  m_colours_revision = m_document->revision();
+  m_colours_dirty = false;
+}
+
+void PainterApp::draw_scene() {
+  int w = 1, h = 1;
+  m_window->framebuffer_size(w, h);
+  build_overlays();
+  const glm::mat4 view_projection = m_camera.projection(aspect()) * m_camera.view();
+  const bool stale = m_view_buffer->resize(w, h) || view_projection != m_drawn_view_projection ||
+                     m_drawn_colour_uploads != m_colour_uploads || m_lines->changed_since_draw();
+  if (stale) {
+    m_view_buffer->bind();
+    glViewport(0, 0, w, h);
+    glClearColor(0.055f, 0.06f, 0.07f, 1.f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    m_mesh->draw(view_projection);
+    m_lines->draw(view_projection);
+    m_drawn_view_projection = view_projection;
+    m_drawn_colour_uploads = m_colour_uploads;
+  }
+  m_view_buffer->blit_to_window();
+  glViewport(0, 0, w, h);
+}
+
+void PainterApp::build_overlays() {
+  m_lines->clear();
+  const PaintState& s = m_document->state();
+  const float diagonal = m_scene->diagonal();
+  if (m_show_lights) {
+    ui::add_light_markers(*m_lines, s.lights, diagonal);
+    ui::add_spot_hint_markers(*m_lines, s.spot_hints, diagonal);
+  }
+  if (const auto& estimate = m_player->last_shadow_estimate(); estimate && m_player->tool() == Tool::Shadow)
+    ui::add_shadow_estimate_markers(*m_lines, *estimate);
+  if (m_hover && (m_player->tool() == Tool::Brush || m_player->tool() == Tool::Eraser || m_player->tool() == Tool::Adjust)) {
+    const glm::vec4 colour = m_player->tool() == Tool::Eraser ? glm::vec4(1.f, 0.35f, 0.3f, 1.f) : glm::vec4(1.f);
+    m_lines->circle(m_hover->position + 0.002f * diagonal * m_hover->normal, m_hover->normal, m_player->brush().radius, colour);
+  }
+  const glm::vec4 region_colour = m_player->tool() == Tool::Spot     ? glm::vec4(1.f, 0.85f, 0.2f, 1.f)
+                                  : m_player->tool() == Tool::Adjust ? glm::vec4(0.3f, 0.9f, 1.f, 1.f)
+                                                                     : glm::vec4(0.6f, 0.6f, 0.65f, 1.f);
+  for (const Vec3& p : m_region) m_lines->point(p, region_colour, 5.f);
+  for (const auto& pair : m_shadow_pairs)
+    for (const auto& p : pair["world"]) m_lines->point(Vec3(p[0].get<float>(), p[1].get<float>(), p[2].get<float>()), glm::vec4(0.45f, 0.45f, 0.5f, 1.f), 5.f);
+  if (m_occluder_point && m_player->tool() == Tool::Shadow) {
+    Hit hit = m_rays->closest_point(*m_occluder_point, 0.01f * diagonal);
+    if (hit.valid()) ui::add_box_marker(*m_lines, m_player->objects().bounds(m_player->objects().object_of_triangle(hit.triangle)),
+                                        glm::vec4(0.3f, 1.f, 0.4f, 1.f));
+  }
+}
+
+void PainterApp::status(const std::string& line) {
+  m_status = line;
+  m_log.push_back(line);
+  if (m_log.size() > 200) m_log.erase(m_log.begin());
+  if (m_headless) std::fprintf(stderr, "hilight: %s\n", line.c_str());
+}
+
+} // namespace hilight::painter

@@ -1,0 +1,165 @@
+#pragma once
+/// The painter's window application: the document and solve job of the core,
+/// a view of the scene with overlays, the tools driven by mouse and keys, the
+/// ImGui panels, and headless replay of session scripts. Every action the
+/// designer takes goes through the core's SessionPlayer and is recorded, so
+/// a session can be replayed exactly.
+#include "core/session_player.hpp"
+#include "paint_options.hpp"
+#include "ui/frame_timer.hpp"
+#include "ui/illumination_worker.hpp"
+#include "ui/line_batch.hpp"
+#include "ui/orbit_camera.hpp"
+#include "ui/scene_framebuffer.hpp"
+#include "ui/scene_mesh.hpp"
+#include "ui/vertex_colours.hpp"
+#include "ui/window.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hilight::painter {
+
+class PainterApp {
+public:
+  /// Loads the scene and the starting files, opens the window. InputError for
+  /// bad input or no display / OpenGL.
+  PainterApp(const PaintOptions& options, const Registry& registry, std::shared_ptr<const Scene> scene,
+             std::optional<Session> script);
+  ~PainterApp();
+  PainterApp(const PainterApp&) = delete;
+  PainterApp& operator=(const PainterApp&) = delete;
+
+  /// Replays the script (if any), writes the screenshot, runs the bench if
+  /// asked, then (without --exit) stays interactive until the window closes.
+  int run();
+
+private:
+  using Clock = std::chrono::steady_clock;
+
+  // --- frames (painter_app.cpp) ---
+  /// One frame: events, results from the workers, input, scene, panels.
+  void frame(bool interactive);
+  /// Takes finished work: solve results (into the document) and illumination.
+  void poll_workers();
+  /// Recomputes vertex colours if the view mode, document or illumination changed.
+  void refresh_colours();
+  /// Draws the scene and overlays into the back buffer (no panels).
+  void draw_scene();
+  void build_overlays();
+  /// Asks the illumination worker for the lights if they changed.
+  void request_illumination();
+  /// Blocks until the result view shows the current lights (replay, screenshots).
+  void settle();
+  float aspect() const;
+
+  // --- actions (painter_session_hooks.cpp) ---
+  PlayerHooks make_hooks();
+  void apply_camera_action(const Action& action);
+  /// Applies through the player and records it; errors go to the status line
+  /// (interactive) — returns false then.
+  bool perform(const Action& action);
+  void record(const Action& action);
+  std::filesystem::path default_record_path() const;
+  void screenshot(const std::filesystem::path& path);
+  void status(const std::string& line);
+
+  // --- input (painter_input.cpp) ---
+  void handle_input();
+  void handle_camera_input();
+  void handle_keys();
+  void handle_tool_input();
+  std::optional<SurfacePick> pick_at_mouse() const;
+  void begin_region_drag();
+  void finish_region_drag();
+  void finish_stroke();
+  void start_job(const std::string& type);
+
+  // --- panels (painter_panels.cpp) ---
+  void draw_panels();
+  void panel_tools();
+  void panel_view();
+  void panel_solve();
+  void panel_lights();
+  void panel_files();
+  void panel_help();
+  void panel_status();
+  void popup_shadow_pairs();
+
+  // --- bench (painter_bench.cpp) ---
+  /// Scripted orbit, stroke and fine-tune with timings (--bench).
+  void run_bench();
+
+  PaintOptions m_options;
+  std::shared_ptr<const Scene> m_scene;
+  std::shared_ptr<const RayScene> m_rays;
+  std::optional<Session> m_script;
+  std::unique_ptr<Document> m_document;
+  std::unique_ptr<SolveJob> m_job;
+  std::unique_ptr<SessionPlayer> m_player;
+  SessionRecorder m_recorder;
+  std::filesystem::path m_record_path;
+  std::vector<Rgb> m_albedo;
+
+  std::unique_ptr<ui::Window> m_window;
+  std::unique_ptr<ui::SceneMesh> m_mesh;
+  std::unique_ptr<ui::LineBatch> m_lines;
+  std::unique_ptr<ui::SceneFramebuffer> m_view_buffer;  ///< the 3D view, redrawn only when it changes
+  glm::mat4 m_drawn_view_projection{0.f};
+  uint64_t m_colour_uploads = 0, m_drawn_colour_uploads = ~uint64_t(0);
+  std::unique_ptr<ui::IlluminationWorker> m_illumination_worker;
+  ui::OrbitCamera m_camera;
+  ui::FrameTimer m_timer;
+
+  // View state.
+  ui::ViewMode m_view = ui::ViewMode::Result;
+  float m_exposure = 0.f;         ///< 0 until first set automatically
+  bool m_exposure_from_result = false;  ///< set from a lit result (else from the target, or not yet)
+  float m_exposure_stops = 0.f;   ///< the user's adjustment
+  bool m_show_lights = true;
+  std::vector<Rgb> m_radiance;    ///< I(p) of m_radiance_lights, per vertex
+  bool m_radiance_final = false;  ///< from the exact display stage
+  Lighting m_radiance_lights;
+  bool m_illumination_pending = false;
+  uint64_t m_colours_revision = 0;
+  std::optional<Lighting> m_requested_lights;  ///< what the worker was last asked for
+  bool m_colours_dirty = true;
+  std::string m_last_activity = "idle";
+
+  // Tool state.
+  bool m_dragging_camera = false;
+  std::unique_ptr<Stroke> m_stroke;             ///< brush/eraser stroke in progress
+  BrushSettings m_recorded_brush;               ///< brush as last recorded
+  Tool m_recorded_tool = Tool::Brush;
+  std::vector<Vec3> m_region;                   ///< points of a shadow/spot/adjust drag
+  bool m_region_drag = false;
+  std::optional<Vec3> m_occluder_point;         ///< shadow tool: the selected occluder (a point on it)
+  std::vector<nlohmann::json> m_shadow_pairs;   ///< shadow tool: requests collected so far
+  std::optional<Vec3> m_erase_click;            ///< erase-shadow click awaiting a pick
+  std::vector<ShadowPair> m_pair_choices;
+  Rgb m_adjust_multiplier{1.2f};
+  float m_spot_falloff = 2.f;
+  int m_cut_k = 0;
+  std::optional<SurfacePick> m_hover;
+
+  // Solve timing (stroke release → fine-tuned lights → display).
+  std::optional<Clock::time_point> m_stroke_released;
+  bool m_fine_tune_after_stroke = false;
+  bool m_stroke_shown = false;    ///< its lights are on screen (a quick stage so far)
+  std::thread m_job_waker;        ///< wakes the event loop when a solve ends
+  std::atomic<bool> m_stop_waker{false};
+
+  std::string m_target_path, m_lights_path, m_screenshot_path;  ///< the Files panel's fields
+
+  std::vector<std::string> m_log;
+  std::string m_status;
+  bool m_show_help = false;
+  bool m_headless = false;  ///< replaying: a failing action is an error, not a status line
+};
+
+} // namespace hilight::painter

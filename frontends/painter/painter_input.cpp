@@ -1,0 +1,234 @@
+// Mouse and keyboard: camera moves, the tools, shortcuts. Everything that
+// changes the document goes through perform() (applied by the player and
+// recorded); brush strokes paint live and are recorded when released.
+#include "painter_app.hpp"
+#include "ui/screen_pick.hpp"
+
+#include <cmath>
+#include <imgui.h>
+
+namespace hilight::painter {
+
+namespace {
+
+nlohmann::json points_json(const std::vector<Vec3>& points) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Vec3& p : points) out.push_back({p.x, p.y, p.z});
+  return out;
+}
+
+/// At most `limit` points, evenly thinned (a long drag samples every frame).
+std::vector<Vec3> thinned(const std::vector<Vec3>& points, size_t limit) {
+  if (points.size() <= limit) return points;
+  std::vector<Vec3> out;
+  for (size_t i = 0; i < limit; ++i) out.push_back(points[i * (points.size() - 1) / (limit - 1)]);
+  return out;
+}
+
+constexpr float kClickPixels = 4.f;
+
+} // namespace
+
+std::optional<SurfacePick> PainterApp::pick_at_mouse() const {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
+  int w = 1, h = 1;
+  m_window->framebuffer_size(w, h);
+  return ui::pick_pixel(*m_rays, m_camera, io.MousePos.x * sx, io.MousePos.y * sy, float(w), float(h));
+}
+
+void PainterApp::handle_input() {
+  handle_keys();
+  handle_camera_input();
+  handle_tool_input();
+}
+
+void PainterApp::handle_camera_input() {
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool over_ui = io.WantCaptureMouse && !m_dragging_camera;
+  const ImVec2 delta = io.MouseDelta;
+  const float height = std::max(io.DisplaySize.y, 1.f);
+  // Right drag (or Alt + left) orbits; middle drag (or Shift + right) pans; the wheel zooms.
+  const bool orbit = !io.KeyShift && (ImGui::IsMouseDown(ImGuiMouseButton_Right) || (io.KeyAlt && ImGui::IsMouseDown(ImGuiMouseButton_Left)));
+  const bool pan = ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (io.KeyShift && ImGui::IsMouseDown(ImGuiMouseButton_Right));
+  const bool start = ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle) ||
+                     (io.KeyAlt && ImGui::IsMouseClicked(ImGuiMouseButton_Left));
+  if (start && !over_ui) m_dragging_camera = true;
+  if (m_dragging_camera && !orbit && !pan) {
+    m_dragging_camera = false;
+    // One action per drag: where the camera ended (replays see the same view).
+    const Camera c = m_camera.to_camera();
+    record(Action{"camera", {{"eye", {c.eye.x, c.eye.y, c.eye.z}}, {"target", {c.target.x, c.target.y, c.target.z}}, {"fov", c.fov_deg}}});
+  }
+  if (m_dragging_camera && (delta.x != 0.f || delta.y != 0.f)) {
+    if (orbit) m_camera.orbit(-0.4f * delta.x, 0.4f * delta.y);
+    else if (pan) m_camera.pan(-delta.x / height, delta.y / height);
+    m_last_activity = "camera";
+  }
+  if (!io.WantCaptureMouse && io.MouseWheel != 0.f) {
+    m_camera.zoom(std::pow(0.9f, io.MouseWheel));
+    m_last_activity = "camera";
+    record(Action{"camera", {{"zoom", std::pow(0.9f, io.MouseWheel)}}});
+  }
+}
+
+void PainterApp::handle_keys() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureKeyboard) return;
+  auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  if (io.KeyCtrl) {
+    if (pressed(GLFW_KEY_Z) && !io.KeyShift) perform(Action{"undo", nlohmann::json::object()});
+    if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) perform(Action{"redo", nlohmann::json::object()});
+    return;
+  }
+  auto select = [&](const char* tool) { perform(Action{"tool", {{"tool", tool}}}); };
+  if (pressed(GLFW_KEY_B)) select("brush");
+  if (pressed(GLFW_KEY_E)) select("eraser");
+  if (pressed(GLFW_KEY_S)) select("shadow");
+  if (pressed(GLFW_KEY_X)) select("erase_shadow");
+  if (pressed(GLFW_KEY_P)) select("spot");
+  if (pressed(GLFW_KEY_A)) select("adjust");
+  if (pressed(GLFW_KEY_1)) { m_view = ui::ViewMode::Result; m_colours_dirty = true; }
+  if (pressed(GLFW_KEY_2)) { m_view = ui::ViewMode::Target; m_colours_dirty = true; }
+  if (pressed(GLFW_KEY_3)) { m_view = ui::ViewMode::Difference; m_colours_dirty = true; }
+  if (pressed(GLFW_KEY_L)) m_show_lights = !m_show_lights;
+  if (pressed(GLFW_KEY_F1) || pressed(GLFW_KEY_H)) m_show_help = !m_show_help;
+  if (pressed(GLFW_KEY_F5)) start_job("solve");
+  if (pressed(GLFW_KEY_F6)) start_job("fine_tune");
+  if (pressed(GLFW_KEY_F7)) start_job("add_lights");
+  if (pressed(GLFW_KEY_ESCAPE) && m_job->busy()) m_job->cancel();
+  if (pressed(GLFW_KEY_F)) m_camera = ui::OrbitCamera::framing(m_scene->bounds, aspect());
+  if (pressed(GLFW_KEY_LEFT_BRACKET) || pressed(GLFW_KEY_RIGHT_BRACKET)) {
+    BrushSettings brush = m_player->brush();
+    brush.radius *= pressed(GLFW_KEY_LEFT_BRACKET) ? 0.8f : 1.25f;
+    perform(Action{"brush", {{"radius", brush.radius}}});
+  }
+  // Arrow keys orbit, +/- zoom: the camera without a mouse.
+  const float step = 3.f;
+  bool moved = false;
+  if (ImGui::IsKeyDown(GLFW_KEY_LEFT)) { m_camera.orbit(step, 0.f); moved = true; }
+  if (ImGui::IsKeyDown(GLFW_KEY_RIGHT)) { m_camera.orbit(-step, 0.f); moved = true; }
+  if (ImGui::IsKeyDown(GLFW_KEY_UP)) { m_camera.orbit(0.f, step); moved = true; }
+  if (ImGui::IsKeyDown(GLFW_KEY_DOWN)) { m_camera.orbit(0.f, -step); moved = true; }
+  if (ImGui::IsKeyDown(GLFW_KEY_EQUAL) || ImGui::IsKeyDown(GLFW_KEY_KP_ADD)) { m_camera.zoom(0.97f); moved = true; }
+  if (ImGui::IsKeyDown(GLFW_KEY_MINUS) || ImGui::IsKeyDown(GLFW_KEY_KP_SUBTRACT)) { m_camera.zoom(1.03f); moved = true; }
+  if (moved) m_last_activity = "camera";
+}
+
+void PainterApp::start_job(const std::string& type) {
+  if (m_job->busy()) {
+    status("a " + std::string(type == "solve" ? "solve" : "job") + " is already running (Esc cancels it)");
+    return;
+  }
+  perform(Action{type, nlohmann::json::object()});
+}
+
+void PainterApp::handle_tool_input() {
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool over_ui = io.WantCaptureMouse;
+  m_hover = over_ui || m_dragging_camera ? std::nullopt : pick_at_mouse();
+  if (m_dragging_camera || io.KeyAlt) return;
+  const Tool tool = m_player->tool();
+  const bool pressed = ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !over_ui;
+  const bool down = ImGui::IsMouseDown(ImGuiMouseButton_Left);
+  const bool released = ImGui::IsMouseReleased(ImGuiMouseButton_Left);
+
+  if (tool == Tool::Brush || tool == Tool::Eraser) {
+    if (pressed) {
+      m_stroke = std::make_unique<Stroke>(*m_document, m_player->brush(), tool == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint);
+      if (m_view == ui::ViewMode::Result) {
+        m_view = ui::ViewMode::Target;  // paint is seen in the target view
+        m_colours_dirty = true;
+      }
+      if (m_hover) m_stroke->dab(*m_hover);
+    } else if (m_stroke && down && m_hover && (io.MouseDelta.x != 0.f || io.MouseDelta.y != 0.f)) {
+      if (m_stroke->points().empty()) m_stroke->dab(*m_hover);
+      else m_stroke->drag_to(*m_hover);
+    }
+    if (m_stroke) m_last_activity = "stroke";
+    if (m_stroke && released) finish_stroke();
+    return;
+  }
+  if (tool == Tool::EraseShadow) {
+    if (pressed && m_hover) {
+      auto pairs = find_shadow_pairs(m_player->objects(), *m_rays, m_document->state().lights, *m_hover);
+      const Vec3 p = m_hover->position;
+      if (pairs.empty()) status("no light is blocked here: nothing to erase");
+      else if (pairs.size() == 1) perform(Action{"erase_shadow", {{"world", {p.x, p.y, p.z}}}});
+      else {
+        m_erase_click = p;
+        m_pair_choices = pairs;  // the "Which shadow?" popup asks which to erase
+      }
+    }
+    return;
+  }
+  // Shadow, spot and adjust take a dragged region; a click in the shadow tool selects the occluder.
+  if (pressed) begin_region_drag();
+  if (m_region_drag && down && m_hover) {
+    if (m_region.empty() || glm::length(m_region.back() - m_hover->position) > 0.005f * m_scene->diagonal())
+      m_region.push_back(m_hover->position);
+  }
+  if (m_region_drag) m_last_activity = "stroke";
+  if (m_region_drag && released) finish_region_drag();
+}
+
+void PainterApp::finish_stroke() {
+  const BrushMode mode = m_player->tool() == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint;
+  std::vector<Vec3> points = m_stroke->points();
+  m_stroke->finish();
+  m_stroke.reset();
+  if (points.empty()) return;
+  record(Action{"stroke", {{"world", points_json(points)}, {"mode", mode == BrushMode::Erase ? "erase" : "paint"}}});
+  // §4.2 fine-tune: the lights follow the edit at once when there are any.
+  if (m_options.auto_fine_tune && !m_document->state().lights.empty() && !m_job->busy()) {
+    m_stroke_released = Clock::now();
+    m_fine_tune_after_stroke = perform(Action{"fine_tune", nlohmann::json::object()});
+    if (!m_fine_tune_after_stroke) m_stroke_released.reset();
+  }
+}
+
+void PainterApp::begin_region_drag() {
+  m_region.clear();
+  m_region_drag = true;
+}
+
+void PainterApp::finish_region_drag() {
+  m_region_drag = false;
+  const Tool tool = m_player->tool();
+  const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
+  const bool click = std::hypot(drag.x, drag.y) < kClickPixels;
+  std::vector<Vec3> region = thinned(m_region, 256);
+  m_region.clear();
+  if (tool == Tool::Shadow && click) {
+    if (m_hover) {
+      m_occluder_point = m_hover->position;
+      const Hit hit = m_rays->closest_point(m_hover->position, 0.01f * m_scene->diagonal());
+      if (hit.valid())
+        status("occluder: " + m_player->objects().name(m_player->objects().object_of_triangle(hit.triangle)) +
+               " - now drag where its shadow should fall");
+    }
+    return;
+  }
+  if (region.empty()) return;
+  if (tool == Tool::Shadow) {
+    if (!m_occluder_point) {
+      status("click the object that casts the shadow first");
+      return;
+    }
+    const Vec3 o = *m_occluder_point;
+    m_shadow_pairs.push_back({{"occluder", {o.x, o.y, o.z}}, {"world", points_json(region)}});
+    status(std::to_string(m_shadow_pairs.size()) + " shadow request(s): press 'Lights from shadows', or add more");
+  } else if (tool == Tool::Spot) {
+    const Camera c = m_camera.to_camera();
+    const Vec3 d = glm::normalize(c.target - c.eye);
+    perform(Action{"spot_region",
+                   {{"world", points_json(region)}, {"eye", {c.eye.x, c.eye.y, c.eye.z}}, {"direction", {d.x, d.y, d.z}},
+                    {"falloff_deg", m_spot_falloff}}});
+  } else if (tool == Tool::Adjust) {
+    const Rgb& m = m_adjust_multiplier;
+    perform(Action{"adjust_region",
+                   {{"world", points_json(region)}, {"multiplier", {m.r, m.g, m.b}}, {"radius", m_player->brush().radius}}});
+  }
+}
+
+} // namespace hilight::painter

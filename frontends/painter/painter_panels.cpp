@@ -1,0 +1,284 @@
+// The ImGui panels: tools and brush, view, solve, lights, files, help, status.
+// Buttons call perform() with the same actions a session script holds.
+#include "painter_app.hpp"
+
+#include <cstdio>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace hilight::painter {
+
+namespace {
+
+void tip(const char* text) {
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+const char* kShortcuts[][2] = {
+    {"Right drag / Alt+left drag", "orbit"},
+    {"Middle drag / Shift+right drag", "pan"},
+    {"Wheel, + / -", "zoom"},
+    {"Arrow keys", "orbit"},
+    {"F", "frame the whole scene"},
+    {"Left drag", "use the tool (paint, erase, mark a region)"},
+    {"B / E", "brush / eraser"},
+    {"S", "shadow tool: click the occluder, drag its shadow"},
+    {"X", "erase-shadow tool: click a shadow"},
+    {"P", "spotlight tool: drag the region it should light"},
+    {"A", "adjust tool: drag a region to brighten / tint"},
+    {"[ / ]", "smaller / larger brush"},
+    {"1 / 2 / 3", "view result I(p) / target / |difference|"},
+    {"L", "show / hide lights"},
+    {"F5 / F6 / F7", "solve / fine-tune / add lights"},
+    {"Esc", "cancel the running solve"},
+    {"Ctrl+Z / Ctrl+Y", "undo / redo"},
+    {"H or F1", "this help"},
+};
+
+} // namespace
+
+void PainterApp::draw_panels() {
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(310, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("hilight paint", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
+  panel_tools();
+  panel_view();
+  panel_solve();
+  panel_lights();
+  panel_files();
+  if (ImGui::Button("Help (H)")) m_show_help = !m_show_help;
+  tip("Keyboard shortcuts and mouse controls");
+  ImGui::End();
+  panel_help();
+  panel_status();
+  popup_shadow_pairs();
+}
+
+void PainterApp::panel_tools() {
+  if (!ImGui::CollapsingHeader("Tools", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  static const struct {
+    Tool tool;
+    const char* label;
+    const char* help;
+  } tools[] = {
+      {Tool::Brush, "Brush (B)", "Paint the illumination you want (target) onto surfaces"},
+      {Tool::Eraser, "Eraser (E)", "Back to \"don't care\": erased surfaces do not constrain the solve"},
+      {Tool::Shadow, "Shadow (S)", "Click an object (the occluder), then drag where its shadow should fall; repeat for more pairs"},
+      {Tool::EraseShadow, "Erase shadow (X)", "Click a shadow: the occluder-light pair casting it is painted away"},
+      {Tool::Spot, "Spotlight (P)", "Drag over the region a spotlight should light; it stands at the camera and looks where you look"},
+      {Tool::Adjust, "Adjust (A)", "Drag over a region: only the lights that light it change by the multiplier"},
+  };
+  for (size_t i = 0; i < std::size(tools); ++i) {
+    if (i % 2) ImGui::SameLine(150);
+    if (ImGui::RadioButton(tools[i].label, m_player->tool() == tools[i].tool))
+      perform(Action{"tool", {{"tool", to_string(tools[i].tool)}}});
+    tip(tools[i].help);
+  }
+  BrushSettings brush = m_player->brush();
+  bool changed = false;
+  const float diagonal = m_scene->diagonal();
+  changed |= ImGui::SliderFloat("radius", &brush.radius, 0.002f * diagonal, 0.25f * diagonal, "%.3f", ImGuiSliderFlags_Logarithmic);
+  tip("Brush radius in scene units ([ and ] change it)");
+  changed |= ImGui::ColorEdit3("colour", &brush.colour.r, ImGuiColorEditFlags_Float);
+  tip("Colour of the light you paint (linear RGB)");
+  changed |= ImGui::SliderFloat("brightness", &brush.brightness, 0.f, 20.f, "%.2f", ImGuiSliderFlags_Logarithmic);
+  tip("Radiance painted = colour x brightness");
+  changed |= ImGui::SliderFloat("hardness", &brush.hardness, 0.f, 1.f);
+  tip("0: soft edge from the centre, 1: a hard disc");
+  if (changed) {
+    // Applied live; recorded as one brush action when the slider is let go.
+    m_player->set_brush(brush);
+  }
+  if (!ImGui::IsAnyItemActive() && !(brush == m_recorded_brush)) {
+    record(Action{"brush",
+                  {{"radius", brush.radius}, {"colour", {brush.colour.r, brush.colour.g, brush.colour.b}}, {"brightness", brush.brightness},
+                   {"hardness", brush.hardness}}});
+    m_recorded_brush = brush;
+  }
+  if (m_player->tool() == Tool::Shadow) {
+    ImGui::Text("%zu shadow request(s)", m_shadow_pairs.size());
+    if (ImGui::Button("Lights from shadows") && !m_shadow_pairs.empty()) {
+      if (perform(Action{"shadow", {{"pairs", m_shadow_pairs}}})) m_shadow_pairs.clear();
+    }
+    tip("Estimate one point light per consistent set of occluder-shadow pairs (paper Fig. 5)");
+    ImGui::SameLine();
+    if (ImGui::Button("Clear requests")) {
+      m_shadow_pairs.clear();
+      m_occluder_point.reset();
+    }
+  }
+  if (m_player->tool() == Tool::Spot) {
+    ImGui::SliderFloat("soft edge", &m_spot_falloff, 0.f, 20.f, "%.1f deg");
+    tip("Width of the spotlight's soft edge, inside its cutoff");
+  }
+  if (m_player->tool() == Tool::Adjust) {
+    ImGui::ColorEdit3("multiplier", &m_adjust_multiplier.r, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    tip("Per channel: 1.2 = 20% brighter, below 1 darker; only lights that light the region change");
+  }
+}
+
+void PainterApp::panel_view() {
+  if (!ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  int mode = int(m_view);
+  bool changed = ImGui::RadioButton("result (1)", &mode, int(ui::ViewMode::Result));
+  tip("The scene lit by the current lights (the renderer's per-vertex illumination)");
+  ImGui::SameLine();
+  changed |= ImGui::RadioButton("target (2)", &mode, int(ui::ViewMode::Target));
+  tip("What you painted; hatched surfaces are \"don't care\"");
+  ImGui::SameLine();
+  changed |= ImGui::RadioButton("|diff| (3)", &mode, int(ui::ViewMode::Difference));
+  tip("|target - result| as a heat map (black, blue, red, yellow = full white)");
+  if (changed) {
+    m_view = ui::ViewMode(mode);
+    m_colours_dirty = true;
+  }
+  if (ImGui::SliderFloat("exposure", &m_exposure_stops, -6.f, 6.f, "%+.1f stops")) m_colours_dirty = true;
+  tip("Display brightness only; does not change lights or target");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("auto")) {
+    m_exposure_from_result = false;
+    m_exposure_stops = 0.f;
+    m_colours_dirty = true;
+  }
+  tip("Pick the exposure again from the current result");
+  ImGui::Checkbox("lights (L)", &m_show_lights);
+  tip("Light markers; spotlights show their cone");
+  if (m_illumination_pending) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("rendering...");
+  }
+}
+
+void PainterApp::panel_solve() {
+  if (!ImGui::CollapsingHeader("Solve", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool busy = m_job->busy();
+  ImGui::BeginDisabled(busy);
+  if (ImGui::Button("Solve (F5)")) start_job("solve");
+  tip("Find how many lights, where and how bright, for the painted target (runs in the background)");
+  ImGui::SameLine();
+  if (ImGui::Button("Fine-tune (F6)")) start_job("fine_tune");
+  tip("Re-optimize the current lights for the edited target; no light is added or removed");
+  ImGui::SameLine();
+  if (ImGui::Button("Add lights (F7)")) start_job("add_lights");
+  tip("Solve for what the current lights leave unlit and append the new lights; old lights stay");
+  ImGui::EndDisabled();
+  ImGui::Checkbox("fine-tune after each stroke", &m_options.auto_fine_tune);
+  tip("When there are lights, every brush stroke starts a fine-tune (paper section 4.2)");
+  if (busy) {
+    ImGui::ProgressBar(-1.f * float(ImGui::GetTime()), ImVec2(-1, 0), m_job->progress().c_str());
+    if (ImGui::Button("Cancel (Esc)")) m_job->cancel();
+    tip("Stops the solve at its next stage; the lights stay as they were");
+  }
+  const size_t cuts = busy ? 0 : m_job->cut_count();
+  if (cuts > 0) {
+    if (m_cut_k <= 0) m_cut_k = int(std::min<size_t>(cuts, std::max<size_t>(1, m_document->state().lights.size())));
+    ImGui::SliderInt("light count", &m_cut_k, 1, int(cuts));
+    tip("Move along the light hierarchy's cuts without a new solve");
+    if (ImGui::IsItemDeactivatedAfterEdit()) perform(Action{"cut", {{"k", m_cut_k}}});
+  }
+  ImGui::BeginDisabled(!m_document->can_undo());
+  if (ImGui::Button("Undo")) perform(Action{"undo", nlohmann::json::object()});
+  tip(("Ctrl+Z: " + m_document->undo_label()).c_str());
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!m_document->can_redo());
+  if (ImGui::Button("Redo")) perform(Action{"redo", nlohmann::json::object()});
+  tip(("Ctrl+Y: " + m_document->redo_label()).c_str());
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::Text("%zu painted vertices", m_document->painted_count());
+}
+
+void PainterApp::panel_lights() {
+  const Lighting& lights = m_document->state().lights;
+  char title[64];
+  std::snprintf(title, sizeof title, "Lights (%zu)###lights", lights.size());
+  if (!ImGui::CollapsingHeader(title)) return;
+  for (size_t i = 0; i < lights.size(); ++i) {
+    const Light& l = lights[i];
+    ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  I (%.3g, %.3g, %.3g)", i, to_string(l.type), l.position.x, l.position.y,
+                l.position.z, l.intensity.r, l.intensity.g, l.intensity.b);
+    if (l.type == LightType::Spot && ImGui::IsItemHovered())
+      ImGui::SetTooltip("direction (%.2f, %.2f, %.2f), cutoff %.1f deg, soft edge %.1f deg", l.direction.x, l.direction.y,
+                        l.direction.z, l.cutoff_deg, l.falloff_deg);
+  }
+}
+
+void PainterApp::panel_files() {
+  if (!ImGui::CollapsingHeader("Files")) return;
+  ImGui::InputText("target", &m_target_path);
+  tip("Target PLY, the format `hilight solve --target` reads");
+  if (ImGui::Button("Open target")) perform(Action{"load_target", {{"path", m_target_path}}});
+  ImGui::SameLine();
+  if (ImGui::Button("Save target")) perform(Action{"save_target", {{"path", m_target_path}}});
+  ImGui::InputText("lights", &m_lights_path);
+  tip("Lights JSON, as `hilight render --lights` and `hilight solve -o` use");
+  if (ImGui::Button("Load lights")) perform(Action{"load_lights", {{"path", m_lights_path}}});
+  ImGui::SameLine();
+  if (ImGui::Button("Save lights")) perform(Action{"save_lights", {{"path", m_lights_path}}});
+  ImGui::InputText("image", &m_screenshot_path);
+  if (ImGui::Button("Screenshot")) perform(Action{"screenshot", {{"path", m_screenshot_path}}});
+  tip("The scene view as PNG (without these panels)");
+  if (!m_record_path.empty()) ImGui::TextWrapped("Recording to %s", m_record_path.c_str());
+}
+
+void PainterApp::panel_help() {
+  if (!m_show_help) return;
+  ImGui::SetNextWindowPos(ImVec2(330, 8), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Help", &m_show_help, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::TextUnformatted("Paint the light you want; hilight finds the lights.");
+  ImGui::Separator();
+  if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg)) {
+    for (const auto& row : kShortcuts) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(row[0]);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(row[1]);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+void PainterApp::panel_status() {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x, viewport->WorkPos.y + viewport->WorkSize.y), ImGuiCond_Always, ImVec2(0.f, 1.f));
+  ImGui::SetNextWindowSize(ImVec2(viewport->WorkSize.x, 0));
+  ImGui::Begin("status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::Text("%s | %zu lights | %s", to_string(m_player->tool()), m_document->state().lights.size(),
+              m_job->busy() ? ("working: " + m_job->progress()).c_str() : m_status.c_str());
+  if (ImGui::IsItemHovered() && !m_log.empty()) {
+    ImGui::BeginTooltip();
+    for (size_t i = m_log.size() > 12 ? m_log.size() - 12 : 0; i < m_log.size(); ++i) ImGui::TextUnformatted(m_log[i].c_str());
+    ImGui::EndTooltip();
+  }
+  ImGui::End();
+}
+
+void PainterApp::popup_shadow_pairs() {
+  const char* name = "Which shadow?";
+  if (!m_pair_choices.empty() && !ImGui::IsPopupOpen(name)) ImGui::OpenPopup(name);
+  if (!ImGui::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::TextUnformatted("Several occluder-light pairs shadow this point. Erase which?");
+  for (size_t i = 0; i < m_pair_choices.size(); ++i) {
+    const ShadowPair& pair = m_pair_choices[i];
+    char label[160];
+    std::snprintf(label, sizeof label, "%s blocking light %zu##%zu", m_player->objects().name(pair.occluder).c_str(), pair.light, i);
+    if (ImGui::Button(label)) {
+      const Vec3 p = *m_erase_click;
+      perform(Action{"erase_shadow", {{"world", {p.x, p.y, p.z}}, {"pick", i}}});
+      m_pair_choices.clear();
+      ImGui::CloseCurrentPopup();
+    }
+  }
+  if (ImGui::Button("Cancel")) {
+    m_pair_choices.clear();
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+} // namespace hilight::painter

@@ -1,0 +1,107 @@
+// The window's side of session actions: camera moves, screen picking and
+// screenshots for the core's SessionPlayer; applying and recording actions.
+#include "hilight/error.hpp"
+#include "painter_app.hpp"
+#include "ui/screen_pick.hpp"
+#include "ui/screenshot.hpp"
+
+#include <cstdlib>
+#include <ctime>
+
+namespace hilight::painter {
+
+namespace {
+
+Vec3 vec3_of(const nlohmann::json& v) { return Vec3(v[0].get<float>(), v[1].get<float>(), v[2].get<float>()); }
+
+} // namespace
+
+PlayerHooks PainterApp::make_hooks() {
+  PlayerHooks hooks;
+  hooks.camera = [this](const Action& action) { apply_camera_action(action); };
+  hooks.camera_pose = [this] {
+    Camera camera = m_camera.to_camera();
+    return CameraPose{camera.eye, glm::normalize(camera.target - camera.eye)};
+  };
+  hooks.pick_screen = [this](const std::array<float, 2>& xy) {
+    int w = 1, h = 1;
+    m_window->framebuffer_size(w, h);
+    return ui::pick_pixel(*m_rays, m_camera, xy[0], xy[1], float(w), float(h));
+  };
+  hooks.screenshot = [this](const std::filesystem::path& path) { screenshot(path); };
+  hooks.log = [this](const std::string& line) { status(line); };
+  return hooks;
+}
+
+void PainterApp::apply_camera_action(const Action& action) {
+  const nlohmann::json& p = action.params;
+  if (p.contains("eye")) {
+    Camera camera = m_camera.to_camera();
+    camera.eye = vec3_of(p["eye"]);
+    camera.target = vec3_of(p["target"]);
+    if (glm::length(camera.eye - camera.target) <= 0.f) throw InputError("camera: eye and target coincide");
+    m_camera = ui::OrbitCamera::from_camera(camera, m_scene->diagonal());
+  }
+  if (p.contains("fov")) {
+    Camera camera = m_camera.to_camera();
+    camera.fov_deg = p["fov"].get<float>();
+    m_camera = ui::OrbitCamera::from_camera(camera, m_scene->diagonal());
+  }
+  if (p.contains("orbit")) m_camera.orbit(p["orbit"][0].get<float>(), p["orbit"][1].get<float>());
+  if (p.contains("pan")) m_camera.pan(p["pan"][0].get<float>(), p["pan"][1].get<float>());
+  if (p.contains("zoom")) m_camera.zoom(p["zoom"].get<float>());
+}
+
+bool PainterApp::perform(const Action& action) {
+  try {
+    m_player->apply(action);
+  } catch (const InputError& e) {
+    if (m_headless) throw;
+    status(e.what());
+    return false;
+  }
+  record(action);
+  return true;
+}
+
+void PainterApp::record(const Action& action) {
+  m_recorder.record(action);
+  if (action.type == "brush") m_recorded_brush = m_player->brush();
+  if (m_record_path.empty()) return;
+  try {
+    m_recorder.save(m_record_path);
+  } catch (const std::exception& e) {
+    const std::string where = m_record_path.string();
+    m_record_path.clear();  // say it once, then stop trying
+    status("cannot record the session to " + where + ": " + e.what());
+  }
+}
+
+std::filesystem::path PainterApp::default_record_path() const {
+  // $XDG_STATE_HOME/hilight/sessions/ (the XDG place for "history"), else ~/.local/state/...
+  std::filesystem::path base;
+  if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state) base = state;
+  else if (const char* home = std::getenv("HOME"); home && *home) base = std::filesystem::path(home) / ".local" / "state";
+  else return {};
+  const std::filesystem::path dir = base / "hilight" / "sessions";
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return {};
+  char stamp[32];
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+  return dir / (m_options.scene.stem().string() + "-" + stamp + ".json");
+}
+
+void PainterApp::screenshot(const std::filesystem::path& path) {
+  settle();
+  draw_scene();
+  int w = 1, h = 1;
+  m_window->framebuffer_size(w, h);
+  ui::save_screenshot(path, w, h);
+  status("screenshot " + path.string());
+}
+
+} // namespace hilight::painter

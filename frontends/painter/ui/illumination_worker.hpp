@@ -1,0 +1,65 @@
+#pragma once
+/// Computes the result view's per-vertex illumination I(p) off the UI thread:
+/// the renderer illuminates every scene vertex under the current lights.
+/// Progressive: a list of renderers from quick to exact (e.g. Embree with a
+/// few bounce samples, then as the user set it up); each stage's result is
+/// shown as it comes. Only the newest request matters: a request made while
+/// one runs replaces any that waits and skips the running one's later stages.
+#include "hilight/renderer.hpp"
+#include "hilight/scene.hpp"
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace hilight::painter::ui {
+
+struct Illumination {
+  uint64_t tag = 0;            ///< the caller's label of the request (e.g. a document revision)
+  bool final = true;           ///< from the last (exact) stage
+  Lighting lights;             ///< what was rendered
+  std::vector<Rgb> radiance;   ///< per scene vertex
+  double seconds = 0;
+};
+
+class IlluminationWorker {
+public:
+  /// `stages` (at least one) bound to `scene`, quick to exact; used only by
+  /// the worker's thread. `on_result` (optional) is called from that thread
+  /// after each result is ready (the UI wakes its event loop with it).
+  IlluminationWorker(std::vector<std::unique_ptr<Renderer>> stages, const Scene& scene,
+                     std::function<void()> on_result = {});
+  ~IlluminationWorker();
+  IlluminationWorker(const IlluminationWorker&) = delete;
+  IlluminationWorker& operator=(const IlluminationWorker&) = delete;
+
+  void request(const Lighting& lights, uint64_t tag);
+  /// The newest finished result not taken yet.
+  std::optional<Illumination> take();
+  /// True while a request waits or runs.
+  bool busy() const;
+  /// Blocks until nothing waits or runs (headless replay, screenshots).
+  void wait_idle();
+  /// The error of the last failed request ("" if none): shown in the UI.
+  std::string error() const;
+
+private:
+  void run();
+
+  std::vector<std::unique_ptr<Renderer>> m_stages;
+  std::function<void()> m_on_result;
+  SurfacePoints m_points;
+  mutable std::mutex m_mutex;
+  std::condition_variable m_wake, m_idle;
+  std::optional<std::pair<Lighting, uint64_t>> m_pending;
+  std::optional<Illumination> m_done;
+  bool m_running = false, m_stop = false;
+  std::string m_error;
+  std::thread m_thread;
+};
+
+} // namespace hilight::painter::ui

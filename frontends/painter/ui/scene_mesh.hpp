@@ -1,0 +1,42 @@
+#pragma once
+/// The scene's triangles on the GPU with one display colour per vertex (the
+/// colours change with the view mode and the lights; the geometry never does).
+#include "hilight/scene.hpp"
+#include "ui/gl_program.hpp"
+
+#include <glm/glm.hpp>
+#include <memory>
+#include <vector>
+
+namespace hilight::painter::ui {
+
+/// What one vertex shows: linear display RGB in [0, 1] (already exposed and
+/// tone-mapped; the shader only encodes sRGB) and whether to hatch it, which
+/// marks "don't care" in the target view.
+struct VertexColour {
+  glm::vec3 rgb{0.f};
+  float hatch = 0.f;
+};
+
+class SceneMesh {
+public:
+  explicit SceneMesh(const Scene& scene);
+  ~SceneMesh();
+  SceneMesh(const SceneMesh&) = delete;
+  SceneMesh& operator=(const SceneMesh&) = delete;
+
+  /// One entry per scene vertex.
+  void set_colours(const std::vector<VertexColour>& colours);
+  /// Back faces are culled: rooms are wound inward, so from outside one sees
+  /// in through the near walls, and each vertex's colour is that of the side
+  /// its normal faces.
+  void draw(const glm::mat4& view_projection) const;
+
+private:
+  GLuint m_vao = 0, m_positions = 0, m_colours = 0, m_indices = 0;
+  GLsizei m_index_count = 0;
+  size_t m_vertex_count = 0;
+  std::unique_ptr<GlProgram> m_program;
+};
+
+} // namespace hilight::painter::ui

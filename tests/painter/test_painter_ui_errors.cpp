@@ -1,0 +1,110 @@
+// The painter fails cleanly: one `hilight: error:` line and a non-zero exit,
+// no crash, when there is no display, no OpenGL 3.3, bad geometry or a bad
+// session script.
+#include "../support.hpp"
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <iostream>
+#include <optional>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+
+const std::string kRoom = HILIGHT_SOURCE_DIR "/scenes/room.obj";
+
+/// Sets (or, with nullopt, removes) an environment variable for one scope:
+/// the launcher child inherits the test's environment.
+class ScopedEnv {
+public:
+  ScopedEnv(const char* name, std::optional<std::string> value) : m_name(name) {
+    if (const char* old = std::getenv(name)) m_old = old;
+    if (value) ::setenv(name, value->c_str(), 1);
+    else ::unsetenv(name);
+  }
+  ~ScopedEnv() {
+    if (m_old) ::setenv(m_name, m_old->c_str(), 1);
+    else ::unsetenv(m_name);
+  }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+private:
+  const char* m_name;
+  std::optional<std::string> m_old;
+};
+
+void check_one_line_error(const test::RunResult& r, const std::string& mentions) {
+  INFO("stderr: " << r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(test::line_count(r.err) == 1);
+  CHECK_THAT(r.err, StartsWith("hilight: error: "));
+  CHECK_THAT(r.err, Contains(mentions));
+}
+
+} // namespace
+
+TEST_CASE("painter ui: no display gives one clear error line", "[painter-ui]") {
+  ScopedEnv no_x("DISPLAY", std::nullopt);
+  ScopedEnv no_wayland("WAYLAND_DISPLAY", std::nullopt);
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--no-record"}), "no display");
+  // A display name that leads nowhere.
+  ScopedEnv nowhere("DISPLAY", std::string(":987"));
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--no-record"}), "cannot open the display ':987'");
+}
+
+TEST_CASE("painter ui: no OpenGL 3.3 core context gives one clear error line", "[painter-ui]") {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) {
+    std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;
+    return;
+  }
+  // Mesa can be told to offer OpenGL 2.1 only: the 3.3 core context is then refused.
+  ScopedEnv old_gl("MESA_GL_VERSION_OVERRIDE", std::string("2.1"));
+  const fs::path dir = test::output_dir("painter_ui_no_gl");
+  test::write_text(dir / "empty.json", R"({"actions": []})");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--script", (dir / "empty.json").string(), "--exit", "--no-record"}),
+                       "no OpenGL 3.3 core context");
+}
+
+TEST_CASE("painter ui: bad geometry and bad scripts give one clear error line", "[painter-ui]") {
+  const fs::path dir = test::output_dir("painter_ui_bad_input");
+  test::write_text(dir / "nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
+  check_one_line_error(test::run_hilight({"paint", (dir / "nan.obj").string(), "--no-record"}), "nan.obj");
+  check_one_line_error(test::run_hilight({"paint", (dir / "missing.obj").string(), "--no-record"}), "missing.obj");
+
+  test::write_text(dir / "not_json.json", "{\"actions\": [");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--script", (dir / "not_json.json").string(), "--exit"}),
+                       "not_json.json: not valid JSON");
+  test::write_text(dir / "bad_action.json", R"({"actions": [{"type": "brush", "radius": 0.2}, {"type": "stroke"}]})");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--script", (dir / "bad_action.json").string(), "--exit"}),
+                       "bad_action.json: action 1: stroke: needs exactly one of world, screen");
+  test::write_text(dir / "unknown.json", R"({"actions": [{"type": "teleport"}]})");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--script", (dir / "unknown.json").string(), "--exit"}),
+                       "unknown type 'teleport'");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--size", "10x10"}), "--size");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--renderer", "nosuch"}), "nosuch");
+}
+
+TEST_CASE("painter ui: a script action that fails names the action", "[painter-ui]") {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) {
+    std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;
+    return;
+  }
+  const fs::path dir = test::output_dir("painter_ui_failing_action");
+  // Valid JSON, but fine-tune needs lights and there are none.
+  test::write_text(dir / "fine_tune.json", R"({"actions": [{"type": "fine_tune"}]})");
+  check_one_line_error(
+      test::run_hilight({"paint", kRoom, "--script", (dir / "fine_tune.json").string(), "--exit", "--no-record", "--size", "320x240"}),
+      "action 0 (fine_tune)");
+  // A screen point that hits nothing (the sky above the framed room).
+  test::write_text(dir / "miss.json", R"({"actions": [{"type": "erase_shadow", "screen": [2, 2]}]})");
+  check_one_line_error(
+      test::run_hilight({"paint", kRoom, "--script", (dir / "miss.json").string(), "--exit", "--no-record", "--size", "320x240"}),
+      "nothing under the screen point");
+}
