@@ -31,7 +31,7 @@ void parse_size(const std::string& text, int& width, int& height) {
 int run_paint(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Paint the illumination you want onto a scene; hilight finds the lights", "paint");
   PaintOptions o;
-  std::string scene, target, lights, script, screenshot, record, timings, size = "1280x800", cache_dir;
+  std::string scene, target, lights, script, screenshot, window_screenshot, record, timings, size = "1280x800", cache_dir;
   int threads = 0, bounces = 1;
   bool no_auto = false, no_cache = false;
   app.add_option("scene", scene, "scene file (any format assimp reads)")->required();
@@ -52,6 +52,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
       ->capture_default_str();
   app.add_option("--script", script, "session JSON to replay ({\"actions\": [...]}, docs/painter.md)");
   app.add_option("--screenshot", screenshot, "write the final frame (after the script) as PNG");
+  app.add_option("--window-screenshot", window_screenshot, "the final frame with the panels, as PNG (for bug reports)");
   app.add_flag("--exit", o.exit_after_script, "quit after the script and screenshot (headless replay)");
   app.add_option("--record", record, "record this session here (default: $XDG_STATE_HOME/hilight/sessions/)");
   app.add_flag("--no-record", o.no_record, "do not record the session (unless --record is given)");
@@ -75,13 +76,14 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   o.lights = lights;
   o.script = script;
   o.screenshot = screenshot;
+  o.window_screenshot = window_screenshot;
   o.record = record;
   o.timings = timings;
   o.auto_fine_tune = !no_auto;
   o.job.renderer_settings.push_back("bounces=" + std::to_string(bounces));
   o.job.solve.use_cache = !no_cache;
   o.job.solve.cache_dir = no_cache ? std::filesystem::path() : cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir);
-  if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty())
+  if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty() && window_screenshot.empty())
     throw InputError("paint: --exit without --script, --screenshot or --bench would do nothing");
   set_thread_limit(threads);
 

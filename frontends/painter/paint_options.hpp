@@ -14,6 +14,7 @@ struct PaintOptions {
   std::filesystem::path lights;      ///< lights JSON to start from
   std::filesystem::path script;      ///< session to replay
   std::filesystem::path screenshot;  ///< final frame, written after the script
+  std::filesystem::path window_screenshot;  ///< the same with the panels (what the designer saw)
   std::filesystem::path record;      ///< where this session is recorded ("" = the default place)
   bool no_record = false;            ///< record nothing (an explicit --record still wins)
   std::filesystem::path timings;     ///< frame/latency figures as JSON ("-": stdout)

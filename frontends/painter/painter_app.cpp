@@ -159,6 +159,13 @@ int PainterApp::run() {
     }
   }
   if (!m_options.screenshot.empty()) screenshot(m_options.screenshot);
+  if (!m_options.window_screenshot.empty()) {
+    // ImGui sizes new windows over a frame or two: capture the third.
+    settle();
+    frame(false);
+    frame(false);
+    frame(false, m_options.window_screenshot);
+  }
   if (m_options.bench) run_bench();
   if (!m_options.timings.empty()) {
     const std::string text = m_timer.to_json();
@@ -180,8 +187,7 @@ int PainterApp::run() {
   return 0;
 }
 
-void PainterApp::frame(bool interactive) {
-  const auto start = Clock::now();
+void PainterApp::frame(bool interactive, const std::filesystem::path& capture) {
   if (interactive) {
     // Dragging: draw as fast as the mouse moves. Background work: wake at
     // 30 Hz to show its progress, leaving the cores to the work. Idle: sleep
@@ -193,6 +199,10 @@ void PainterApp::frame(bool interactive) {
   } else {
     glfwPollEvents();
   }
+  // A frame's time is its work, not the wait for events; the input handlers
+  // name what the frame was for.
+  const auto start = Clock::now();
+  if (interactive) m_last_activity = m_stroke || m_region_drag ? "stroke" : "idle";
   poll_workers();
   m_window->begin_frame();
   if (interactive) handle_input();
@@ -200,7 +210,13 @@ void PainterApp::frame(bool interactive) {
   refresh_colours();
   draw_scene();
   draw_panels();
-  m_window->end_frame();
+  m_window->render_imgui();
+  if (!capture.empty()) {
+    int w = 1, h = 1;
+    m_window->framebuffer_size(w, h);
+    ui::save_screenshot(capture, w, h);
+  }
+  m_window->present();
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   if (m_last_activity != "idle" || !interactive) m_timer.add_frame(m_last_activity, ms);
 }
@@ -337,8 +353,10 @@ void PainterApp::build_overlays() {
 }
 
 void PainterApp::status(const std::string& line) {
+  // ImGui's built-in font is ASCII: spell out the core's D̄ (D + combining macron).
   m_status = line;
-  m_log.push_back(line);
+  for (size_t at; (at = m_status.find("D\u0304")) != std::string::npos;) m_status.replace(at, 3, "D-bar");
+  m_log.push_back(m_status);
   if (m_log.size() > 200) m_log.erase(m_log.begin());
   if (m_headless) std::fprintf(stderr, "hilight: %s\n", line.c_str());
 }

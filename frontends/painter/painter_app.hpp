@@ -44,7 +44,8 @@ private:
 
   // --- frames (painter_app.cpp) ---
   /// One frame: events, results from the workers, input, scene, panels.
-  void frame(bool interactive);
+  /// `capture`: also save the whole window, panels included, as PNG.
+  void frame(bool interactive, const std::filesystem::path& capture = {});
   /// Takes finished work: solve results (into the document) and illumination.
   void poll_workers();
   /// Recomputes vertex colours if the view mode, document or illumination changed.

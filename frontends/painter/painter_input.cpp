@@ -79,6 +79,7 @@ void PainterApp::handle_keys() {
   if (io.KeyCtrl) {
     if (pressed(GLFW_KEY_Z) && !io.KeyShift) perform(Action{"undo", nlohmann::json::object()});
     if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) perform(Action{"redo", nlohmann::json::object()});
+    if (pressed(GLFW_KEY_Q)) m_window->request_close();
     return;
   }
   auto select = [&](const char* tool) { perform(Action{"tool", {{"tool", tool}}}); };

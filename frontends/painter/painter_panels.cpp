@@ -33,13 +33,14 @@ const char* kShortcuts[][2] = {
     {"Esc", "cancel the running solve"},
     {"Ctrl+Z / Ctrl+Y", "undo / redo"},
     {"H or F1", "this help"},
+    {"Ctrl+Q", "quit (the session is already recorded)"},
 };
 
 } // namespace
 
 void PainterApp::draw_panels() {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(310, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(350, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("hilight paint", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
   panel_tools();
   panel_view();
@@ -224,7 +225,7 @@ void PainterApp::panel_files() {
 
 void PainterApp::panel_help() {
   if (!m_show_help) return;
-  ImGui::SetNextWindowPos(ImVec2(330, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(370, 8), ImGuiCond_FirstUseEver);
   ImGui::Begin("Help", &m_show_help, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::TextUnformatted("Paint the light you want; hilight finds the lights.");
   ImGui::Separator();
