@@ -5,12 +5,11 @@
 // | property        | default | meaning                                                  |
 // |-----------------|---------|----------------------------------------------------------|
 // | bounces         | 1       | 0 = direct light only, 1 = plus the first bounce (VPLs)  |
-// | shadow_size     | 512     | cube shadow map face resolution, texels (16..4096)       |
+// | shadow_size     | 512     | cube ID map face resolution, texels (16..4096)          |
 // | vpls            | 256     | virtual point lights per light (1..16384)                |
 // | ism_size        | 32      | imperfect shadow map per VPL, texels (power of 2, 4..256) |
 // | points_per_vpl  | 4096    | scene points splatted into each ISM                      |
 // | ism_points      | 262144  | scene point samples in all (VPLs take random subsets)    |
-// | shadow_bias     | 1.0     | normal offset of the shadow lookup, in texels            |
 // | ism_bias        | 0.04    | ISM depth bias, fraction of the distance                 |
 // | vpl_clamp       | 0.05    | VPL distances clamped below this × scene diagonal        |
 // | chunk_mb        | 192     | device memory per batch of lights (one submission each)  |
@@ -54,7 +53,6 @@ std::unique_ptr<hilight::Renderer> create(const hilight::Properties& props) {
   if (s.ism_size & (s.ism_size - 1)) throw InputError("renderer ism-vulkan: ism_size must be a power of two");
   s.points_per_vpl = uint32_t(in_range(props, "points_per_vpl", s.points_per_vpl, 1, 1 << 20));
   s.ism_points = uint32_t(in_range(props, "ism_points", s.ism_points, 1, 1 << 26));
-  s.shadow_bias = float(positive(props, "shadow_bias", s.shadow_bias));
   s.ism_bias = float(positive(props, "ism_bias", s.ism_bias));
   s.vpl_clamp = float(positive(props, "vpl_clamp", s.vpl_clamp));
   s.chunk_mb = uint32_t(in_range(props, "chunk_mb", s.chunk_mb, 1, 1 << 20));

@@ -1,9 +1,14 @@
 #include "ism_renderer.hpp"
 
+#include "crease_candidates.hpp"
+#include "cube_culling.hpp"
+
 #include "hilight/error.hpp"
 #include "hilight/scene.hpp"
 
 #include <algorithm>
+#include <array>
+#include <unordered_map>
 #include <cstring>
 #include <random>
 #include <stdexcept>
@@ -14,11 +19,11 @@ namespace hilight::ism {
 namespace {
 
 // SPIR-V compiled from shaders/ by glslc at build time.
-const uint32_t kDistanceVert[] =
-#include "distance.vert.inc"
+const uint32_t kTriangleRasterVert[] =
+#include "triangle_raster.vert.inc"
     ;
-const uint32_t kDistanceFrag[] =
-#include "distance.frag.inc"
+const uint32_t kTriangleRasterFrag[] =
+#include "triangle_raster.frag.inc"
     ;
 const uint32_t kDirect[] =
 #include "direct.comp.inc"
@@ -62,7 +67,7 @@ GpuLight to_gpu(const Light& light) {
 
 struct DirectParams {
   uint32_t points, lights, size;
-  float bias_texels, bias_const;
+  float epsilon;
 };
 struct VplParams {
   uint32_t lights, vpls, size, seed;
@@ -94,6 +99,39 @@ std::vector<uint32_t> pyramid_offsets(uint32_t vpls, uint32_t size) {
   return offsets;
 }
 
+/// For each triangle, the triangle across each of its edges (~0u: none; on
+/// an edge shared by more than two, the first other one). Edges are matched
+/// by position, not vertex index: the faces of a box have vertices of their
+/// own, and a ray grazing a box's edge must find the face across it.
+std::vector<uint32_t> edge_neighbours(const Scene& scene) {
+  struct PositionHash {
+    size_t operator()(const Vec3& p) const {
+      return std::hash<float>()(p.x) ^ (std::hash<float>()(p.y) * 31) ^ (std::hash<float>()(p.z) * 131);
+    }
+  };
+  std::unordered_map<Vec3, uint32_t, PositionHash> canonical;
+  std::vector<uint32_t> id(scene.positions.size());
+  for (size_t v = 0; v < scene.positions.size(); ++v) id[v] = canonical.try_emplace(scene.positions[v], uint32_t(v)).first->second;
+  std::unordered_map<uint64_t, std::array<uint32_t, 2>> edges;
+  auto key = [&](uint32_t a, uint32_t b) {
+    a = id[a];
+    b = id[b];
+    return a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a);
+  };
+  for (uint32_t t = 0; t < scene.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      auto [it, fresh] = edges.try_emplace(key(scene.triangles[t][k], scene.triangles[t][(k + 1) % 3]), std::array<uint32_t, 2>{t, ~0u});
+      if (!fresh && it->second[1] == ~0u) it->second[1] = t;
+    }
+  std::vector<uint32_t> out(3 * scene.triangles.size(), ~0u);
+  for (uint32_t t = 0; t < scene.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto& pair = edges.at(key(scene.triangles[t][k], scene.triangles[t][(k + 1) % 3]));
+      out[3 * t + k] = pair[0] == t ? pair[1] : pair[0];
+    }
+  return out;
+}
+
 template <class T, size_t N> std::span<const uint32_t> spirv(const T (&code)[N]) { return {code, N}; }
 
 } // namespace
@@ -102,18 +140,20 @@ struct IsmRenderer::PointBuffers {
   uint64_t key = 0;
   size_t count = 0;
   Buffer positions, normals, albedo;
+  Buffer crease;  ///< kCreaseCandidates triangles touching each point (crease_candidates.hpp)
 };
 
 struct IsmRenderer::Workspace {
   uint32_t lights = 0;
   size_t points = 0;
-  Buffer light_data, distances, triangles, vpls, ism, pyramid, result;
+  Buffer light_data, triangles, vpls, ism, pyramid, result;
+  Buffer face_indices, face_ids;  ///< culled triangle lists of the chunk's cube faces (grown on demand)
 };
 
 struct IsmRenderer::Kernels {
   ComputeKernel direct, vpl, splat, pull, push, gather;
   Kernels(VulkanContext& c, uint32_t w)
-      : direct(c, spirv(kDirect), 6, sizeof(DirectParams), w), vpl(c, spirv(kVplGenerate), 6, sizeof(VplParams), w),
+      : direct(c, spirv(kDirect), 9, sizeof(DirectParams), w), vpl(c, spirv(kVplGenerate), 5, sizeof(VplParams), w),
         splat(c, spirv(kIsmSplat), 3, sizeof(SplatParams), w), pull(c, spirv(kIsmPull), 2, sizeof(PullParams), w),
         push(c, spirv(kIsmPush), 1, sizeof(PushParams), w), gather(c, spirv(kGather), 6, sizeof(GatherParams), w) {}
 };
@@ -187,6 +227,8 @@ IsmRenderer::~IsmRenderer() {
   m_corners.reset();
   m_vertices.reset();
   m_indices.reset();
+  m_identity_ids.reset();
+  m_neighbours.reset();
   m_triangle_albedo.reset();
   m_pool.reset();
   if (m_fence) vkDestroyFence(m_context->device(), m_fence, nullptr);
@@ -209,6 +251,11 @@ void IsmRenderer::set_scene(std::shared_ptr<const Scene> scene) {
                                        "the scene's triangles");
   std::memcpy(m_vertices->data<float>(), s.positions.data(), s.positions.size() * 3 * sizeof(float));
   std::memcpy(m_indices->data<uint32_t>(), s.triangles.data(), triangles * 3 * sizeof(uint32_t));
+  m_neighbours = std::make_unique<Buffer>(ctx, triangles * 3 * sizeof(uint32_t), storage, true, "the triangles' neighbours");
+  const std::vector<uint32_t> neighbours = edge_neighbours(s);
+  std::memcpy(m_neighbours->data<uint32_t>(), neighbours.data(), neighbours.size() * sizeof(uint32_t));
+  m_identity_ids = std::make_unique<Buffer>(ctx, triangles * sizeof(uint32_t), storage, true, "the scene's triangle ids");
+  for (uint32_t t = 0; t < triangles; ++t) m_identity_ids->data<uint32_t>()[t] = t;
   // Corner positions per triangle, for the VPL stage's exact hit points.
   m_corners = std::make_unique<Buffer>(ctx, triangles * 9 * sizeof(float), storage, true, "the scene's triangle corners");
   m_triangle_albedo = std::make_unique<Buffer>(ctx, triangles * 4 * sizeof(float), storage, true, "the scene's albedo");
@@ -245,8 +292,7 @@ void IsmRenderer::set_scene(std::shared_ptr<const Scene> scene) {
     pool[4 * k + 2] = q.z;
     pool[4 * k + 3] = 1.f;
   }
-  m_raster = std::make_unique<DistanceRaster>(ctx, *m_vertices, *m_indices, uint32_t(triangles), spirv(kDistanceVert),
-                                              spirv(kDistanceFrag));
+  m_raster = std::make_unique<TriangleRaster>(ctx, *m_vertices, spirv(kTriangleRasterVert), spirv(kTriangleRasterFrag));
   m_kernels = std::make_unique<Kernels>(ctx, m_settings.workgroup);
   m_scene = std::move(scene);
 }
@@ -261,6 +307,10 @@ const IsmRenderer::PointBuffers& IsmRenderer::upload_points(const SurfacePoints&
   pb->positions = Buffer(*m_context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the surface points");
   pb->normals = Buffer(*m_context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the surface normals");
   pb->albedo = Buffer(*m_context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the surface albedo");
+  const std::vector<uint32_t> crease = crease_candidates(*m_scene, points, 0.25f * m_scene->max_edge > 0 ? 0.25f * m_scene->max_edge : 0.01f * m_scene->diagonal());
+  pb->crease = Buffer(*m_context, std::max<size_t>(crease.size(), 1) * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true,
+                      "the surface points' crease triangles");
+  std::memcpy(pb->crease.data<uint32_t>(), crease.data(), crease.size() * sizeof(uint32_t));
   float *pos = pb->positions.data<float>(), *nor = pb->normals.data<float>(), *alb = pb->albedo.data<float>();
   // Shaded a hair inside their triangle, as every renderer does (rendering model).
   tbb::parallel_for(size_t(0), n, [&](size_t i) {
@@ -281,10 +331,10 @@ const IsmRenderer::PointBuffers& IsmRenderer::upload_points(const SurfacePoints&
 uint32_t IsmRenderer::lights_per_chunk(size_t light_count, size_t point_count) const {
   const IsmSettings& s = m_settings;
   const uint64_t texels = uint64_t(s.shadow_size) * s.shadow_size;
-  uint64_t per_light = 6 * texels * 16 + point_count * 16 + sizeof(GpuLight);
+  uint64_t per_light = 6 * texels * 12 + point_count * 16 + sizeof(GpuLight);  // ID map, its copy, depth
   if (s.bounces > 0) per_light += uint64_t(s.vpls) * (48 + uint64_t(s.ism_size) * s.ism_size * 10);
   uint64_t chunk = std::max<uint64_t>(1, (uint64_t(s.chunk_mb) << 20) / per_light);
-  chunk = std::min<uint64_t>(chunk, m_context->properties().limits.maxImageArrayLayers / 6);
+  chunk = std::min<uint64_t>(chunk, TriangleRaster::max_views(*m_context, s.shadow_size, s.shadow_size) / 6);
   return uint32_t(std::max<uint64_t>(1, std::min<uint64_t>(chunk, light_count)));
 }
 
@@ -300,8 +350,7 @@ IsmRenderer::Workspace& IsmRenderer::workspace(uint32_t lights, size_t point_cou
   const VkBufferUsageFlags filled = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   const VkDeviceSize texels = VkDeviceSize(lights) * 6 * s.shadow_size * s.shadow_size;
   ws->light_data = Buffer(ctx, lights * sizeof(GpuLight), storage, true, "the lights");
-  ws->distances = Buffer(ctx, texels * 4, filled, false, "the shadow maps");
-  ws->triangles = Buffer(ctx, texels * 4, filled, false, "the shadow maps' triangles");
+  ws->triangles = Buffer(ctx, texels * 4, filled, false, "the shadow maps");
   ws->result = Buffer(ctx, VkDeviceSize(lights) * point_count * 16, filled, true, "the results");
   if (s.bounces > 0) {
     const uint32_t vpls = lights * s.vpls;
@@ -311,6 +360,33 @@ IsmRenderer::Workspace& IsmRenderer::workspace(uint32_t lights, size_t point_cou
   }
   m_workspace = std::move(ws);
   return *m_workspace;
+}
+
+std::vector<RasterDraw> IsmRenderer::upload_face_triangles(std::span<const Light> lights, Workspace& ws) {
+  std::vector<std::vector<uint32_t>> indices(lights.size()), ids(lights.size());
+  std::vector<std::vector<RasterDraw>> draws(lights.size());
+  tbb::parallel_for(size_t(0), lights.size(),
+                    [&](size_t j) { cull_to_cube_faces(*m_scene, lights[j].position, indices[j], ids[j], draws[j]); });
+  size_t total = 0;
+  for (const auto& list : ids) total += list.size();
+  const VkDeviceSize id_bytes = std::max<size_t>(total, 1) * sizeof(uint32_t);
+  if (!ws.face_ids || ws.face_ids.size() < id_bytes) {
+    ws.face_ids.reset();
+    ws.face_indices.reset();
+    // Room to grow, so a chunk with a few more visible triangles does not reallocate.
+    const VkDeviceSize capacity = id_bytes + id_bytes / 2;
+    ws.face_ids = Buffer(*m_context, capacity, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the shadow maps' triangle lists");
+    ws.face_indices = Buffer(*m_context, 3 * capacity, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, true, "the shadow maps' triangle lists");
+  }
+  std::vector<RasterDraw> out;
+  uint32_t offset = 0;
+  for (size_t j = 0; j < lights.size(); ++j) {
+    std::memcpy(ws.face_ids.data<uint32_t>() + offset, ids[j].data(), ids[j].size() * sizeof(uint32_t));
+    std::memcpy(ws.face_indices.data<uint32_t>() + 3 * size_t(offset), indices[j].data(), indices[j].size() * sizeof(uint32_t));
+    for (RasterDraw d : draws[j]) out.push_back({d.first + offset, d.count});
+    offset += uint32_t(ids[j].size());
+  }
+  return out;
 }
 
 void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std::span<const Light> lights, Transport transport,
@@ -324,14 +400,18 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
     gpu[j] = to_gpu(lights[j]);
     for (const auto& v : cube_views(lights[j].position, 1e-4f * diagonal, 4.f * diagonal)) views.push_back(v);
   }
+  const std::vector<RasterDraw> draws = upload_face_triangles(lights, ws);
   clock.start(cmd);
-  m_raster->record(cmd, views, s.shadow_size, s.shadow_size, ws.distances, ws.triangles);
+  m_raster->record(cmd, views, draws, ws.face_indices, ws.face_ids, s.shadow_size, s.shadow_size, ws.triangles);
   full_barrier(cmd);
   clock.mark(cmd, "shadow_maps");
   const Kernels& k = *m_kernels;
   if (transport != Transport::IndirectOnly) {
-    DirectParams p{n, c, s.shadow_size, s.shadow_bias, 2e-4f * diagonal};
-    k.direct.dispatch(cmd, {&pb.positions, &pb.normals, &pb.albedo, &ws.light_data, &ws.distances, &ws.result}, &p, uint64_t(n) * c);
+    DirectParams p{n, c, s.shadow_size, m_rays->epsilon()};
+    k.direct.dispatch(cmd, {&pb.positions, &pb.normals, &pb.albedo, &ws.light_data, &ws.triangles, m_corners.get(), m_neighbours.get(),
+                                   &pb.crease, &ws.result},
+                      &p,
+                      uint64_t(n) * c);
   } else {
     vkCmdFillBuffer(cmd, ws.result.handle(), 0, VK_WHOLE_SIZE, 0);
   }
@@ -341,7 +421,7 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
 
   const uint32_t vpls = c * s.vpls;
   VplParams vp{c, s.vpls, s.shadow_size, uint32_t(s.seed * 2654435761u), 1e-4f * diagonal};
-  k.vpl.dispatch(cmd, {&ws.light_data, &ws.distances, &ws.triangles, m_corners.get(), m_triangle_albedo.get(), &ws.vpls}, &vp, vpls);
+  k.vpl.dispatch(cmd, {&ws.light_data, &ws.triangles, m_corners.get(), m_triangle_albedo.get(), &ws.vpls}, &vp, vpls);
   vkCmdFillBuffer(cmd, ws.ism.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
   full_barrier(cmd);
   clock.mark(cmd, "vpls");
@@ -434,24 +514,24 @@ Image IsmRenderer::render_image(const Camera& camera, std::span<const Light> lig
   {
     std::lock_guard lock(m_mutex);
     if (!m_scene) throw std::logic_error("IsmRenderer: set_scene was not called");
-    // The camera's G-buffer from the same raster as the shadow maps:
-    // distance along each pixel's ray and the triangle seen.
+    // The camera's G-buffer from the same raster as the shadow maps: the
+    // triangle seen in each pixel, intersected with the pixel's ray.
     const Camera::Basis b = camera.basis();
     const float aspect = float(width) / float(height);
     RasterView view{camera.eye, b.forward, b.right / (b.tan_half_fov * aspect), -b.up / b.tan_half_fov,
                     1e-3f * scene.diagonal(), glm::length(camera.eye - scene.bounds.center()) + 2.f * scene.diagonal()};
     const VkDeviceSize bytes = VkDeviceSize(width) * height * 4;
-    Buffer distances(*m_context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "the image's distances");
     Buffer triangles(*m_context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "the image's triangles");
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     check(vkResetCommandBuffer(m_cmd, 0), "vkResetCommandBuffer");
     check(vkBeginCommandBuffer(m_cmd, &begin), "vkBeginCommandBuffer");
-    m_raster->record(m_cmd, std::span<const RasterView>(&view, 1), uint32_t(width), uint32_t(height), distances, triangles);
+    const RasterDraw all{0, uint32_t(scene.triangles.size())};
+    m_raster->record(m_cmd, std::span<const RasterView>(&view, 1), std::span<const RasterDraw>(&all, 1), *m_indices,
+                     *m_identity_ids, uint32_t(width), uint32_t(height), triangles);
     full_barrier(m_cmd);
     submit_and_wait(m_cmd);
     m_context->throw_on_validation_errors();
-    const float* dist = distances.data<float>();
     const uint32_t* tri = triangles.data<uint32_t>();
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
@@ -460,10 +540,14 @@ Image IsmRenderer::render_image(const Camera& camera, std::span<const Light> lig
         const size_t t = tri[k] - 1;
         float sx = (2.f * (float(x) + 0.5f) / float(width) - 1.f) * b.tan_half_fov * aspect;
         float sy = (1.f - 2.f * (float(y) + 0.5f) / float(height)) * b.tan_half_fov;
-        Vec3 p = camera.eye + glm::normalize(b.forward + sx * b.right + sy * b.up) * dist[k];
-        // Shading normal: the vertex normals at p's barycentrics.
+        const Vec3 dir = glm::normalize(b.forward + sx * b.right + sy * b.up);
         const auto& ids = scene.triangles[t];
-        const Vec3 &a = scene.positions[ids[0]], &e1 = scene.positions[ids[1]] - a, &e2 = scene.positions[ids[2]] - a;
+        const Vec3 &a = scene.positions[ids[0]], e1 = scene.positions[ids[1]] - a, e2 = scene.positions[ids[2]] - a;
+        const Vec3 plane = scene.face_normal(t);
+        const float facing = glm::dot(plane, dir);
+        if (std::abs(facing) < 1e-6f) continue;  // edge-on: no area to shade
+        const Vec3 p = camera.eye + dir * (glm::dot(plane, a - camera.eye) / facing);
+        // Shading normal: the vertex normals at p's barycentrics.
         Vec3 q = p - a;
         float d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
         float denom = d11 * d22 - d12 * d12;
@@ -500,7 +584,7 @@ std::vector<std::pair<std::string, double>> IsmRenderer::baseline_figures(const 
 std::string IsmSettings::key() const {
   return "ism-vulkan/bounces=" + std::to_string(bounces) + "/shadow=" + std::to_string(shadow_size) + "/vpls=" +
          std::to_string(vpls) + "/ism=" + std::to_string(ism_size) + "/ppv=" + std::to_string(points_per_vpl) + "/pool=" +
-         std::to_string(ism_points) + "/bias=" + std::to_string(shadow_bias) + "," + std::to_string(ism_bias) + "/clamp=" +
+         std::to_string(ism_points) + "/bias=" + std::to_string(ism_bias) + "/clamp=" +
          std::to_string(vpl_clamp) + "/seed=" + std::to_string(seed);
 }
 

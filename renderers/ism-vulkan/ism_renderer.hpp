@@ -4,7 +4,7 @@
 /// al. 2008), all on one Vulkan device (lavapipe when there is no GPU).
 /// How a batch of lights flows through the stages: docs/ism-vulkan.md.
 #include "compute_kernel.hpp"
-#include "distance_raster.hpp"
+#include "triangle_raster.hpp"
 #include "ism_settings.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/renderer.hpp"
@@ -40,6 +40,9 @@ private:
   /// The points on the device (shading points, normals, albedo), kept while the same set comes back.
   const PointBuffers& upload_points(const SurfacePoints& points);
   Workspace& workspace(uint32_t lights_per_chunk, size_t point_count);
+  /// The shadow maps' culled triangle lists for `lights`, written into the
+  /// workspace (grown as needed); returns one draw per cube face.
+  std::vector<RasterDraw> upload_face_triangles(std::span<const Light> lights, Workspace& ws);
   uint32_t lights_per_chunk(size_t light_count, size_t point_count) const;
   /// Records the whole pipeline for one chunk of lights into `cmd`.
   void record_chunk(VkCommandBuffer cmd, const PointBuffers& points, std::span<const Light> lights, Transport transport,
@@ -50,8 +53,8 @@ private:
   std::unique_ptr<VulkanContext> m_context;
   std::shared_ptr<const Scene> m_scene;
   std::unique_ptr<RayScene> m_rays;
-  std::unique_ptr<Buffer> m_vertices, m_indices, m_corners, m_triangle_albedo, m_pool;
-  std::unique_ptr<DistanceRaster> m_raster;
+  std::unique_ptr<Buffer> m_vertices, m_indices, m_identity_ids, m_corners, m_neighbours, m_triangle_albedo, m_pool;
+  std::unique_ptr<TriangleRaster> m_raster;
   std::unique_ptr<Kernels> m_kernels;
   std::unique_ptr<PointBuffers> m_points;
   std::unique_ptr<Workspace> m_workspace;

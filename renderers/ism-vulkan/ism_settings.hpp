@@ -10,12 +10,11 @@ namespace hilight::ism {
 
 struct IsmSettings {
   int bounces = 1;                 ///< 0: direct light only; 1: plus the first bounce from VPLs
-  uint32_t shadow_size = 512;      ///< cube shadow map face resolution (texels)
+  uint32_t shadow_size = 512;      ///< cube ID map face resolution (texels)
   uint32_t vpls = 256;             ///< virtual point lights per light
   uint32_t ism_size = 32;          ///< imperfect shadow map resolution per VPL (power of two)
   uint32_t points_per_vpl = 4096;  ///< scene point samples splatted into each VPL's ISM
   uint32_t ism_points = 262144;    ///< point samples of the scene in all (each VPL takes a random subset)
-  float shadow_bias = 1.0f;        ///< normal offset of the shadow lookup, in texels
   float ism_bias = 0.04f;          ///< ISM depth bias, relative to the distance
   float vpl_clamp = 0.05f;         ///< VPL distances below this fraction of the diagonal are clamped
   uint32_t chunk_mb = 192;         ///< device memory per batch of lights in one submission

@@ -70,3 +70,21 @@ uint hash_u32(uint x) {
   x ^= x >> 16;
   return x;
 }
+
+// Distance along the ray o + t·dir (dir unit) to triangle (a, b, c), or -1
+// when the ray misses it (Möller–Trumbore; edges count as hits, so a ray
+// through a shared edge cannot slip between two triangles).
+float ray_triangle(vec3 o, vec3 dir, vec3 a, vec3 b, vec3 c) {
+  vec3 e1 = b - a, e2 = c - a;
+  vec3 pv = cross(dir, e2);
+  float det = dot(e1, pv);
+  if (abs(det) < 1e-12) return -1.0;
+  float inv = 1.0 / det;
+  vec3 tv = o - a;
+  float u = dot(tv, pv) * inv;
+  if (u < -1e-6 || u > 1.0 + 1e-6) return -1.0;
+  vec3 qv = cross(tv, e1);
+  float v = dot(dir, qv) * inv;
+  if (v < -1e-6 || u + v > 1.0 + 1e-6) return -1.0;
+  return dot(e2, qv) * inv;
+}

@@ -1,27 +1,54 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Direct light: each (light, point) pair looks up the light's cube distance
-// map with 2x2 percentage-closer filtering; writes the unit response ρ/π·E.
+// Direct light: each (light, point) pair looks up the light's cube ID map
+// around the direction to the point; the triangles found in the 2x2 texels
+// there, and their edge neighbours, are the candidate occluders, and the
+// exact ray from the light to the point is intersected with each. (The
+// neighbours matter: a texel centre shows one triangle of a tessellated
+// face, and the ray may cross that face in the next one.) The faces touching
+// the point are candidates too. The map is an acceleration structure, not
+// an approximation of depth: no depth bias, no acne, exact shadows wherever
+// an occluder covers a texel centre near the ray. Writes ρ/π·E.
 #include "common.glsl"
 
 layout(push_constant) uniform Params {
   uint points;
   uint lights;
-  uint size;          // cube face resolution
-  float bias_texels;  // normal offset, in texels
-  float bias_const;   // constant bias, scene units
+  uint size;      // cube face resolution
+  float epsilon;  // scene units: rays start this far off the surface
 } params;
 
 layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = 1) readonly buffer Normals { vec4 normals[]; };
 layout(std430, binding = 2) readonly buffer Albedo { vec4 albedo[]; };
 layout(std430, binding = 3) readonly buffer Lights { Light lights[]; };
-layout(std430, binding = 4) readonly buffer Distances { float distances[]; };
-layout(std430, binding = 5) writeonly buffer Out { vec4 result[]; };
+layout(std430, binding = 4) readonly buffer Triangles { uint triangles[]; };
+layout(std430, binding = 5) readonly buffer Corners { float corners[]; };
+layout(std430, binding = 6) readonly buffer Neighbours { uint neighbours[]; };  // 3 per triangle; ~0u = none
+const uint CREASE_CANDIDATES = 16u;  // as kCreaseCandidates in crease_candidates.hpp
+layout(std430, binding = 7) readonly buffer Crease { uint crease[]; };  // per point; ~0u = none
+layout(std430, binding = 8) writeonly buffer Out { vec4 result[]; };
 
-float lit(uint base, ivec2 texel, float dist, float bias) {
-  ivec2 t = clamp(texel, ivec2(0), ivec2(int(params.size) - 1));
-  return dist - bias <= distances[base + uint(t.y) * params.size + uint(t.x)] ? 1.0 : 0.0;
+vec3 corner(uint t, uint k) {
+  uint o = (3u * t + k) * 3u;
+  return vec3(corners[o], corners[o + 1u], corners[o + 2u]);
+}
+
+bool blocks_triangle(uint t, vec3 origin, vec3 dir, float reach) {
+  float d = ray_triangle(origin, dir, corner(t, 0u), corner(t, 1u), corner(t, 2u));
+  return d > 0.0 && d < reach;
+}
+
+// Does triangle `hit` (+1; 0 = none), or one of its neighbours, block the ray before `reach`?
+bool blocks(uint hit, vec3 origin, vec3 dir, float reach) {
+  if (hit == 0u) return false;
+  uint t = hit - 1u;
+  if (blocks_triangle(t, origin, dir, reach)) return true;
+  for (uint k = 0u; k < 3u; ++k) {
+    uint m = neighbours[3u * t + k];
+    if (m != ~0u && blocks_triangle(m, origin, dir, reach)) return true;
+  }
+  return false;
 }
 
 void main() {
@@ -33,27 +60,33 @@ void main() {
   vec3 d = p - light.position.xyz;
   float dist = length(d);
   vec3 response = vec3(0.0);
-  if (dist > 0.0) {
+  if (dist > params.epsilon) {
     vec3 to_point = d / dist;
     float cos_n = abs(dot(n, to_point));
     float angular = spot_factor(light, to_point);
     if (cos_n > 0.0 && angular > 0.0) {
-      // Normal offset: the map is looked up from the point lifted toward the
-      // light's side by a few texels' width, which clears the surface's own
-      // depth at any angle (a texel spans about 2/size radians).
+      // The ray ends a hair off the surface, on the light's side (as Embree's).
       vec3 side = dot(n, to_point) < 0.0 ? n : -n;
-      vec3 q = p + side * (dist * 2.0 / float(params.size) * params.bias_texels);
+      vec3 q = p + side * params.epsilon;
       vec3 dq = q - light.position.xyz;
-      float dist_q = length(dq);
+      float reach = length(dq) - params.epsilon;
+      vec3 dir = dq / length(dq);
       uint f = cube_face(dq);
-      vec2 t = cube_texel(dq, f, params.size) - 0.5;
-      ivec2 t0 = ivec2(floor(t));
-      vec2 w = t - vec2(t0);
-      float bias = params.bias_const;
+      ivec2 t0 = ivec2(floor(cube_texel(dq, f, params.size) - 0.5));
       uint base = (c * 6u + f) * params.size * params.size;
-      float v = mix(mix(lit(base, t0, dist_q, bias), lit(base, t0 + ivec2(1, 0), dist_q, bias), w.x),
-                    mix(lit(base, t0 + ivec2(0, 1), dist_q, bias), lit(base, t0 + ivec2(1, 1), dist_q, bias), w.x), w.y);
-      response = albedo[i].rgb * (cos_n * angular * v / (dist * dist * PI));
+      bool shadowed = false;
+      for (int k = 0; k < 4 && !shadowed; ++k) {
+        ivec2 t = clamp(t0 + ivec2(k & 1, k >> 1), ivec2(0), ivec2(int(params.size) - 1));
+        shadowed = blocks(triangles[base + uint(t.y) * params.size + uint(t.x)], light.position.xyz, dir, reach);
+      }
+      // The faces touching the point: at a crease the blocking face may be a
+      // sliver seen edge-on, thinner than a texel (crease_candidates.hpp).
+      for (uint k = 0u; k < CREASE_CANDIDATES && !shadowed; ++k) {
+        uint m = crease[CREASE_CANDIDATES * i + k];
+        if (m == ~0u) break;
+        shadowed = blocks_triangle(m, light.position.xyz, dir, reach);
+      }
+      if (!shadowed) response = albedo[i].rgb * (cos_n * angular / (dist * dist * PI));
     }
   }
   result[id] = vec4(response, 0.0);

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Virtual point lights: each light sends `vpls` directions, evenly spread
 // over its emission cap (a Fibonacci spiral: the sphere for a point light,
-// the cone for a spot), and finds the first surface in its cube map. A VPL
+// the cone for a spot), and finds the first surface in its cube ID map. A VPL
 // re-emits that surface's reflected share: radiant intensity power·cos θ.
 #include "common.glsl"
 
@@ -15,11 +15,10 @@ layout(push_constant) uniform Params {
 } params;
 
 layout(std430, binding = 0) readonly buffer Lights { Light lights[]; };
-layout(std430, binding = 1) readonly buffer Distances { float distances[]; };
-layout(std430, binding = 2) readonly buffer Triangles { uint triangles[]; };
-layout(std430, binding = 3) readonly buffer Corners { float corners[]; };
-layout(std430, binding = 4) readonly buffer TriangleAlbedo { vec4 triangle_albedo[]; };
-layout(std430, binding = 5) writeonly buffer Vpls { vec4 vpls[]; };  // position (w: 1 = valid), normal, power
+layout(std430, binding = 1) readonly buffer Triangles { uint triangles[]; };
+layout(std430, binding = 2) readonly buffer Corners { float corners[]; };
+layout(std430, binding = 3) readonly buffer TriangleAlbedo { vec4 triangle_albedo[]; };
+layout(std430, binding = 4) writeonly buffer Vpls { vec4 vpls[]; };  // position (w: 1 = valid), normal, power
 
 vec3 corner(uint t, uint k) {
   uint o = (3u * t + k) * 3u;
@@ -55,11 +54,11 @@ void main() {
   if (dot(n, n) == 0.0) return;
   n = normalize(n);
   if (dot(n, dir) > 0.0) n = -n;  // the lit side faces the light
-  // Exact hit on the triangle's plane along this direction (the map's texel
-  // centre may lie a little off); fall back to the map's distance at grazing angles.
+  // The hit on that triangle's plane along this exact direction (a grazing
+  // hit carries almost no power: skipped).
   float denom = dot(n, dir);
-  float dist = distances[index];
-  if (denom < -1e-3) dist = dot(n, a - light.position.xyz) / denom;
+  if (denom > -1e-3) return;
+  float dist = dot(n, a - light.position.xyz) / denom;
   if (!(dist > 0.0)) return;
   float solid_angle = 2.0 * PI * (1.0 - cos_max) / float(params.vpls);
   vec3 power = triangle_albedo[tri].rgb * (solid_angle * spot_factor(light, dir) / PI);
