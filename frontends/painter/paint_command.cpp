@@ -45,6 +45,11 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--opt", o.job.optimizer_settings, "optimizer setting key=value (repeatable)");
   app.add_option("--sampler", o.job.sampler, "surface sampling plugin")->capture_default_str();
   app.add_option("--samples", o.job.solve.samples, "surface samples used by the solve")->check(CLI::Range(10, 10000000))->capture_default_str();
+  // D̄ is only reported after a fine-tune; on fewer points it costs less of the stroke's latency.
+  o.job.solve.evaluation_points = 256;
+  app.add_option("--evaluation-points", o.job.solve.evaluation_points, "target points D-bar is reported on (0: all)")
+      ->check(CLI::Range(0, 100000000))
+      ->capture_default_str();
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
   app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
   app.add_option("--cache-cells", o.job.solve.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")

@@ -27,40 +27,30 @@ bool same_lights(const Lighting& a, const Lighting& b) {
   return true;
 }
 
-Properties settings_without(const std::vector<std::string>& settings, const std::vector<std::string>& keys) {
-  std::vector<std::string> kept;
-  for (const auto& kv : settings) {
-    bool drop = false;
-    for (const auto& key : keys) drop |= kv.rfind(key + "=", 0) == 0;
-    if (!drop) kept.push_back(kv);
-  }
-  return Properties::from_assignments(kept);
-}
-
-/// The display renderers, quick to exact. The exact one is the job's renderer
-/// with the same settings and seed, so the result view shows what the solve
-/// measures; for Embree with the bounce, a quick stage with few gather rays
-/// and interpolated direct light comes first (a stroke's fine-tune shows in
-/// a fraction of the exact render's time).
-std::vector<std::unique_ptr<Renderer>> display_renderers(const Registry& registry, const SolveJobOptions& job,
+/// The display renderers, quick to exact. The exact one is the solve job's
+/// reference (same renderer, settings and seed), so the result view shows
+/// what the solve measures; for Embree with the bounce, a quick stage with
+/// few gather rays and interpolated direct light comes first (a stroke's
+/// fine-tune shows in a fraction of the exact render's time).
+std::vector<std::unique_ptr<Renderer>> display_renderers(const Registry& registry, const SolveJob& job,
                                                          const std::shared_ptr<const Scene>& scene) {
-  std::vector<std::string> settings = job.renderer_settings;
+  const SolveJobOptions& options = job.options();
   bool has_seed = false, direct_only = false, user_bounce = false;
-  for (const auto& kv : settings) {
+  for (const auto& kv : options.renderer_settings) {
     has_seed |= kv.rfind("seed=", 0) == 0;
     direct_only |= kv == "bounces=0";
     user_bounce |= kv.rfind("bounce_samples=", 0) == 0 || kv.rfind("bounce_direct=", 0) == 0;
   }
-  if (!has_seed) settings.push_back("seed=" + std::to_string(job.solve.seed & 0x7FFFFFFFFFFFFFFFull));
   std::vector<std::unique_ptr<Renderer>> stages;
-  if (job.renderer == "embree" && !direct_only && !user_bounce) {
-    Properties quick = settings_without(settings, {"bounce_samples", "bounce_direct"});
+  if (options.renderer == "embree" && !direct_only && !user_bounce) {
+    Properties quick = Properties::from_assignments(options.renderer_settings);
+    if (!has_seed) quick.set("seed", std::to_string(options.solve.seed & 0x7FFFFFFFFFFFFFFFull));
     quick.set("bounce_samples", "16");
     quick.set("bounce_direct", "vertex");
-    stages.push_back(registry.create_renderer(job.renderer, quick));
+    stages.push_back(registry.create_renderer(options.renderer, quick));
+    stages.back()->set_scene(scene);
   }
-  stages.push_back(registry.create_renderer(job.renderer, Properties::from_assignments(settings)));
-  for (auto& stage : stages) stage->set_scene(scene);
+  stages.push_back(job.make_renderer());
   return stages;
 }
 
@@ -83,7 +73,7 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_albedo = m_scene->vertex_albedo();
   m_document = std::make_unique<Document>(m_scene, m_rays);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
-  auto renderers = display_renderers(registry, m_options.job, m_scene);
+  auto renderers = display_renderers(registry, *m_job, m_scene);
 
   // The window last: input problems surface first, even without a display.
   m_window = std::make_unique<ui::Window>(m_options.width, m_options.height,
@@ -190,11 +180,11 @@ int PainterApp::run() {
 void PainterApp::frame(bool interactive, const std::filesystem::path& capture) {
   if (interactive) {
     // Dragging: draw as fast as the mouse moves. Background work: wake at
-    // 30 Hz to show its progress, leaving the cores to the work. Idle: sleep
-    // until an event.
+    // 10 Hz to show its progress (and at once when it ends: the workers post
+    // an event), leaving the cores to the work. Idle: sleep until an event.
     const bool dragging = m_stroke || m_dragging_camera || m_region_drag;
     if (dragging) glfwPollEvents();
-    else if (m_job->busy() || m_illumination_pending) glfwWaitEventsTimeout(1.0 / 30.0);
+    else if (m_job->busy() || m_illumination_pending) glfwWaitEventsTimeout(kBackgroundFrameSeconds);
     else glfwWaitEventsTimeout(0.25);
   } else {
     glfwPollEvents();
@@ -225,6 +215,7 @@ void PainterApp::poll_workers() {
   if (std::optional<JobResult> result = m_player->poll()) {
     if (result->outcome == JobOutcome::Failed) status(std::string(to_string(result->kind)) + " failed: " + result->error);
     else if (result->outcome == JobOutcome::Cancelled) status(std::string(to_string(result->kind)) + " cancelled");
+    if (result->outcome == JobOutcome::Done && result->kind != JobKind::FineTune) m_cut_k = 0;  // the slider follows the new cuts
     if (result->outcome == JobOutcome::Done && result->kind == JobKind::FineTune)
       m_timer.add_latency("fine_tune_solver", 1000.0 * result->report.seconds["total"]);
     if (result->outcome == JobOutcome::Done && m_fine_tune_after_stroke && m_stroke_released) {
@@ -232,6 +223,13 @@ void PainterApp::poll_workers() {
                           std::chrono::duration<double, std::milli>(Clock::now() - *m_stroke_released).count());
     }
     m_fine_tune_after_stroke = false;
+    if (m_fine_tune_queued && !m_job->busy()) {
+      // A stroke ended while this job ran: its fine-tune starts now.
+      m_fine_tune_queued = false;
+      m_stroke_released = Clock::now();
+      m_fine_tune_after_stroke = perform(Action{"fine_tune", nlohmann::json::object()});
+      if (!m_fine_tune_after_stroke) m_stroke_released.reset();
+    }
   }
   if (std::optional<ui::Illumination> done = m_illumination_worker->take()) {
     m_radiance = std::move(done->radiance);

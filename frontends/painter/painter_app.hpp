@@ -25,6 +25,9 @@
 
 namespace hilight::painter {
 
+/// Frame interval while only background work runs (a progress bar needs few frames).
+constexpr double kBackgroundFrameSeconds = 0.1;
+
 class PainterApp {
 public:
   /// Loads the scene and the starting files, opens the window. InputError for
@@ -151,6 +154,7 @@ private:
   // Solve timing (stroke release → fine-tuned lights → display).
   std::optional<Clock::time_point> m_stroke_released;
   bool m_fine_tune_after_stroke = false;
+  bool m_fine_tune_queued = false;  ///< a stroke ended while a job ran
   bool m_stroke_shown = false;    ///< its lights are on screen (a quick stage so far)
   std::thread m_job_waker;        ///< wakes the event loop when a solve ends
   std::atomic<bool> m_stop_waker{false};

@@ -39,9 +39,10 @@ void PainterApp::run_bench() {
     m_fine_tune_after_stroke = true;
     m_job->start_fine_tune(m_document->target(), m_document->state().lights);
     const auto give_up = Clock::now() + std::chrono::seconds(30);
-    // As the interactive loop does while work runs in the background: a frame every 1/30 s.
+    // As the interactive loop does while work runs in the background: a frame
+    // every kBackgroundFrameSeconds, or at once when the job or a display pass ends.
     while ((m_job->busy() || m_fine_tune_after_stroke || m_stroke_released) && Clock::now() < give_up) {
-      const auto next = Clock::now() + std::chrono::microseconds(33333);
+      const auto next = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kBackgroundFrameSeconds));
       frame(false);
       glfwWaitEventsTimeout(std::max(0.0, std::chrono::duration<double>(next - Clock::now()).count()));
     }

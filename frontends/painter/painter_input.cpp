@@ -181,7 +181,11 @@ void PainterApp::finish_stroke() {
   if (points.empty()) return;
   record(Action{"stroke", {{"world", points_json(points)}, {"mode", mode == BrushMode::Erase ? "erase" : "paint"}}});
   // §4.2 fine-tune: the lights follow the edit at once when there are any.
-  if (m_options.auto_fine_tune && !m_document->state().lights.empty() && !m_job->busy()) {
+  if (m_options.auto_fine_tune && !m_document->state().lights.empty()) {
+    if (m_job->busy()) {
+      m_fine_tune_queued = true;  // after the running job (poll_workers starts it)
+      return;
+    }
     m_stroke_released = Clock::now();
     m_fine_tune_after_stroke = perform(Action{"fine_tune", nlohmann::json::object()});
     if (!m_fine_tune_after_stroke) m_stroke_released.reset();
