@@ -215,6 +215,8 @@ void PainterApp::poll_workers() {
   if (std::optional<JobResult> result = m_player->poll()) {
     if (result->outcome == JobOutcome::Failed) status(std::string(to_string(result->kind)) + " failed: " + result->error);
     else if (result->outcome == JobOutcome::Cancelled) status(std::string(to_string(result->kind)) + " cancelled");
+    if (result->outcome != JobOutcome::Done) unrecord_failed_job();
+    m_job_action.reset();
     if (result->outcome == JobOutcome::Done && result->kind != JobKind::FineTune) m_cut_k = 0;  // the slider follows the new cuts
     if (result->outcome == JobOutcome::Done && result->kind == JobKind::FineTune)
       m_timer.add_latency("fine_tune_solver", 1000.0 * result->report.seconds["total"]);

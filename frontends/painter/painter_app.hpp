@@ -69,6 +69,7 @@ private:
   /// (interactive) — returns false then.
   bool perform(const Action& action);
   void record(const Action& action);
+  void unrecord_failed_job();
   std::filesystem::path default_record_path() const;
   void screenshot(const std::filesystem::path& path);
   void status(const std::string& line);
@@ -82,6 +83,8 @@ private:
   void begin_region_drag();
   void finish_region_drag();
   void finish_stroke();
+  /// The shadow tool's requests become a `shadow` action.
+  void lights_from_shadows();
   void start_job(const std::string& type);
 
   // --- panels (painter_panels.cpp) ---
@@ -108,6 +111,7 @@ private:
   std::unique_ptr<SessionPlayer> m_player;
   SessionRecorder m_recorder;
   std::filesystem::path m_record_path;
+  std::optional<size_t> m_job_action;  ///< recorded index of the running job's action
   std::vector<Rgb> m_albedo;
 
   std::unique_ptr<ui::Window> m_window;

@@ -74,12 +74,12 @@ void PainterApp::handle_camera_input() {
 
 void PainterApp::handle_keys() {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantCaptureKeyboard) return;
   auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  if (io.KeyCtrl && pressed(GLFW_KEY_Q)) m_window->request_close();  // even with a dialog open
+  if (io.WantCaptureKeyboard) return;
   if (io.KeyCtrl) {
     if (pressed(GLFW_KEY_Z) && !io.KeyShift) perform(Action{"undo", nlohmann::json::object()});
     if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) perform(Action{"redo", nlohmann::json::object()});
-    if (pressed(GLFW_KEY_Q)) m_window->request_close();
     return;
   }
   auto select = [&](const char* tool) { perform(Action{"tool", {{"tool", tool}}}); };
@@ -94,6 +94,7 @@ void PainterApp::handle_keys() {
   if (pressed(GLFW_KEY_3)) { m_view = ui::ViewMode::Difference; m_colours_dirty = true; }
   if (pressed(GLFW_KEY_L)) m_show_lights = !m_show_lights;
   if (pressed(GLFW_KEY_F1) || pressed(GLFW_KEY_H)) m_show_help = !m_show_help;
+  if ((pressed(GLFW_KEY_ENTER) || pressed(GLFW_KEY_KP_ENTER)) && m_player->tool() == Tool::Shadow) lights_from_shadows();
   if (pressed(GLFW_KEY_F5)) start_job("solve");
   if (pressed(GLFW_KEY_F6)) start_job("fine_tune");
   if (pressed(GLFW_KEY_F7)) start_job("add_lights");
@@ -171,6 +172,14 @@ void PainterApp::handle_tool_input() {
   }
   if (m_region_drag) m_last_activity = "stroke";
   if (m_region_drag && released) finish_region_drag();
+}
+
+void PainterApp::lights_from_shadows() {
+  if (m_shadow_pairs.empty()) {
+    status("no shadow requests yet: click an occluder, then drag where its shadow falls");
+    return;
+  }
+  if (perform(Action{"shadow", {{"pairs", m_shadow_pairs}}})) m_shadow_pairs.clear();
 }
 
 void PainterApp::finish_stroke() {

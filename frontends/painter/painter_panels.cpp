@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <imgui.h>
 #include <imgui_stdlib.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 namespace hilight::painter {
 
@@ -23,6 +25,7 @@ const char* kShortcuts[][2] = {
     {"Left drag", "use the tool (paint, erase, mark a region)"},
     {"B / E", "brush / eraser"},
     {"S", "shadow tool: click the occluder, drag its shadow"},
+    {"Enter", "shadow tool: lights from the shadows drawn"},
     {"X", "erase-shadow tool: click a shadow"},
     {"P", "spotlight tool: drag the region it should light"},
     {"A", "adjust tool: drag a region to brighten / tint"},
@@ -41,7 +44,7 @@ const char* kShortcuts[][2] = {
 void PainterApp::draw_panels() {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(350, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("hilight paint", nullptr, ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::Begin("hilight paint", nullptr, ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_AlwaysAutoResize);
   panel_tools();
   panel_view();
   panel_solve();
@@ -98,9 +101,7 @@ void PainterApp::panel_tools() {
   }
   if (m_player->tool() == Tool::Shadow) {
     ImGui::Text("%zu shadow request(s)", m_shadow_pairs.size());
-    if (ImGui::Button("Lights from shadows") && !m_shadow_pairs.empty()) {
-      if (perform(Action{"shadow", {{"pairs", m_shadow_pairs}}})) m_shadow_pairs.clear();
-    }
+    if (ImGui::Button("Lights from shadows (Enter)")) lights_from_shadows();
     tip("Estimate one point light per consistent set of occluder-shadow pairs (paper Fig. 5)");
     ImGui::SameLine();
     if (ImGui::Button("Clear requests")) {
@@ -275,7 +276,7 @@ void PainterApp::popup_shadow_pairs() {
       ImGui::CloseCurrentPopup();
     }
   }
-  if (ImGui::Button("Cancel")) {
+  if (ImGui::Button("Cancel (Esc)") || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
     m_pair_choices.clear();
     ImGui::CloseCurrentPopup();
   }

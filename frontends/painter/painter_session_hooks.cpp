@@ -61,7 +61,21 @@ bool PainterApp::perform(const Action& action) {
     return false;
   }
   record(action);
+  if (action.type == "solve" || action.type == "fine_tune" || action.type == "add_lights")
+    m_job_action = m_recorder.session().actions.size() - 1;
   return true;
+}
+
+void PainterApp::unrecord_failed_job() {
+  // A job that failed or was cancelled changed nothing: drop its action, so
+  // the recording replays (a replay stops at a failing solve).
+  if (!m_job_action || *m_job_action >= m_recorder.session().actions.size()) return;
+  Session kept = m_recorder.session();
+  kept.actions.erase(kept.actions.begin() + std::ptrdiff_t(*m_job_action));
+  m_job_action.reset();
+  m_recorder.clear();
+  for (const Action& a : kept.actions) m_recorder.record(a);
+  if (!m_record_path.empty()) m_recorder.save(m_record_path);
 }
 
 void PainterApp::record(const Action& action) {
