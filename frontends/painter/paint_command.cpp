@@ -9,6 +9,7 @@
 #include "painter_app.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <iostream>
 
 namespace hilight::painter {
@@ -75,6 +76,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   } catch (const CLI::ParseError& e) {
     throw InputError(std::string("paint: ") + e.what());
   }
+  if (!std::isfinite(o.max_edge) || o.max_edge < 0.f) throw InputError("paint: --max-edge must be a finite number >= 0");
   parse_size(size, o.width, o.height);
   o.scene = scene;
   o.target = target;

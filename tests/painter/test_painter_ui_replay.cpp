@@ -4,6 +4,7 @@
 // lies in the cone the shadow implies, lights the patch, and shows on the
 // screenshot.
 #include "../support.hpp"
+#include "hilight/camera.hpp"
 #include "hilight/image.hpp"
 #include "hilight/io/image_io.hpp"
 #include "hilight/io/lights_json.hpp"
@@ -13,6 +14,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -188,4 +190,63 @@ TEST_CASE("painter ui: a replayed patch-and-shadow session finds the light the s
   const double difference = mean_abs_difference(shot, unlit);
   INFO("mean difference to the unlit scene " << difference);
   CHECK(difference > 0.02);
+}
+
+namespace {
+
+/// Positions of a painter target PLY (binary little-endian, float x y z nx ny nz red green blue weight).
+std::vector<Vec3> target_positions(const fs::path& path) {
+  const std::string bytes = test::read_file(path);
+  const size_t header_end = bytes.find("end_header\n");
+  REQUIRE(header_end != std::string::npos);
+  const size_t at = bytes.find("element vertex ");
+  REQUIRE(at != std::string::npos);
+  const size_t count = std::stoul(bytes.substr(at + 15));
+  const size_t start = header_end + 11, stride = 10 * sizeof(float);
+  REQUIRE(bytes.size() >= start + count * stride);
+  std::vector<Vec3> out(count);
+  for (size_t i = 0; i < count; ++i) std::memcpy(&out[i], bytes.data() + start + i * stride, sizeof(Vec3));
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("painter ui: screen strokes paint the surface under the pixel", "[painter-ui]") {
+  REQUIRE_DISPLAY();
+  const fs::path dir = test::output_dir("painter_ui_screen_stroke");
+  const fs::path scene_path = dir / "floor_box.obj";
+  write_obj(scene_path, floor_and_box());
+  // The pixel's ray by the framework camera's convention (Camera::basis, as
+  // `hilight render --camera` uses it), meeting the floor y = 0.
+  Camera camera;
+  camera.eye = {4.f, 5.f, 6.f};
+  camera.target = {0.f, 0.f, 0.f};
+  camera.fov_deg = 50.f;
+  const float width = 400.f, height = 300.f, px = 300.f, py = 220.f;
+  const Camera::Basis b = camera.basis();
+  const Vec3 dir_ray = glm::normalize(b.forward + (2.f * px / width - 1.f) * b.tan_half_fov * (width / height) * b.right +
+                                      (1.f - 2.f * py / height) * b.tan_half_fov * b.up);
+  const Vec3 expected = camera.eye + (-camera.eye.y / dir_ray.y) * dir_ray;
+  REQUIRE(std::abs(expected.x) < 5.f);
+  REQUIRE(std::abs(expected.z) < 5.f);
+  const nlohmann::json actions = {
+      {{"type", "camera"}, {"eye", {4, 5, 6}}, {"target", {0, 0, 0}}, {"fov", 50}},
+      {{"type", "brush"}, {"radius", 0.2}, {"hardness", 1.0}},
+      {{"type", "stroke"}, {"screen", {{px, py}}}},
+      {{"type", "save_target"}, {"path", (dir / "target.ply").string()}}};
+  test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+  const test::RunResult run = test::run_hilight({"paint", scene_path.string(), "--max-edge", "0.1", "--size", "400x300",
+                                                 "--script", (dir / "session.json").string(), "--exit", "--no-record"});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const std::vector<Vec3> painted = target_positions(dir / "target.ply");
+  REQUIRE(painted.size() >= 3);
+  Vec3 mean(0.f);
+  for (const Vec3& p : painted) {
+    INFO("painted (" << p.x << ", " << p.y << ", " << p.z << "), expected near (" << expected.x << ", 0, " << expected.z << ")");
+    CHECK(glm::length(p - expected) <= 0.2f + 1e-3f);
+    mean += p;
+  }
+  mean /= float(painted.size());
+  CHECK(glm::length(mean - expected) < 0.06f);
 }
