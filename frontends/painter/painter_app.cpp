@@ -74,6 +74,22 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_document = std::make_unique<Document>(m_scene, m_rays);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
   auto renderers = display_renderers(registry, *m_job, m_scene);
+  if (!m_options.no_record || !m_options.record.empty()) {
+    const bool interactive = !m_options.exit_after_script;
+    if (!m_options.record.empty()) m_record_path = m_options.record;
+    else if (interactive) m_record_path = default_record_path();
+  }
+  // The starting files are the session's first actions, so a recording replays from the same state.
+  auto absolute = [](const std::filesystem::path& p) { return std::filesystem::absolute(p).lexically_normal().string(); };
+  // (Loaded by the document directly: its errors name the file, not a script action.)
+  if (!m_options.target.empty()) {
+    m_document->load_target(m_options.target);
+    record(Action{"load_target", {{"path", absolute(m_options.target)}}});
+  }
+  if (!m_options.lights.empty()) {
+    m_document->load_lights(m_options.lights);
+    record(Action{"load_lights", {{"path", absolute(m_options.lights)}}});
+  }
 
   // The window last: input problems surface first, even without a display.
   m_window = std::make_unique<ui::Window>(m_options.width, m_options.height,
@@ -84,13 +100,13 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_camera = ui::OrbitCamera::framing(m_scene->bounds, aspect());
   // Background results wake the event loop at once (glfwPostEmptyEvent is thread-safe).
   m_illumination_worker = std::make_unique<ui::IlluminationWorker>(std::move(renderers), *m_scene, [] { glfwPostEmptyEvent(); });
-  m_job_waker = std::thread([this] {
+  m_job_waker = std::jthread([this](std::stop_token stop) {
     bool was_busy = false;
-    while (!m_stop_waker) {
+    while (!stop.stop_requested()) {
       const bool busy = m_job->busy();
       if (was_busy && !busy) glfwPostEmptyEvent();
       was_busy = busy;
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      std::this_thread::sleep_for(std::chrono::milliseconds(busy ? 2 : 10));
     }
   });
 
@@ -102,30 +118,12 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_target_path = m_options.target.empty() ? stem + "-target.ply" : m_options.target.string();
   m_lights_path = m_options.lights.empty() ? stem + "-lights.json" : m_options.lights.string();
   m_screenshot_path = stem + ".png";
-  if (!m_options.no_record || !m_options.record.empty()) {
-    const bool interactive = !m_options.exit_after_script;
-    if (!m_options.record.empty()) m_record_path = m_options.record;
-    else if (interactive) m_record_path = default_record_path();
-  }
-  // The starting files are the session's first actions, so a recording replays from the same state.
-  auto absolute = [](const std::filesystem::path& p) { return std::filesystem::absolute(p).lexically_normal().string(); };
-  if (!m_options.target.empty()) {
-    Action a{"load_target", {{"path", absolute(m_options.target)}}};
-    m_player->apply(a);
-    record(a);
-  }
-  if (!m_options.lights.empty()) {
-    Action a{"load_lights", {{"path", absolute(m_options.lights)}}};
-    m_player->apply(a);
-    record(a);
-  }
 }
 
 PainterApp::~PainterApp() {
   // Stop background work and free GL objects before the context goes.
   m_view_buffer.reset();
-  m_stop_waker = true;
-  if (m_job_waker.joinable()) m_job_waker.join();
+  m_job_waker = {};  // requests stop and joins
   m_illumination_worker.reset();
   m_job.reset();
 }

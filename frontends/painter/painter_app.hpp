@@ -15,7 +15,6 @@
 #include "ui/vertex_colours.hpp"
 #include "ui/window.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <thread>
 #include <memory>
@@ -160,8 +159,7 @@ private:
   bool m_fine_tune_after_stroke = false;
   bool m_fine_tune_queued = false;  ///< a stroke ended while a job ran
   bool m_stroke_shown = false;    ///< its lights are on screen (a quick stage so far)
-  std::thread m_job_waker;        ///< wakes the event loop when a solve ends
-  std::atomic<bool> m_stop_waker{false};
+  std::jthread m_job_waker;       ///< wakes the event loop when a solve ends (joins on destruction)
 
   std::string m_target_path, m_lights_path, m_screenshot_path;  ///< the Files panel's fields
 

@@ -86,6 +86,9 @@ TEST_CASE("painter ui: bad geometry and bad scripts give one clear error line", 
   test::write_text(dir / "unknown.json", R"({"actions": [{"type": "teleport"}]})");
   check_one_line_error(test::run_hilight({"paint", kRoom, "--script", (dir / "unknown.json").string(), "--exit"}),
                        "unknown type 'teleport'");
+  test::write_text(dir / "lights.json", R"({"lamps": []})");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--lights", (dir / "lights.json").string(), "--no-record"}), "lights.json");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--target", (dir / "none.ply").string(), "--no-record"}), "none.ply");
   check_one_line_error(test::run_hilight({"paint", kRoom, "--size", "10x10"}), "--size");
   check_one_line_error(test::run_hilight({"paint", kRoom, "--renderer", "nosuch"}), "nosuch");
 }
