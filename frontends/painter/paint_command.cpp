@@ -62,6 +62,9 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_flag("--exit", o.exit_after_script, "quit after the script and screenshot (headless replay)");
   app.add_option("--record", record, "record this session here (default: $XDG_STATE_HOME/hilight/sessions/)");
   app.add_flag("--no-record", o.no_record, "do not record the session (unless --record is given)");
+  app.add_option("--view", o.view, "view to start in (keys 1/2/3 switch)")
+      ->check(CLI::IsMember({"result", "target", "difference"}))
+      ->capture_default_str();
   app.add_option("--size", size, "window size WIDTHxHEIGHT")->capture_default_str();
   app.add_option("--timings", timings, "write frame and stroke-to-fine-tune times as JSON ('-': stdout)");
   app.add_flag("--bench", o.bench, "after the script: timed orbit, strokes and fine-tunes (use with --timings)");

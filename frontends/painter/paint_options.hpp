@@ -21,6 +21,7 @@ struct PaintOptions {
   bool bench = false;                ///< after the script: scripted orbit + stroke + fine-tune, timed
   bool exit_after_script = false;
   int width = 1280, height = 800;
+  std::string view = "result";       ///< the view to start in: result, target, difference
   bool auto_fine_tune = true;        ///< fine-tune after each stroke when there are lights
   SolveJobOptions job;               ///< renderer, optimizer, sampler and solve settings
 };

@@ -70,7 +70,7 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
                        std::optional<Session> script)
     : m_options(options), m_scene(std::move(scene)), m_script(std::move(script)) {
   m_rays = std::make_shared<const RayScene>(*m_scene);
-  m_albedo = m_scene->vertex_albedo();
+  m_preview = preview_radiance(*m_scene, m_scene->vertex_albedo());
   m_document = std::make_unique<Document>(m_scene, m_rays);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
   auto renderers = display_renderers(registry, *m_job, m_scene);
@@ -110,6 +110,7 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
     }
   });
 
+  m_view = m_options.view == "target" ? ui::ViewMode::Target : m_options.view == "difference" ? ui::ViewMode::Difference : ui::ViewMode::Result;
   m_headless = m_options.exit_after_script;
   m_player = std::make_unique<SessionPlayer>(*m_document, *m_job, make_hooks(),
                                              PlayerOptions{true, ".", m_options.script.empty() ? "session" : m_options.script.string()});
@@ -290,10 +291,10 @@ void PainterApp::refresh_colours() {
   std::vector<ui::VertexColour> colours;
   switch (m_view) {
   case ui::ViewMode::Result:
-    colours = no_lights ? ui::result_colours(preview_radiance(*m_scene, m_albedo), 1.f) : ui::result_colours(m_radiance, exposure);
+    colours = no_lights ? ui::result_colours(m_preview, 1.f) : ui::result_colours(m_radiance, exposure);
     break;
-  case ui::ViewMode::Target: colours = ui::target_colours(s.psi, s.weight, m_albedo, exposure); break;
-  case ui::ViewMode::Difference: colours = ui::difference_colours(s.psi, s.weight, m_radiance, exposure); break;
+  case ui::ViewMode::Target: colours = ui::target_colours(s.psi, s.weight, m_preview, exposure); break;
+  case ui::ViewMode::Difference: colours = ui::difference_colours(s.psi, s.weight, m_radiance, m_preview, exposure); break;
   }
   m_mesh->set_colours(colours);
   ++m_colour_uploads;

@@ -111,7 +111,7 @@ private:
   SessionRecorder m_recorder;
   std::filesystem::path m_record_path;
   std::optional<size_t> m_job_action;  ///< recorded index of the running job's action
-  std::vector<Rgb> m_albedo;
+  std::vector<Rgb> m_preview;  ///< albedo under a fixed key light: the view before lights, and the "don't care" backdrop
 
   std::unique_ptr<ui::Window> m_window;
   std::unique_ptr<ui::SceneMesh> m_mesh;

@@ -25,11 +25,11 @@ std::vector<VertexColour> result_colours(const std::vector<Rgb>& radiance, float
 }
 
 std::vector<VertexColour> target_colours(const std::vector<Rgb>& psi, const std::vector<float>& weight,
-                                         const std::vector<Rgb>& albedo, float exposure) {
+                                         const std::vector<Rgb>& backdrop, float exposure) {
   std::vector<VertexColour> out(psi.size());
   for (size_t i = 0; i < psi.size(); ++i) {
     if (weight[i] > 0.f) out[i].rgb = glm::clamp(psi[i] * exposure, 0.f, 1.f);
-    else out[i] = {0.25f * albedo[i], 1.f};
+    else out[i] = {backdrop[i], 1.f};
   }
   return out;
 }
@@ -42,11 +42,12 @@ Rgb heat_colour(float t) {
 }
 
 std::vector<VertexColour> difference_colours(const std::vector<Rgb>& psi, const std::vector<float>& weight,
-                                             const std::vector<Rgb>& radiance, float exposure) {
+                                             const std::vector<Rgb>& radiance, const std::vector<Rgb>& backdrop,
+                                             float exposure) {
   std::vector<VertexColour> out(psi.size());
   for (size_t i = 0; i < psi.size(); ++i) {
     if (weight[i] > 0.f) out[i].rgb = heat_colour(std::abs(luminance(psi[i]) - luminance(radiance[i])) * exposure);
-    else out[i] = {Rgb(0.12f), 1.f};
+    else out[i] = {backdrop[i], 1.f};
   }
   return out;
 }

@@ -19,16 +19,17 @@ float auto_exposure(const std::vector<Rgb>& values, const std::vector<float>& we
 /// The result view: I(p) · exposure.
 std::vector<VertexColour> result_colours(const std::vector<Rgb>& radiance, float exposure);
 
-/// The target view: painted vertices show Ψ · exposure; "don't care" ones are
-/// a dim, hatched version of their albedo.
+/// The target view: painted vertices show Ψ · exposure; "don't care" ones
+/// show `backdrop` (display-ready shading that keeps the geometry readable), hatched.
 std::vector<VertexColour> target_colours(const std::vector<Rgb>& psi, const std::vector<float>& weight,
-                                         const std::vector<Rgb>& albedo, float exposure);
+                                         const std::vector<Rgb>& backdrop, float exposure);
 
 /// The difference view: |lum(Ψ) − lum(I)| · exposure on a black → blue → red →
 /// yellow ramp (yellow = a difference of the display's full white); "don't
-/// care" vertices are hatched grey.
+/// care" vertices show `backdrop`, hatched.
 std::vector<VertexColour> difference_colours(const std::vector<Rgb>& psi, const std::vector<float>& weight,
-                                             const std::vector<Rgb>& radiance, float exposure);
+                                             const std::vector<Rgb>& radiance, const std::vector<Rgb>& backdrop,
+                                             float exposure);
 
 /// The heat ramp at t in [0, 1] (clamped).
 Rgb heat_colour(float t);
