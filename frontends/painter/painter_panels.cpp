@@ -2,6 +2,7 @@
 // Buttons call perform() with the same actions a session script holds.
 #include "painter_app.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -167,7 +168,8 @@ void PainterApp::panel_solve() {
   ImGui::Checkbox("fine-tune after each stroke", &m_options.auto_fine_tune);
   tip("When there are lights, every brush stroke starts a fine-tune (paper section 4.2)");
   if (busy) {
-    ImGui::ProgressBar(-1.f * float(ImGui::GetTime()), ImVec2(-1, 0), m_job->progress().c_str());
+    // The Solver reports stages, not fractions: a sweeping bar labelled with the stage.
+    ImGui::ProgressBar(std::fmod(0.5f * float(ImGui::GetTime()), 1.f), ImVec2(-1, 0), m_job->progress().c_str());
     if (ImGui::Button("Cancel (Esc)")) m_job->cancel();
     tip("Stops the solve at its next stage; the lights stay as they were");
   }
