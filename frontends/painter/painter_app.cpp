@@ -156,12 +156,10 @@ int PainterApp::run() {
     frame(false, m_options.window_screenshot);
   }
   if (m_options.bench) run_bench();
-  if (!m_options.timings.empty()) {
-    const std::string text = m_timer.to_json();
-    if (m_options.timings == "-") std::cout << text;
-    else write_atomically(m_options.timings, [&](const std::filesystem::path& temp) { std::ofstream(temp) << text; });
+  if (m_options.exit_after_script) {
+    write_timings();
+    return 0;
   }
-  if (m_options.exit_after_script) return 0;
 
   // Interactive: solves run in the background and the player polls them.
   m_headless = false;
@@ -173,7 +171,15 @@ int PainterApp::run() {
   if (!m_record_path.empty()) status("recording this session to " + m_record_path.string());
   while (!m_window->should_close()) frame(true);
   m_job->cancel();
+  write_timings();  // the interactive frames too: what a designer's hands produced
   return 0;
+}
+
+void PainterApp::write_timings() const {
+  if (m_options.timings.empty()) return;
+  const std::string text = m_timer.to_json();
+  if (m_options.timings == "-") std::cout << text;
+  else write_atomically(m_options.timings, [&](const std::filesystem::path& temp) { std::ofstream(temp) << text; });
 }
 
 void PainterApp::frame(bool interactive, const std::filesystem::path& capture) {

@@ -60,6 +60,8 @@ private:
   /// Blocks until the result view shows the current lights (replay, screenshots).
   void settle();
   float aspect() const;
+  /// --timings: frame and latency figures so far.
+  void write_timings() const;
 
   // --- actions (painter_session_hooks.cpp) ---
   PlayerHooks make_hooks();
