@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -402,6 +403,62 @@ TEST_CASE("solve with a spot hint recovers one spotlight and one point light", "
   CHECK(glm::length(found.position - spot.position) < 0.2f);
   CHECK(angle < 5.0);
   CHECK(std::abs(found.cutoff_deg - spot.cutoff_deg) < 3.f);
+}
+
+// ---------------------------------------------------------------------------
+// The same solves through the ism-vulkan renderer (lavapipe here): the target
+// comes from Embree, the solve evaluates everything with ism-vulkan, and the
+// found lights, rendered by Embree, must reproduce the target within D̄ 2%.
+
+/// D̄ of Embree's rendering of `lights` against `target` (both per vertex).
+double embree_dbar(const Case& c, const fs::path& lights, const fs::path& dir) {
+  const fs::path rendered = dir / "found-by-embree.ply";
+  render(c.scene, lights, rendered);
+  return dbar(read_points(rendered).colour, read_points(c.target).colour);
+}
+
+TEST_CASE("a solve with --renderer ism-vulkan recovers the open scene's 2 lights", "[solve][recovery][ism]") {
+  if (std::string why = test::registry().renderer_unavailable_reason("ism-vulkan"); !why.empty()) {
+    std::cout << "SKIPPED: ism-vulkan renderer unavailable: " << why << std::endl;
+    return;
+  }
+  auto dir = test::output_dir("solve_recovery_ism_two_objects");
+  Case c = make_case(dir, two_objects_scene().write(dir, "two-objects"), kTwoObjectsLights);
+  // Every Vulkan call of the solve runs under the validation layer; an error fails the solve.
+  Solved s = solve(c.scene, c.target, dir, "found", {"--renderer", "ism-vulkan", "--set", "validation=true"});
+  const double embree = embree_dbar(c, s.lights_path, dir);
+  WARN("ism-vulkan solve: " << s.lights.size() << " lights in " << s.seconds << " s, D̄ " << s.report.at("dbar").get<double>()
+                            << " (ism-vulkan), " << embree << " (Embree rendering of the result)\nfound:\n"
+                            << describe(s.lights));
+  CHECK(s.lights.size() == c.truth.size());
+  CHECK(embree <= 0.02);
+  CHECK(mean_position_error(c.truth, s.lights) / c.diagonal <= kPositionTolerance);
+}
+
+TEST_CASE("a solve with --renderer ism-vulkan and a spot hint recovers the spot room's lights", "[solve][recovery][ism][spot]") {
+  if (std::string why = test::registry().renderer_unavailable_reason("ism-vulkan"); !why.empty()) {
+    std::cout << "SKIPPED: ism-vulkan renderer unavailable: " << why << std::endl;
+    return;
+  }
+  auto dir = test::output_dir("solve_recovery_ism_spot");
+  Case c = make_case(dir, spot_room_scene().write(dir, "spot-room"), spot_room_lights());
+  const Light& spot = c.truth[1];
+  Lighting hints = {Light::spot(spot.position + Vec3(0.1f, -0.1f, 0.1f), spot.direction, spot.cutoff_deg + 3.f, Rgb(1.f),
+                                spot.falloff_deg)};
+  hilight::write_lights_json(dir / "hints.json", hints);
+  Solved s = solve(c.scene, c.target, dir, "found",
+                   {"--renderer", "ism-vulkan", "--set", "validation=true", "--spot-hints", (dir / "hints.json").string()});
+  const double embree = embree_dbar(c, s.lights_path, dir);
+  WARN("ism-vulkan spot solve: " << s.lights.size() << " lights in " << s.seconds << " s, D̄ " << s.report.at("dbar").get<double>()
+                                 << " (ism-vulkan), " << embree << " (Embree rendering of the result)\nfound:\n"
+                                 << describe(s.lights));
+  CHECK(count_of(s.lights, LightType::Spot) == 1);
+  CHECK(count_of(s.lights, LightType::Point) == 1);
+  // Stated tolerance 3%, not the open scene's 2%: in this closed room the
+  // first bounce is a third of the light, and ism-vulkan's VPLs miss ~10% of
+  // it at the room's creases (docs/ism-vulkan.md), so the intensities the
+  // solve fits come out a little high under Embree (measured 2.1-2.2%).
+  CHECK(embree <= 0.03);
 }
 
 // ---------------------------------------------------------------------------

@@ -320,7 +320,15 @@ const IsmRenderer::PointBuffers& IsmRenderer::upload_points(const SurfacePoints&
       nor[4 * i + a] = points.normals[i][a];
       alb[4 * i + a] = points.albedo[i][a];
     }
-    pos[4 * i + 3] = nor[4 * i + 3] = alb[4 * i + 3] = 0.f;
+    // Which sides face free space (bit 0: the side n points to; bit 1: the
+    // other): a side inside a closed solid receives no bounce, which the
+    // imperfect shadow maps alone would let through (docs/ism-vulkan.md).
+    const float lift = 1e-3f * m_scene->diagonal();
+    const Vec3& normal = points.normals[i];
+    const uint32_t open =
+        uint32_t(!m_rays->inside_solid(p + normal * lift)) | uint32_t(!m_rays->inside_solid(p - normal * lift)) << 1;
+    pos[4 * i + 3] = alb[4 * i + 3] = 0.f;
+    nor[4 * i + 3] = float(open);
   });
   pb->key = key;
   pb->count = n;
@@ -366,7 +374,7 @@ std::vector<RasterDraw> IsmRenderer::upload_face_triangles(std::span<const Light
   std::vector<std::vector<uint32_t>> indices(lights.size()), ids(lights.size());
   std::vector<std::vector<RasterDraw>> draws(lights.size());
   tbb::parallel_for(size_t(0), lights.size(),
-                    [&](size_t j) { cull_to_cube_faces(*m_scene, lights[j].position, indices[j], ids[j], draws[j]); });
+                    [&](size_t j) { cull_to_cube_faces(*m_scene, lights[j], indices[j], ids[j], draws[j]); });
   size_t total = 0;
   for (const auto& list : ids) total += list.size();
   const VkDeviceSize id_bytes = std::max<size_t>(total, 1) * sizeof(uint32_t);

@@ -26,18 +26,22 @@ void main() {
   if (id >= params.points * params.lights) return;
   uint c = id / params.points, i = id % params.points;
   vec3 p = positions[i].xyz, n = normals[i].xyz;
+  uint open_sides = uint(normals[i].w);  // bit 0: the side n points to faces free space; bit 1: the other
   vec3 irradiance = vec3(0.0);
   uint texels = params.size * params.size;
   for (uint k = 0u; k < params.vpls; ++k) {
     uint v = c * params.vpls + k;
     vec4 origin = vpls[3u * v];
     if (origin.w == 0.0) continue;
-    vec3 nv = vpls[3u * v + 1u].xyz;
+    vec4 normal_area = vpls[3u * v + 1u];
+    vec3 nv = normal_area.xyz;
     vec3 w = p - origin.xyz;
     float d2 = dot(w, w);
     float len = sqrt(d2);
     float cos_out = dot(nv, w) / len;
     if (!(cos_out > 0.0)) continue;
+    // The side of p that faces the VPL must be open (not inside a solid).
+    if ((open_sides & (dot(n, w) < 0.0 ? 1u : 2u)) == 0u) continue;
     float cos_in = abs(dot(n, w)) / len;
     vec3 t, b;
     basis_around(nv, t, b);
@@ -49,7 +53,9 @@ void main() {
     // the nearest splat: the bias grows with that slope.
     float slope = (PI / float(params.size)) / max(cos_in, 0.05);
     if (depth >= 0.0 && len > depth + len * (params.bias_rel + slope) + params.bias_const) continue;
-    irradiance += vpls[3u * v + 2u].rgb * (cos_out * cos_in / max(d2, params.min_dist2));
+    // A VPL is a small disk of its patch's area, not a point: on its axis a
+    // uniform disk of radius r gives 1/(d² + r²), which stays finite near it.
+    irradiance += vpls[3u * v + 2u].rgb * (cos_out * cos_in / max(d2 + normal_area.w / PI, params.min_dist2));
   }
   result[id] += vec4(albedo[i].rgb * irradiance / PI, 0.0);
 }
