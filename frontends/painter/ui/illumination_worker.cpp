@@ -1,5 +1,6 @@
 #include "ui/illumination_worker.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <stdexcept>
@@ -8,8 +9,24 @@ namespace hilight::painter::ui {
 
 IlluminationWorker::IlluminationWorker(std::vector<std::unique_ptr<Renderer>> stages, const Scene& scene,
                                        std::function<void()> on_result)
-    : m_stages(std::move(stages)), m_on_result(std::move(on_result)), m_points(SurfacePoints::from_vertices(scene)) {
+    : m_stages(std::move(stages)), m_on_result(std::move(on_result)) {
   if (m_stages.empty()) throw std::logic_error("IlluminationWorker: no renderer");
+  // Renderers seed each point's bounce samples from the point itself, so
+  // illuminating in chunks gives the same values as all at once. Few chunks:
+  // Embree keeps the bounce gathers of its last 4 point sets, and more
+  // chunks than that would gather again on every pass.
+  m_whole.push_back(SurfacePoints::from_vertices(scene));
+  const SurfacePoints& all = m_whole.front();
+  m_point_count = all.size();
+  const size_t chunk_points = std::max<size_t>(1, (all.size() + kChunks - 1) / kChunks);
+  for (size_t begin = 0; begin < all.size(); begin += chunk_points) {
+    const size_t end = std::min(all.size(), begin + chunk_points);
+    SurfacePoints chunk;
+    chunk.positions.assign(all.positions.begin() + std::ptrdiff_t(begin), all.positions.begin() + std::ptrdiff_t(end));
+    chunk.normals.assign(all.normals.begin() + std::ptrdiff_t(begin), all.normals.begin() + std::ptrdiff_t(end));
+    chunk.albedo.assign(all.albedo.begin() + std::ptrdiff_t(begin), all.albedo.begin() + std::ptrdiff_t(end));
+    m_chunks.push_back(std::move(chunk));
+  }
   m_thread = std::thread([this] { run(); });
 }
 
@@ -70,17 +87,27 @@ void IlluminationWorker::run() {
       job.tag = tag;
       job.final = stage + 1 == stages;
       std::string error;
+      bool superseded = false;
       auto start = std::chrono::steady_clock::now();
       try {
-        job.radiance = lights.empty() ? std::vector<Rgb>(m_points.size(), Rgb(0.f)) : m_stages[stage]->illuminate(m_points, lights);
+        if (lights.empty()) job.radiance.assign(m_point_count, Rgb(0.f));
+        // The exact pass after a quick one goes chunk by chunk, so a newer
+        // request need not wait for it to end; a single or quick pass goes whole.
+        const bool chunked = stages > 1 && stage + 1 == stages;
+        for (const SurfacePoints& chunk : chunked ? m_chunks : m_whole) {
+          const std::vector<Rgb> part = lights.empty() ? std::vector<Rgb>{} : m_stages[stage]->illuminate(chunk, lights);
+          job.radiance.insert(job.radiance.end(), part.begin(), part.end());
+          std::lock_guard check(m_mutex);
+          if ((superseded = m_pending || m_stop)) break;
+        }
       } catch (const std::exception& e) {
         error = e.what();
       }
       job.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       lock.lock();
       m_error = error;
-      if (error.empty()) m_done = std::move(job);
-      if (m_on_result) m_on_result();
+      if (error.empty() && !superseded) m_done = std::move(job);
+      if (m_on_result && !superseded) m_on_result();
       if (!error.empty() || m_pending || m_stop) break;  // a newer request makes later stages moot
     }
     m_running = false;

@@ -4,7 +4,8 @@
 /// Progressive: a list of renderers from quick to exact (e.g. Embree with a
 /// few bounce samples, then as the user set it up); each stage's result is
 /// shown as it comes. Only the newest request matters: a request made while
-/// one runs replaces any that waits and skips the running one's later stages.
+/// one runs replaces any that waits and skips the running one's later stages
+/// (the exact stage after a quick one stops at its next quarter).
 #include "hilight/renderer.hpp"
 #include "hilight/scene.hpp"
 
@@ -52,7 +53,10 @@ private:
 
   std::vector<std::unique_ptr<Renderer>> m_stages;
   std::function<void()> m_on_result;
-  SurfacePoints m_points;
+  static constexpr size_t kChunks = 4;
+  std::vector<SurfacePoints> m_whole;   ///< all the scene's vertices (one entry)
+  std::vector<SurfacePoints> m_chunks;  ///< the same in kChunks pieces, in order
+  size_t m_point_count = 0;
   mutable std::mutex m_mutex;
   std::condition_variable m_wake, m_idle;
   std::optional<std::pair<Lighting, uint64_t>> m_pending;
