@@ -33,8 +33,7 @@ void main() {
     uint v = c * params.vpls + k;
     vec4 origin = vpls[3u * v];
     if (origin.w == 0.0) continue;
-    vec4 normal_area = vpls[3u * v + 1u];
-    vec3 nv = normal_area.xyz;
+    vec3 nv = vpls[3u * v + 1u].xyz;
     vec3 w = p - origin.xyz;
     float d2 = dot(w, w);
     float len = sqrt(d2);
@@ -53,9 +52,7 @@ void main() {
     // the nearest splat: the bias grows with that slope.
     float slope = (PI / float(params.size)) / max(cos_in, 0.05);
     if (depth >= 0.0 && len > depth + len * (params.bias_rel + slope) + params.bias_const) continue;
-    // A VPL is a small disk of its patch's area, not a point: on its axis a
-    // uniform disk of radius r gives 1/(d² + r²), which stays finite near it.
-    irradiance += vpls[3u * v + 2u].rgb * (cos_out * cos_in / max(d2 + normal_area.w / PI, params.min_dist2));
+    irradiance += vpls[3u * v + 2u].rgb * (cos_out * cos_in / max(d2, params.min_dist2));
   }
   result[id] += vec4(albedo[i].rgb * irradiance / PI, 0.0);
 }

@@ -18,7 +18,7 @@ layout(std430, binding = 0) readonly buffer Lights { Light lights[]; };
 layout(std430, binding = 1) readonly buffer Triangles { uint triangles[]; };
 layout(std430, binding = 2) readonly buffer Corners { float corners[]; };
 layout(std430, binding = 3) readonly buffer TriangleAlbedo { vec4 triangle_albedo[]; };
-layout(std430, binding = 4) writeonly buffer Vpls { vec4 vpls[]; };  // position (w: 1 = valid), normal (w: area), power
+layout(std430, binding = 4) writeonly buffer Vpls { vec4 vpls[]; };  // position (w: 1 = valid), normal, power
 
 vec3 corner(uint t, uint k) {
   uint o = (3u * t + k) * 3u;
@@ -63,9 +63,6 @@ void main() {
   float solid_angle = 2.0 * PI * (1.0 - cos_max) / float(params.vpls);
   vec3 power = triangle_albedo[tri].rgb * (solid_angle * spot_factor(light, dir) / PI);
   vpls[3u * id] = vec4(light.position.xyz + dir * dist + n * params.lift, 1.0);
-  // The surface patch this VPL stands for: its solid angle seen from the
-  // light, at this distance and incidence (the gather spreads the VPL over it).
-  float area = solid_angle * dist * dist / max(-denom, 1e-3);
-  vpls[3u * id + 1u] = vec4(n, area);
+  vpls[3u * id + 1u] = vec4(n, 0.0);
   vpls[3u * id + 2u] = vec4(power, 0.0);
 }
