@@ -79,6 +79,8 @@ private:
   void handle_input();
   void handle_camera_input();
   void handle_keys();
+  /// Records the camera as it is now (after a drag, key moves, framing).
+  void record_camera();
   void handle_tool_input();
   std::optional<SurfacePick> pick_at_mouse() const;
   void begin_region_drag();
@@ -142,6 +144,7 @@ private:
 
   // Tool state.
   bool m_dragging_camera = false;
+  bool m_camera_keys_unrecorded = false;  ///< arrow/zoom keys moved the camera since the last record
   std::unique_ptr<Stroke> m_stroke;             ///< brush/eraser stroke in progress
   BrushSettings m_recorded_brush;               ///< brush as last recorded
   Tool m_recorded_tool = Tool::Brush;

@@ -56,9 +56,7 @@ void PainterApp::handle_camera_input() {
   if (start && !over_ui) m_dragging_camera = true;
   if (m_dragging_camera && !orbit && !pan) {
     m_dragging_camera = false;
-    // One action per drag: where the camera ended (replays see the same view).
-    const Camera c = m_camera.to_camera();
-    record(Action{"camera", {{"eye", {c.eye.x, c.eye.y, c.eye.z}}, {"target", {c.target.x, c.target.y, c.target.z}}, {"fov", c.fov_deg}}});
+    record_camera();  // one action per drag: where the camera ended
   }
   if (m_dragging_camera && (delta.x != 0.f || delta.y != 0.f)) {
     if (orbit) m_camera.orbit(-0.4f * delta.x, 0.4f * delta.y);
@@ -99,7 +97,10 @@ void PainterApp::handle_keys() {
   if (pressed(GLFW_KEY_F6)) start_job("fine_tune");
   if (pressed(GLFW_KEY_F7)) start_job("add_lights");
   if (pressed(GLFW_KEY_ESCAPE) && m_job->busy()) m_job->cancel();
-  if (pressed(GLFW_KEY_F)) m_camera = ui::OrbitCamera::framing(m_scene->bounds, aspect());
+  if (pressed(GLFW_KEY_F)) {
+    m_camera = ui::OrbitCamera::framing(m_scene->bounds, aspect());
+    record_camera();
+  }
   if (pressed(GLFW_KEY_LEFT_BRACKET) || pressed(GLFW_KEY_RIGHT_BRACKET)) {
     BrushSettings brush = m_player->brush();
     brush.radius *= pressed(GLFW_KEY_LEFT_BRACKET) ? 0.8f : 1.25f;
@@ -114,7 +115,19 @@ void PainterApp::handle_keys() {
   if (ImGui::IsKeyDown(GLFW_KEY_DOWN)) { m_camera.orbit(0.f, -step); moved = true; }
   if (ImGui::IsKeyDown(GLFW_KEY_EQUAL) || ImGui::IsKeyDown(GLFW_KEY_KP_ADD)) { m_camera.zoom(0.97f); moved = true; }
   if (ImGui::IsKeyDown(GLFW_KEY_MINUS) || ImGui::IsKeyDown(GLFW_KEY_KP_SUBTRACT)) { m_camera.zoom(1.03f); moved = true; }
-  if (moved) m_last_activity = "camera";
+  if (moved) {
+    m_last_activity = "camera";
+    m_camera_keys_unrecorded = true;
+  } else if (m_camera_keys_unrecorded) {
+    m_camera_keys_unrecorded = false;
+    record_camera();  // the keys were let go
+  }
+}
+
+void PainterApp::record_camera() {
+  // Absolute (eye, target, fov): replays see the same view whatever came before.
+  const Camera c = m_camera.to_camera();
+  record(Action{"camera", {{"eye", {c.eye.x, c.eye.y, c.eye.z}}, {"target", {c.target.x, c.target.y, c.target.z}}, {"fov", c.fov_deg}}});
 }
 
 void PainterApp::start_job(const std::string& type) {
