@@ -33,10 +33,11 @@ template <class F> double seconds_of(F&& f) {
 
 int run_bench_renderers(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Compare renderers on the same scene and lights; prints one JSON object per line", "bench renderers");
-  std::vector<std::string> names = {"embree", "ism-vulkan"};
+  // name[:key=value,...]: the solve's fast settings are worth a line each.
+  std::vector<std::string> names = {"embree", "embree:bounce_direct=vertex", "ism-vulkan", "ism-vulkan:vpls=64"};
   int repeat = 3, threads = 0, light_count = 1000;
   float max_edge = 0.15f;
-  app.add_option("--renderers", names, "renderer plugins to compare")->capture_default_str();
+  app.add_option("--renderers", names, "renderers to compare, each NAME or NAME:key=value,key=value")->capture_default_str();
   app.add_option("--lights", light_count, "unit lights in the φ batch")->check(CLI::Range(1, 100000))->capture_default_str();
   app.add_option("--repeat", repeat, "runs per figure (median reported)")->check(CLI::Range(1, 50))->capture_default_str();
   app.add_option("--max-edge", max_edge, "tessellation of the room (0.15: about 25k vertices)")->check(FiniteNonNegative)->capture_default_str();
@@ -55,19 +56,27 @@ int run_bench_renderers(const std::vector<std::string>& args, Registry& registry
   std::uniform_real_distribution<float> ux(b.lo.x + 0.2f, b.hi.x - 0.2f), uy(b.lo.y + 1.2f, b.hi.y - 0.2f), uz(b.lo.z + 0.2f, b.hi.z - 0.2f);
   for (int k = 0; k < light_count; ++k) batch.push_back(Light::point({ux(rng), uy(rng), uz(rng)}, Rgb(1.f)));
 
-  for (const auto& name : names) {
+  for (const auto& spec : names) {
+    const std::string name = spec.substr(0, spec.find(':'));
+    std::vector<std::string> settings;
+    if (spec.find(':') != std::string::npos)
+      for (size_t at = spec.find(':') + 1; at <= spec.size();) {
+        size_t comma = std::min(spec.find(',', at), spec.size());
+        settings.push_back(spec.substr(at, comma - at));
+        at = comma + 1;
+      }
     if (std::string why = registry.renderer_unavailable_reason(name); !why.empty()) {
-      nlohmann::json skip = {{"figure", "renderers"}, {"renderer", name}, {"unavailable", why}};
+      nlohmann::json skip = {{"figure", "renderers"}, {"renderer", spec}, {"unavailable", why}};
       std::printf("%s\n", skip.dump().c_str());
       continue;
     }
-    auto renderer = registry.create_renderer(name, {});
+    auto renderer = registry.create_renderer(name, Properties::from_assignments(settings));
     renderer->set_scene(scene);
     renderer->illuminate(points, config);  // warm-up: per-point-set work, shader compilation
     std::vector<double> evaluate, phi;
     for (int r = 0; r < repeat; ++r) evaluate.push_back(seconds_of([&] { renderer->illuminate(points, config); }));
     for (int r = 0; r < repeat; ++r) phi.push_back(seconds_of([&] { renderer->unit_responses(points, batch); }));
-    nlohmann::json out = {{"figure", "renderers"}, {"renderer", name}, {"triangles", scene->triangles.size()},
+    nlohmann::json out = {{"figure", "renderers"}, {"renderer", spec}, {"triangles", scene->triangles.size()},
                           {"points", points.size()}, {"evaluate_lights", config.size()}, {"evaluate_seconds", median(evaluate)},
                           {"phi_lights", batch.size()}, {"phi_seconds", median(phi)}, {"repeat", repeat}};
     for (const auto& [key, value] : renderer->baseline_figures(points, std::span<const Light>(config)))
