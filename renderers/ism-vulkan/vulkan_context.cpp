@@ -3,6 +3,7 @@
 #include "hilight/error.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <mutex>
 #include <vector>
@@ -237,6 +238,11 @@ void VulkanContext::release() {
     if (destroy) destroy(m_instance, m_messenger, nullptr);
   }
   if (m_instance) vkDestroyInstance(m_instance, nullptr);
+  // Objects still alive at vkDestroyDevice are reported by the validation
+  // layer now, when no call is left to fail: say so on stderr (tests read it).
+  if (m_pending_validation_error)
+    std::fprintf(stderr, "hilight: Vulkan validation error at shutdown: %s\n", m_first_validation_error.c_str());
+  m_pending_validation_error = false;
   m_pool = VK_NULL_HANDLE;
   m_device = VK_NULL_HANDLE;
   m_messenger = VK_NULL_HANDLE;
