@@ -1,5 +1,7 @@
 #include "support.hpp"
 
+#include <iostream>
+
 #include <array>
 #include <cstring>
 #include <fcntl.h>
@@ -12,6 +14,12 @@
 namespace test {
 
 namespace fs = std::filesystem;
+
+bool skip_without_renderer(const std::string& name) {
+  std::string why = registry().renderer_unavailable_reason(name);
+  if (!why.empty()) std::cout << "SKIPPED: " << name << " renderer unavailable: " << why << std::endl;
+  return !why.empty();
+}
 
 hilight::Registry& registry() {
   static hilight::Registry reg = [] {

@@ -14,6 +14,10 @@ namespace test {
 /// The registry loaded from the build's plugin folder (once per process).
 hilight::Registry& registry();
 
+/// True when renderer `name` cannot run here; then prints "SKIPPED: <why>",
+/// which ctest reports as a skip. Use: `if (test::skip_without_renderer("povray")) return;`
+bool skip_without_renderer(const std::string& name);
+
 /// A renderer from the registry, bound to `scene`. `settings`: "key=value".
 std::unique_ptr<hilight::Renderer> make_renderer(const std::string& name, std::shared_ptr<const hilight::Scene> scene,
                                                  const std::vector<std::string>& settings = {});

@@ -15,12 +15,6 @@
 
 using namespace hilight;
 
-#define SKIP_WITHOUT_POVRAY()                                                                     \
-  if (std::string why = test::registry().renderer_unavailable_reason("povray"); !why.empty()) {   \
-    std::cout << "SKIPPED: povray renderer unavailable: " << why << std::endl;                    \
-    return;                                                                                       \
-  }
-
 namespace {
 
 double analytic(const Vec3& p, const Vec3& n, const Light& l, float albedo) {
@@ -67,7 +61,7 @@ std::shared_ptr<const Scene> shadow_scene() {
 } // namespace
 
 TEST_CASE("POV-Ray matches the analytic point light on a plane within 1%", "[povray][cross][analytic]") {
-  SKIP_WITHOUT_POVRAY();
+  if (test::skip_without_renderer("povray")) return;
   auto scene = test::finish(builders::plane(5.f, Rgb(0.6f)), 0.5f);
   auto pov = test::make_renderer("povray", scene, {"bounces=0"});
   auto points = SurfacePoints::from_vertices(*scene);
@@ -83,7 +77,7 @@ TEST_CASE("POV-Ray matches the analytic point light on a plane within 1%", "[pov
 }
 
 TEST_CASE("Embree and POV-Ray agree per point on direct light with shadows within 1%", "[povray][cross][shadow]") {
-  SKIP_WITHOUT_POVRAY();
+  if (test::skip_without_renderer("povray")) return;
   auto scene = shadow_scene();
   auto points = SurfacePoints::from_vertices(*scene);
   Lighting lights = {Light::point({0.5f, 3.f, 0.2f}, Rgb(4.f, 3.f, 2.f)), Light::point({-2.f, 2.f, 1.f}, Rgb(1.f, 1.5f, 2.f))};
@@ -106,7 +100,7 @@ TEST_CASE("Embree and POV-Ray agree per point on direct light with shadows withi
 }
 
 TEST_CASE("Embree and POV-Ray agree on a spotlight within 1%, zero outside the cone in both", "[povray][cross][spot]") {
-  SKIP_WITHOUT_POVRAY();
+  if (test::skip_without_renderer("povray")) return;
   auto scene = test::finish(builders::plane(5.f, Rgb(0.8f)), 0.25f);
   auto points = SurfacePoints::from_vertices(*scene);
   Light spot = Light::spot({0.3f, 2.5f, -0.2f}, {0.2f, -1.f, 0.1f}, 27.f, Rgb(5.f));
@@ -128,7 +122,7 @@ TEST_CASE("Embree and POV-Ray agree on a spotlight within 1%, zero outside the c
 }
 
 TEST_CASE("the first bounce of a closed room: Embree and POV-Ray agree within 5% D-bar", "[povray][cross][bounce]") {
-  SKIP_WITHOUT_POVRAY();
+  if (test::skip_without_renderer("povray")) return;
   Scene raw = builders::box_room({4.f, 3.f, 5.f}, Rgb(0.7f, 0.6f, 0.5f));
   builders::add_box(raw, {1.5f, 0.8f, 2.f}, {2.5f, 1.f, 3.f}, Rgb(0.3f, 0.5f, 0.7f), false, "floating slab");
   auto scene = test::finish(std::move(raw), 0.4f);
@@ -160,7 +154,7 @@ TEST_CASE("the first bounce of a closed room: Embree and POV-Ray agree within 5%
 }
 
 TEST_CASE("the same camera in Embree and POV-Ray gives matching images", "[povray][cross][image]") {
-  SKIP_WITHOUT_POVRAY();
+  if (test::skip_without_renderer("povray")) return;
   auto scene = shadow_scene();
   Lighting lights = {Light::point({0.5f, 3.f, 0.2f}, Rgb(4.f)), Light::spot({-1.5f, 2.5f, 1.5f}, {0.3f, -1.f, -0.2f}, 30.f, Rgb(6.f, 4.f, 2.f))};
   Camera cam = Camera::parse("4,3.5,5,0,0.3,0,45");
@@ -195,7 +189,7 @@ TEST_CASE("the same camera in Embree and POV-Ray gives matching images", "[povra
 }
 
 TEST_CASE("a POV-Ray target solved with Embree gives back the known lights", "[povray][cross][solve]") {
-  SKIP_WITHOUT_POVRAY();
+  if (test::skip_without_renderer("povray")) return;
   auto dir = test::output_dir("cross_povray_solve");
   Scene raw = builders::box_room({5.f, 3.f, 4.f}, Rgb(0.75f));
   builders::add_box(raw, {2.f, 0.9f, 1.5f}, {3.f, 1.f, 2.5f}, Rgb(0.4f, 0.5f, 0.6f), false, "floating slab");
@@ -235,7 +229,7 @@ TEST_CASE("a POV-Ray target solved with Embree gives back the known lights", "[p
 }
 
 TEST_CASE("a soft-edged spotlight: Embree and POV-Ray agree within 1% across the edge", "[povray][cross][spot]") {
-  SKIP_WITHOUT_POVRAY();
+  if (test::skip_without_renderer("povray")) return;
   auto scene = test::finish(builders::plane(5.f, Rgb(0.8f)), 0.15f);
   auto points = SurfacePoints::from_vertices(*scene);
   Light spot = Light::spot({0.f, 2.f, 0.f}, {0.f, -1.f, 0.f}, 40.f, Rgb(2.f), 20.f);
@@ -253,7 +247,7 @@ TEST_CASE("a soft-edged spotlight: Embree and POV-Ray agree within 1% across the
 }
 
 TEST_CASE("POV-Ray failures are reported, not hidden: time limit and POV-Ray's own error", "[povray][bad-input]") {
-  SKIP_WITHOUT_POVRAY();
+  if (test::skip_without_renderer("povray")) return;
   auto scene = test::finish(builders::furnished_room(), 0.3f);
   auto points = SurfacePoints::from_vertices(*scene);
   Light light = Light::point({3.f, 2.f, 2.f}, Rgb(1.f));
@@ -271,7 +265,7 @@ TEST_CASE("POV-Ray failures are reported, not hidden: time limit and POV-Ray's o
 }
 
 TEST_CASE("hilight export writes a POV-Ray scene that POV-Ray renders like hilight", "[povray][cross][export]") {
-  SKIP_WITHOUT_POVRAY();
+  if (test::skip_without_renderer("povray")) return;
   auto dir = test::output_dir("povray_export");
   const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
   const std::string lights = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room-lights.json";

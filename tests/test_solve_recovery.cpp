@@ -418,10 +418,7 @@ double embree_dbar(const Case& c, const fs::path& lights, const fs::path& dir) {
 }
 
 TEST_CASE("a solve with --renderer ism-vulkan recovers the open scene's 2 lights", "[solve][recovery][ism]") {
-  if (std::string why = test::registry().renderer_unavailable_reason("ism-vulkan"); !why.empty()) {
-    std::cout << "SKIPPED: ism-vulkan renderer unavailable: " << why << std::endl;
-    return;
-  }
+  if (test::skip_without_renderer("ism-vulkan")) return;
   auto dir = test::output_dir("solve_recovery_ism_two_objects");
   Case c = make_case(dir, two_objects_scene().write(dir, "two-objects"), kTwoObjectsLights);
   // Every Vulkan call of the solve runs under the validation layer; an error fails the solve.
@@ -436,10 +433,7 @@ TEST_CASE("a solve with --renderer ism-vulkan recovers the open scene's 2 lights
 }
 
 TEST_CASE("a solve with --renderer ism-vulkan and a spot hint recovers the spot room's lights", "[solve][recovery][ism][spot]") {
-  if (std::string why = test::registry().renderer_unavailable_reason("ism-vulkan"); !why.empty()) {
-    std::cout << "SKIPPED: ism-vulkan renderer unavailable: " << why << std::endl;
-    return;
-  }
+  if (test::skip_without_renderer("ism-vulkan")) return;
   auto dir = test::output_dir("solve_recovery_ism_spot");
   Case c = make_case(dir, spot_room_scene().write(dir, "spot-room"), spot_room_lights());
   const Light& spot = c.truth[1];

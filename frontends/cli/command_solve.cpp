@@ -4,6 +4,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/lights_json.hpp"
+#include "hilight/pipeline/solve_renderers.hpp"
 #include "hilight/pipeline/solver.hpp"
 #include "hilight/threads.hpp"
 
@@ -108,24 +109,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   const bool progress = !quiet && ::isatty(2);
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
   auto rays = std::make_shared<const RayScene>(*scene);
-  // Renderer seeds are signed 64-bit settings: fold the user's seed into range.
-  ropts.settings.push_back("seed=" + std::to_string(seed & 0x7FFFFFFFFFFFFFFFull));
   // D̄ is measured with the renderer as the user set it up (as `hilight
   // render` would use it); the solve itself evaluates thousands of light
-  // positions, for which Embree's bounce with direct light interpolated at
-  // the gather hits is the fast choice.
+  // positions with the renderer's fast twin (pipeline/solve_renderers.hpp).
+  ropts.settings = reference_renderer_settings(ropts.settings, seed);
   auto reference = ropts.create(registry, scene);
-  auto user_set = [&](const std::string& key) {
-    return std::any_of(ropts.settings.begin(), ropts.settings.end(), [&](const std::string& kv) { return kv.rfind(key + "=", 0) == 0; });
-  };
-  if (ropts.name == "embree" && !user_set("bounce_direct")) ropts.settings.push_back("bounce_direct=vertex");
-  // ism-vulkan: 64 VPLs per light for the thousands of evaluations (a
-  // smoother bounce; the reference, as the user set it up, re-fits the
-  // intensities and measures D̄).
-  if (ropts.name == "ism-vulkan") {
-    std::erase_if(ropts.settings, [](const std::string& kv) { return kv.rfind("vpls=", 0) == 0; });
-    ropts.settings.push_back("vpls=64");
-  }
+  ropts.settings = fast_renderer_settings(ropts.name, ropts.settings);
   auto renderer = ropts.create(registry, scene);
   Target target = read_target(target_path, *scene, *rays);
   s.seed = seed;

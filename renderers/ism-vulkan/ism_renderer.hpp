@@ -26,7 +26,8 @@ public:
                                   Transport transport = Transport::All) override;
   std::string settings_key() const override { return m_settings.key(); }
   Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) override;
-  /// Seconds per stage of the last call, from GPU timestamps.
+  /// Seconds per stage of one profiled unit_responses call (each stage
+  /// submitted and waited for on its own).
   std::vector<std::pair<std::string, double>> baseline_figures(const SurfacePoints& points,
                                                                std::span<const Light> lights) override;
   std::string device_description() const { return m_context->description(); }
@@ -47,6 +48,7 @@ private:
   /// Records the whole pipeline for one chunk of lights into `cmd`.
   void record_chunk(VkCommandBuffer cmd, const PointBuffers& points, std::span<const Light> lights, Transport transport,
                     Workspace& ws, StageClock& clock);
+  void begin_commands(VkCommandBuffer cmd);
   void submit_and_wait(VkCommandBuffer cmd);
 
   IsmSettings m_settings;
@@ -61,7 +63,6 @@ private:
   std::unique_ptr<StageClock> m_clock;
   VkCommandBuffer m_cmd = VK_NULL_HANDLE;
   VkFence m_fence = VK_NULL_HANDLE;
-  std::map<std::string, double> m_stage_seconds;
   std::mutex m_mutex;  ///< one queue: calls (possibly from several solver threads) take turns
 };
 

@@ -12,12 +12,6 @@
 
 using namespace hilight;
 
-#define SKIP_WITHOUT_VULKAN()                                                                       \
-  if (std::string why = test::registry().renderer_unavailable_reason("ism-vulkan"); !why.empty()) { \
-    std::cout << "SKIPPED: ism-vulkan renderer unavailable: " << why << std::endl;                  \
-    return;                                                                                         \
-  }
-
 namespace {
 
 /// Relative L2 difference, as the solve's D̄.
@@ -55,7 +49,7 @@ std::shared_ptr<const Scene> closed_room() {
 } // namespace
 
 TEST_CASE("ism-vulkan: direct light with shadows matches Embree within 2% D-bar", "[ism][cross][shadow]") {
-  SKIP_WITHOUT_VULKAN();
+  if (test::skip_without_renderer("ism-vulkan")) return;
   auto scene = furnished_room();
   auto points = SurfacePoints::from_vertices(*scene);
   Lighting lights = {Light::point({1.5f, 2.5f, 1.1f}, Rgb(2.f)), Light::point({4.6f, 2.4f, 1.4f}, Rgb(2.f, 1.9f, 1.7f)),
@@ -68,7 +62,7 @@ TEST_CASE("ism-vulkan: direct light with shadows matches Embree within 2% D-bar"
 }
 
 TEST_CASE("ism-vulkan: a spotlight matches Embree within 2% D-bar, dark outside its cone", "[ism][cross][spot]") {
-  SKIP_WITHOUT_VULKAN();
+  if (test::skip_without_renderer("ism-vulkan")) return;
   auto scene = furnished_room();
   auto points = SurfacePoints::from_vertices(*scene);
   Lighting lights = {Light::spot({3.f, 2.8f, 1.5f}, {-0.3f, -1.f, 0.4f}, 35.f, Rgb(6.f), 8.f),
@@ -84,7 +78,7 @@ TEST_CASE("ism-vulkan: a spotlight matches Embree within 2% D-bar, dark outside 
 }
 
 TEST_CASE("ism-vulkan: the first bounce of a closed room matches Embree, closer with more VPLs", "[ism][cross][bounce]") {
-  SKIP_WITHOUT_VULKAN();
+  if (test::skip_without_renderer("ism-vulkan")) return;
   auto scene = closed_room();
   auto points = SurfacePoints::from_vertices(*scene);
   Lighting lights = {Light::point({1.f, 2.4f, 1.2f}, Rgb(4.f))};

@@ -4,25 +4,16 @@
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
-#include <iostream>
 
 namespace {
 
 const std::string kRoom = HILIGHT_SOURCE_DIR "/scenes/room.obj";
 const std::string kRoomLights = HILIGHT_SOURCE_DIR "/scenes/room-4lights.json";
 
-bool vulkan_missing() {
-  if (std::string why = test::registry().renderer_unavailable_reason("ism-vulkan"); !why.empty()) {
-    std::cout << "SKIPPED: ism-vulkan renderer unavailable: " << why << std::endl;
-    return true;
-  }
-  return false;
-}
-
 } // namespace
 
 TEST_CASE("ism-vulkan: a scene too large for the memory budget fails with one clear line", "[ism][bad-input]") {
-  if (vulkan_missing()) return;
+  if (test::skip_without_renderer("ism-vulkan")) return;
   auto dir = test::output_dir("ism_memory_limit");
   const auto out = dir / "out.ply";
   auto r = test::run_hilight({"render", kRoom, "--lights", kRoomLights, "--renderer", "ism-vulkan", "--set", "memory_mb=1", "-o",
@@ -36,7 +27,7 @@ TEST_CASE("ism-vulkan: a scene too large for the memory budget fails with one cl
 }
 
 TEST_CASE("ism-vulkan: unknown device and bad settings are refused by name", "[ism][bad-input]") {
-  if (vulkan_missing()) return;
+  if (test::skip_without_renderer("ism-vulkan")) return;
   auto dir = test::output_dir("ism_bad_settings");
   for (const char* setting : {"device=7", "ism_size=30", "vpls=0", "no_such_key=1"}) {
     auto r = test::run_hilight({"render", kRoom, "--lights", kRoomLights, "--renderer", "ism-vulkan", "--set", setting, "-o",
@@ -49,7 +40,7 @@ TEST_CASE("ism-vulkan: unknown device and bad settings are refused by name", "[i
 
 TEST_CASE("ism-vulkan: a render and an image under the validation layer report no errors and leave nothing alive",
           "[ism][validation]") {
-  if (vulkan_missing()) return;
+  if (test::skip_without_renderer("ism-vulkan")) return;
   auto dir = test::output_dir("ism_clean_run");
   auto r = test::run_hilight({"render", kRoom, "--lights", kRoomLights, "--renderer", "ism-vulkan", "--set", "validation=true",
                               "--width", "160", "--height", "120", "-o", (dir / "out.ply").string(), "-o",

@@ -24,6 +24,9 @@ struct Light {
     l.intensity = intensity;
     return l;
   }
+  /// Every field equal (the painter's undo compares states exactly).
+  bool operator==(const Light&) const = default;
+
   static Light spot(const Vec3& position, const Vec3& direction, float cutoff_deg, const Rgb& intensity,
                     float falloff_deg = 0.f) {
     Light l;

@@ -4,6 +4,7 @@ layout(constant_id = 0) const uint WORKGROUP = 64;
 layout(local_size_x_id = 0) in;
 
 const float PI = 3.14159265358979;
+const uint VPL_STRIDE = 5u;  // vec4s per VPL (vpl_generate.comp)
 
 // One number per thread over a 1D or 2D grid of work groups.
 uint thread_id() {

@@ -31,9 +31,9 @@ void main() {
   uint texels = params.size * params.size;
   for (uint k = 0u; k < params.vpls; ++k) {
     uint v = c * params.vpls + k;
-    vec4 origin = vpls[3u * v];
+    vec4 origin = vpls[VPL_STRIDE * v];
     if (origin.w == 0.0) continue;
-    vec3 nv = vpls[3u * v + 1u].xyz;
+    vec3 nv = vpls[VPL_STRIDE * v + 1u].xyz;
     vec3 w = p - origin.xyz;
     float d2 = dot(w, w);
     float len = sqrt(d2);
@@ -42,9 +42,7 @@ void main() {
     // The side of p that faces the VPL must be open (not inside a solid).
     if ((open_sides & (dot(n, w) < 0.0 ? 1u : 2u)) == 0u) continue;
     float cos_in = abs(dot(n, w)) / len;
-    vec3 t, b;
-    basis_around(nv, t, b);
-    vec3 local = vec3(dot(w, t), dot(w, b), dot(w, nv));
+    vec3 local = vec3(dot(w, vpls[VPL_STRIDE * v + 3u].xyz), dot(w, vpls[VPL_STRIDE * v + 4u].xyz), dot(w, nv));
     ivec2 texel = paraboloid_texel(local, len, params.size);
     float depth = pyramid[v * texels + uint(texel.y) * params.size + uint(texel.x)];
     // A texel spans about π/size radians; across it a surface seen at angle
@@ -52,7 +50,7 @@ void main() {
     // the nearest splat: the bias grows with that slope.
     float slope = (PI / float(params.size)) / max(cos_in, 0.05);
     if (depth >= 0.0 && len > depth + len * (params.bias_rel + slope) + params.bias_const) continue;
-    irradiance += vpls[3u * v + 2u].rgb * (cos_out * cos_in / max(d2, params.min_dist2));
+    irradiance += vpls[VPL_STRIDE * v + 2u].rgb * (cos_out * cos_in / max(d2, params.min_dist2));
   }
   result[id] += vec4(albedo[i].rgb * irradiance / PI, 0.0);
 }

@@ -20,15 +20,13 @@ void main() {
   uint id = thread_id();
   if (id >= params.vpls * params.per_vpl) return;
   uint v = id / params.per_vpl, j = id % params.per_vpl;
-  vec4 origin = vpls[3u * v];
+  vec4 origin = vpls[VPL_STRIDE * v];
   if (origin.w == 0.0) return;
-  vec3 n = vpls[3u * v + 1u].xyz;
+  vec3 n = vpls[VPL_STRIDE * v + 1u].xyz, t = vpls[VPL_STRIDE * v + 3u].xyz, b = vpls[VPL_STRIDE * v + 4u].xyz;
   // The pool is shuffled: a run of it from a per-VPL start is a random subset.
   vec3 q = pool[(hash_u32(v) + j) % params.pool].xyz;
   vec3 w = q - origin.xyz;
   float len = length(w);
-  vec3 t, b;
-  basis_around(n, t, b);
   vec3 local = vec3(dot(w, t), dot(w, b), dot(w, n));
   if (local.z <= 1e-6 * len || len == 0.0) return;
   ivec2 texel = paraboloid_texel(local, len, params.size);

@@ -18,7 +18,9 @@ layout(std430, binding = 0) readonly buffer Lights { Light lights[]; };
 layout(std430, binding = 1) readonly buffer Triangles { uint triangles[]; };
 layout(std430, binding = 2) readonly buffer Corners { float corners[]; };
 layout(std430, binding = 3) readonly buffer TriangleAlbedo { vec4 triangle_albedo[]; };
-layout(std430, binding = 4) writeonly buffer Vpls { vec4 vpls[]; };  // position (w: 1 = valid), normal, power
+// Per VPL (VPL_STRIDE vec4s): position (w: 1 = valid), normal, power, and the
+// basis of its hemisphere (tangent, bitangent), computed once here.
+layout(std430, binding = 4) writeonly buffer Vpls { vec4 vpls[]; };
 
 vec3 corner(uint t, uint k) {
   uint o = (3u * t + k) * 3u;
@@ -40,9 +42,7 @@ void main() {
   basis_around(axis, t, b);
   vec3 dir = normalize(sin_theta * cos(phi) * t + sin_theta * sin(phi) * b + cos_theta * axis);
 
-  vpls[3u * id] = vec4(0.0);
-  vpls[3u * id + 1u] = vec4(0.0);
-  vpls[3u * id + 2u] = vec4(0.0);
+  for (uint k = 0u; k < VPL_STRIDE; ++k) vpls[VPL_STRIDE * id + k] = vec4(0.0);
   uint f = cube_face(dir);
   ivec2 texel = clamp(ivec2(cube_texel(dir, f, params.size)), ivec2(0), ivec2(int(params.size) - 1));
   uint index = (c * 6u + f) * params.size * params.size + uint(texel.y) * params.size + uint(texel.x);
@@ -62,7 +62,11 @@ void main() {
   if (!(dist > 0.0)) return;
   float solid_angle = 2.0 * PI * (1.0 - cos_max) / float(params.vpls);
   vec3 power = triangle_albedo[tri].rgb * (solid_angle * spot_factor(light, dir) / PI);
-  vpls[3u * id] = vec4(light.position.xyz + dir * dist + n * params.lift, 1.0);
-  vpls[3u * id + 1u] = vec4(n, 0.0);
-  vpls[3u * id + 2u] = vec4(power, 0.0);
+  vec3 tangent, bitangent;
+  basis_around(n, tangent, bitangent);
+  vpls[VPL_STRIDE * id] = vec4(light.position.xyz + dir * dist + n * params.lift, 1.0);
+  vpls[VPL_STRIDE * id + 1u] = vec4(n, 0.0);
+  vpls[VPL_STRIDE * id + 2u] = vec4(power, 0.0);
+  vpls[VPL_STRIDE * id + 3u] = vec4(tangent, 0.0);
+  vpls[VPL_STRIDE * id + 4u] = vec4(bitangent, 0.0);
 }
