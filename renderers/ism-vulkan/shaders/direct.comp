@@ -34,9 +34,11 @@ vec3 corner(uint t, uint k) {
   return vec3(corners[o], corners[o + 1u], corners[o + 2u]);
 }
 
+// Blocks if hit between the light (beyond 2ε of it) and the lifted point:
+// the same segment as Embree's shadow ray from the point.
 bool blocks_triangle(uint t, vec3 origin, vec3 dir, float reach) {
   float d = ray_triangle(origin, dir, corner(t, 0u), corner(t, 1u), corner(t, 2u));
-  return d > 0.0 && d < reach;
+  return d > 2.0 * params.epsilon && d < reach;
 }
 
 // Does triangle `hit` (+1; 0 = none), or one of its neighbours, block the ray before `reach`?
@@ -69,7 +71,7 @@ void main() {
       vec3 side = dot(n, to_point) < 0.0 ? n : -n;
       vec3 q = p + side * params.epsilon;
       vec3 dq = q - light.position.xyz;
-      float reach = length(dq) - params.epsilon;
+      float reach = length(dq);
       vec3 dir = dq / length(dq);
       uint f = cube_face(dq);
       ivec2 t0 = ivec2(floor(cube_texel(dq, f, params.size) - 0.5));
