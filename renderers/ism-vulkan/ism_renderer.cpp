@@ -8,10 +8,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <array>
-#include <unordered_map>
+#include <cmath>
 #include <cstring>
-#include <random>
 #include <stdexcept>
 #include <tbb/parallel_for.h>
 
@@ -100,39 +98,6 @@ std::vector<uint32_t> pyramid_offsets(uint32_t vpls, uint32_t size) {
   return offsets;
 }
 
-/// For each triangle, the triangle across each of its edges (~0u: none; on
-/// an edge shared by more than two, the first other one). Edges are matched
-/// by position, not vertex index: the faces of a box have vertices of their
-/// own, and a ray grazing a box's edge must find the face across it.
-std::vector<uint32_t> edge_neighbours(const Scene& scene) {
-  struct PositionHash {
-    size_t operator()(const Vec3& p) const {
-      return std::hash<float>()(p.x) ^ (std::hash<float>()(p.y) * 31) ^ (std::hash<float>()(p.z) * 131);
-    }
-  };
-  std::unordered_map<Vec3, uint32_t, PositionHash> canonical;
-  std::vector<uint32_t> id(scene.positions.size());
-  for (size_t v = 0; v < scene.positions.size(); ++v) id[v] = canonical.try_emplace(scene.positions[v], uint32_t(v)).first->second;
-  std::unordered_map<uint64_t, std::array<uint32_t, 2>> edges;
-  auto key = [&](uint32_t a, uint32_t b) {
-    a = id[a];
-    b = id[b];
-    return a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a);
-  };
-  for (uint32_t t = 0; t < scene.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      auto [it, fresh] = edges.try_emplace(key(scene.triangles[t][k], scene.triangles[t][(k + 1) % 3]), std::array<uint32_t, 2>{t, ~0u});
-      if (!fresh && it->second[1] == ~0u) it->second[1] = t;
-    }
-  std::vector<uint32_t> out(3 * scene.triangles.size(), ~0u);
-  for (uint32_t t = 0; t < scene.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const auto& pair = edges.at(key(scene.triangles[t][k], scene.triangles[t][(k + 1) % 3]));
-      out[3 * t + k] = pair[0] == t ? pair[1] : pair[0];
-    }
-  return out;
-}
-
 template <class T, size_t N> std::span<const uint32_t> spirv(const T (&code)[N]) { return {code, N}; }
 
 } // namespace
@@ -203,13 +168,7 @@ IsmRenderer::~IsmRenderer() {
   m_points.reset();
   m_kernels.reset();
   m_raster.reset();
-  m_corners.reset();
-  m_vertices.reset();
-  m_indices.reset();
-  m_identity_ids.reset();
-  m_neighbours.reset();
-  m_triangle_albedo.reset();
-  m_pool.reset();
+  m_buffers.reset();
   if (m_fence) vkDestroyFence(m_context->device(), m_fence, nullptr);
   if (m_cmd) vkFreeCommandBuffers(m_context->device(), m_context->command_pool(), 1, &m_cmd);
 }
@@ -218,60 +177,10 @@ void IsmRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   std::lock_guard lock(m_mutex);
   if (m_scene) throw std::logic_error("IsmRenderer: set_scene may be called once");
   const Scene& s = *scene;
-  const size_t triangles = s.triangles.size();
-  if (triangles == 0) throw InputError(s.source, "the scene has no triangles");
-  if (triangles > (size_t(1) << 30) / 3) throw InputError(s.source, "too many triangles for the ism-vulkan renderer");
   m_rays = std::make_unique<RayScene>(s);
   VulkanContext& ctx = *m_context;
-  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-  m_vertices = std::make_unique<Buffer>(ctx, s.positions.size() * 3 * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true,
-                                        "the scene's vertices");
-  m_indices = std::make_unique<Buffer>(ctx, triangles * 3 * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, true,
-                                       "the scene's triangles");
-  std::memcpy(m_vertices->data<float>(), s.positions.data(), s.positions.size() * 3 * sizeof(float));
-  std::memcpy(m_indices->data<uint32_t>(), s.triangles.data(), triangles * 3 * sizeof(uint32_t));
-  m_neighbours = std::make_unique<Buffer>(ctx, triangles * 3 * sizeof(uint32_t), storage, true, "the triangles' neighbours");
-  const std::vector<uint32_t> neighbours = edge_neighbours(s);
-  std::memcpy(m_neighbours->data<uint32_t>(), neighbours.data(), neighbours.size() * sizeof(uint32_t));
-  m_identity_ids = std::make_unique<Buffer>(ctx, triangles * sizeof(uint32_t), storage, true, "the scene's triangle ids");
-  for (uint32_t t = 0; t < triangles; ++t) m_identity_ids->data<uint32_t>()[t] = t;
-  // Corner positions per triangle, for the VPL stage's exact hit points.
-  m_corners = std::make_unique<Buffer>(ctx, triangles * 9 * sizeof(float), storage, true, "the scene's triangle corners");
-  m_triangle_albedo = std::make_unique<Buffer>(ctx, triangles * 4 * sizeof(float), storage, true, "the scene's albedo");
-  float* corners = m_corners->data<float>();
-  float* albedo = m_triangle_albedo->data<float>();
-  std::vector<double> cumulative_area(triangles);
-  double area = 0;
-  for (size_t t = 0; t < triangles; ++t) {
-    for (int k = 0; k < 3; ++k)
-      for (int a = 0; a < 3; ++a) corners[t * 9 + k * 3 + a] = s.positions[s.triangles[t][k]][a];
-    Rgb rho = s.triangle_albedo(t);
-    for (int a = 0; a < 3; ++a) albedo[t * 4 + a] = rho[a];
-    albedo[t * 4 + 3] = 0.f;
-    const Vec3 &p0 = s.positions[s.triangles[t][0]], &p1 = s.positions[s.triangles[t][1]], &p2 = s.positions[s.triangles[t][2]];
-    area += 0.5 * double(glm::length(glm::cross(p1 - p0, p2 - p0)));
-    cumulative_area[t] = area;
-  }
-  if (!(area > 0)) throw InputError(s.source, "the scene's triangles have no area");
-  // The ISMs' point samples: uniform over the surface area, in random order
-  // (each VPL splats a run of them, i.e. its own random subset).
-  const uint32_t pool_size = m_settings.ism_points;
-  m_pool = std::make_unique<Buffer>(ctx, size_t(pool_size) * 4 * sizeof(float), storage, true, "the ISM point samples");
-  float* pool = m_pool->data<float>();
-  std::mt19937_64 rng(m_settings.seed * 0x9E3779B97F4A7C15ull + 17);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  for (uint32_t k = 0; k < pool_size; ++k) {
-    size_t t = size_t(std::lower_bound(cumulative_area.begin(), cumulative_area.end(), uniform(rng) * area) - cumulative_area.begin());
-    t = std::min(t, triangles - 1);
-    float r1 = float(std::sqrt(uniform(rng))), r2 = float(uniform(rng));
-    const Vec3 &p0 = s.positions[s.triangles[t][0]], &p1 = s.positions[s.triangles[t][1]], &p2 = s.positions[s.triangles[t][2]];
-    Vec3 q = (1.f - r1) * p0 + r1 * (1.f - r2) * p1 + r1 * r2 * p2;
-    pool[4 * k] = q.x;
-    pool[4 * k + 1] = q.y;
-    pool[4 * k + 2] = q.z;
-    pool[4 * k + 3] = 1.f;
-  }
-  m_raster = std::make_unique<TriangleRaster>(ctx, *m_vertices, spirv(kTriangleRasterVert), spirv(kTriangleRasterFrag));
+  m_buffers = std::make_unique<SceneBuffers>(ctx, s, m_settings.ism_points, m_settings.seed);
+  m_raster = std::make_unique<TriangleRaster>(ctx, m_buffers->vertices, spirv(kTriangleRasterVert), spirv(kTriangleRasterFrag));
   m_kernels = std::make_unique<Kernels>(ctx, m_settings.workgroup);
   m_scene = std::move(scene);
 }
@@ -399,7 +308,7 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
   const Kernels& k = *m_kernels;
   if (transport != Transport::IndirectOnly) {
     DirectParams p{n, c, s.shadow_size, m_rays->epsilon()};
-    k.direct.dispatch(cmd, {&pb.positions, &pb.normals, &pb.albedo, &ws.light_data, &ws.triangles, m_corners.get(), m_neighbours.get(),
+    k.direct.dispatch(cmd, {&pb.positions, &pb.normals, &pb.albedo, &ws.light_data, &ws.triangles, &m_buffers->corners, &m_buffers->neighbours,
                                    &pb.crease, &ws.result},
                       &p,
                       uint64_t(n) * c);
@@ -412,12 +321,12 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
 
   const uint32_t vpls = c * s.vpls;
   VplParams vp{c, s.vpls, s.shadow_size, uint32_t(s.seed * 2654435761u), 1e-4f * diagonal};
-  k.vpl.dispatch(cmd, {&ws.light_data, &ws.triangles, m_corners.get(), m_triangle_albedo.get(), &ws.vpls}, &vp, vpls);
+  k.vpl.dispatch(cmd, {&ws.light_data, &ws.triangles, &m_buffers->corners, &m_buffers->triangle_albedo, &ws.vpls}, &vp, vpls);
   vkCmdFillBuffer(cmd, ws.ism.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
   full_barrier(cmd);
   clock.mark("vpls", flush);
   SplatParams sp{vpls, s.points_per_vpl, s.ism_points, s.ism_size};
-  k.splat.dispatch(cmd, {&ws.vpls, m_pool.get(), &ws.ism}, &sp, uint64_t(vpls) * s.points_per_vpl);
+  k.splat.dispatch(cmd, {&ws.vpls, &m_buffers->pool, &ws.ism}, &sp, uint64_t(vpls) * s.points_per_vpl);
   full_barrier(cmd);
   clock.mark("ism_splat", flush);
   const std::vector<uint32_t> offsets = pyramid_offsets(vpls, s.ism_size);
@@ -498,69 +407,6 @@ std::vector<Rgb> IsmRenderer::illuminate(const SurfacePoints& points, std::span<
   for (size_t j = 0; j < lights.size(); ++j)
     for (size_t i = 0; i < n; ++i) out[i] += lights[j].intensity * unit[j * n + i];
   return out;
-}
-
-Image IsmRenderer::render_image(const Camera& camera, std::span<const Light> lights, int width, int height) {
-  if (width <= 0 || height <= 0) throw InputError("renderer ism-vulkan: image size must be positive");
-  const Scene& scene = *m_scene;
-  SurfacePoints pixels;
-  std::vector<size_t> pixel_index;
-  {
-    std::lock_guard lock(m_mutex);
-    if (!m_scene) throw std::logic_error("IsmRenderer: set_scene was not called");
-    // The camera's G-buffer from the same raster as the shadow maps: the
-    // triangle seen in each pixel, intersected with the pixel's ray.
-    const Camera::Basis b = camera.basis();
-    const float aspect = float(width) / float(height);
-    RasterView view{camera.eye, b.forward, b.right / (b.tan_half_fov * aspect), -b.up / b.tan_half_fov,
-                    1e-3f * scene.diagonal(), glm::length(camera.eye - scene.bounds.center()) + 2.f * scene.diagonal()};
-    const VkDeviceSize bytes = VkDeviceSize(width) * height * 4;
-    Buffer triangles(*m_context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "the image's triangles");
-    begin_commands(m_cmd);
-    const RasterDraw all{0, uint32_t(scene.triangles.size())};
-    m_raster->record(m_cmd, std::span<const RasterView>(&view, 1), std::span<const RasterDraw>(&all, 1), *m_indices,
-                     *m_identity_ids, uint32_t(width), uint32_t(height), triangles);
-    full_barrier(m_cmd);
-    submit_and_wait(m_cmd);
-    m_context->throw_on_validation_errors();
-    const uint32_t* tri = triangles.data<uint32_t>();
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) {
-        const size_t k = size_t(y) * width + x;
-        if (tri[k] == 0) continue;
-        const size_t t = tri[k] - 1;
-        float sx = (2.f * (float(x) + 0.5f) / float(width) - 1.f) * b.tan_half_fov * aspect;
-        float sy = (1.f - 2.f * (float(y) + 0.5f) / float(height)) * b.tan_half_fov;
-        const Vec3 dir = glm::normalize(b.forward + sx * b.right + sy * b.up);
-        const auto& ids = scene.triangles[t];
-        const Vec3 &a = scene.positions[ids[0]], e1 = scene.positions[ids[1]] - a, e2 = scene.positions[ids[2]] - a;
-        const Vec3 plane = scene.face_normal(t);
-        const float facing = glm::dot(plane, dir);
-        if (std::abs(facing) < 1e-6f) continue;  // edge-on: no area to shade
-        const Vec3 p = camera.eye + dir * (glm::dot(plane, a - camera.eye) / facing);
-        // Shading normal: the vertex normals at p's barycentrics.
-        Vec3 q = p - a;
-        float d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
-        float denom = d11 * d22 - d12 * d12;
-        float u = denom > 0 ? (d22 * glm::dot(q, e1) - d12 * glm::dot(q, e2)) / denom : 0.f;
-        float v = denom > 0 ? (d11 * glm::dot(q, e2) - d12 * glm::dot(q, e1)) / denom : 0.f;
-        u = std::clamp(u, 0.f, 1.f);
-        v = std::clamp(v, 0.f, 1.f - u);
-        Vec3 n = (1.f - u - v) * scene.normals[ids[0]] + u * scene.normals[ids[1]] + v * scene.normals[ids[2]];
-        n = glm::dot(n, n) > 0 ? glm::normalize(n) : scene.face_normal(t);
-        pixels.positions.push_back(a + u * e1 + v * e2);
-        pixels.normals.push_back(n);
-        pixels.albedo.push_back(scene.triangle_albedo(t));
-        pixel_index.push_back(k);
-      }
-  }
-  std::vector<Rgb> shaded = illuminate(pixels, lights);
-  Image image(width, height);
-  for (size_t k = 0; k < pixel_index.size(); ++k) {
-    image.pixels[pixel_index[k]] = shaded[k];
-    image.covered[pixel_index[k]] = 1;
-  }
-  return image;
 }
 
 std::vector<std::pair<std::string, double>> IsmRenderer::baseline_figures(const SurfacePoints& points,

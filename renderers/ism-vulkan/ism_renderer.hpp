@@ -6,6 +6,7 @@
 #include "compute_kernel.hpp"
 #include "triangle_raster.hpp"
 #include "ism_settings.hpp"
+#include "scene_buffers.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/renderer.hpp"
 
@@ -55,7 +56,7 @@ private:
   std::unique_ptr<VulkanContext> m_context;
   std::shared_ptr<const Scene> m_scene;
   std::unique_ptr<RayScene> m_rays;
-  std::unique_ptr<Buffer> m_vertices, m_indices, m_identity_ids, m_corners, m_neighbours, m_triangle_albedo, m_pool;
+  std::unique_ptr<SceneBuffers> m_buffers;
   std::unique_ptr<TriangleRaster> m_raster;
   std::unique_ptr<Kernels> m_kernels;
   std::unique_ptr<PointBuffers> m_points;
