@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <limits>
 #include <thread>
 
 using namespace hilight;
@@ -176,7 +177,7 @@ TEST_CASE("painter: replayed shadow, spotlight, adjust and erase-shadow actions"
   CHECK(doc->painted_count() == 0);
 }
 
-TEST_CASE("painter: an interactive solve result waits for the stroke in progress", "[painter]") {
+TEST_CASE("painter: an interactive solve result waits for the stroke in progress, then is dropped", "[painter]") {
   auto world = painter_test::make_world(builders::box_room({4.f, 3.f, 4.f}), 0.5f);
   auto doc = world.document();
   SolveJob job(test::registry(), world.scene, world.rays, painter_test::quick_options());
@@ -192,14 +193,158 @@ TEST_CASE("painter: an interactive solve result waits for the stroke in progress
     while (job.busy()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     CHECK_FALSE(player.poll());  // mid-stroke: not yet
   }
+  // The stroke changed the target the solve answered: its result is dropped
+  // (a replay, which waits for each solve, could not reproduce it otherwise).
   std::optional<JobResult> result = player.poll();
+  REQUIRE(result);
+  CHECK(result->outcome == JobOutcome::Superseded);
+  CHECK(doc->state().lights.empty());
+  CHECK(doc->undo_label() == "paint");  // the stroke kept its own step
+  CHECK(job.cut_count() == 0);          // and a `cut` cannot take the dropped solve's lights
+  // Undisturbed, a result is committed as one step.
+  player.apply({"solve", {}}, 3);
+  while (job.busy()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  result = player.poll();
   REQUIRE(result);
   REQUIRE(result->outcome == JobOutcome::Done);
   CHECK(doc->state().lights.size() == result->lights.size());
   CHECK(doc->undo_label().rfind("solve", 0) == 0);
-  doc->undo();
-  CHECK(doc->undo_label() == "paint");  // the stroke kept its own step
-  CHECK(doc->state().lights.empty());
+}
+
+TEST_CASE("painter: stroke, fine-tune and an undo while it runs: interactive and replay agree", "[painter]") {
+  auto world = painter_test::make_world(builders::box_room({4.f, 3.f, 4.f}), 0.5f);
+  const Session start = parse_session(R"({"actions": [
+    {"type": "brush", "radius": 0.6, "brightness": 0.5},
+    {"type": "stroke", "world": [[1, 0, 1], [2, 0, 1.5]]},
+    {"type": "solve"},
+    {"type": "brush", "brightness": 2},
+    {"type": "stroke", "world": [[3, 0, 3]]}]})", "start");
+  // Interactive: the fine-tune starts, the designer undoes the stroke while it runs.
+  auto live = world.document();
+  SolveJob live_job(test::registry(), world.scene, world.rays, painter_test::quick_options());
+  SessionRecorder recorder;
+  {
+    SessionPlayer replaying(*live, live_job, {}, {});
+    replaying.play(start);
+    for (const Action& a : start.actions) recorder.record(a);
+  }
+  PlayerOptions interactive;
+  interactive.wait_for_solves = false;
+  SessionPlayer player(*live, live_job, {}, interactive);
+  const PaintState before = live->state();
+  player.apply({"fine_tune", {}}, 5);
+  player.apply({"undo", {}}, 6);
+  recorder.record({"undo", {}});  // the window unrecords a job whose result is dropped
+  while (live_job.busy()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  std::optional<JobResult> result = player.poll();
+  REQUIRE(result);
+  CHECK(result->outcome == JobOutcome::Superseded);
+  CHECK(live->state().lights == before.lights);  // the tuned lights did not come back over the undo
+
+  // The replay of the recording ends in the same state.
+  auto replayed = world.document();
+  SolveJob replay_job(test::registry(), world.scene, world.rays, painter_test::quick_options());
+  SessionPlayer(*replayed, replay_job, {}, {}).play(recorder.session());
+  CHECK(replayed->state() == live->state());
+}
+
+TEST_CASE("painter: numbers must fit a float and points must be near the scene", "[painter]") {
+  // Finite doubles that overflow (or underflow) float are refused before anything runs.
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "camera", "pan": [1e300, 0]}]})"), Contains("action 0: camera: 'pan' must be [x, y]"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "adjust_region", "world": [[0, 0, 0]], "multiplier": 1e300}]})"),
+             Contains("'multiplier' must be"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "brush", "brightness": 1e300}]})"), Contains("'brightness' must be a number ≥ 0"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "brush", "radius": 1e-300}]})"), Contains("'radius' must be a number > 0"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "stroke", "world": [[0, 0, 0]], "normals": [[0, 0, 0]]}]})"),
+             Contains("stroke: a normal must be a non-zero"));
+  CHECK_THAT(parse_error(R"({"actions": [{"type": "stroke", "world": [[0, 0, 0]], "normals": [[0, 1, 0], [0, 1, 0]]}]})"),
+             Contains("one normal per point"));
+
+  auto world = painter_test::floor_with_boxes({{{-0.5f, 0.f, -0.5f}, {0.5f, 1.f, 0.5f}}});
+  auto doc = world.document();
+  SolveJob job(test::registry(), world.scene, world.rays, painter_test::quick_options());
+  std::vector<std::string> cameras;
+  PlayerHooks hooks;
+  hooks.camera = [&](const Action& a) { cameras.push_back(a.params.dump()); };
+  SessionPlayer player(*doc, job, hooks, {true, ".", "far.json"});
+  auto error_of = [&](const std::string& script) {
+    try {
+      player.play(parse_session(script, "far.json"));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // Finite as float, but far beyond the scene: Embree's arithmetic would overflow.
+  CHECK_THAT(error_of(R"({"actions": [{"type": "camera", "eye": [1e19, 1e19, 1e19], "target": [0, 0, 0]}]})"),
+             Contains("far.json: action 0 (camera): camera: eye"));
+  CHECK(cameras.empty());
+  CHECK_THAT(error_of(R"({"actions": [{"type": "spot_region", "world": [[2, 0, 2]], "eye": [1e30, 2, 1], "direction": [-1, 0, 0]}]})"),
+             Contains("spot_region: eye (1e+30, 2, 1) is more than 1e+06 scene diagonals from the scene"));
+  CHECK_THAT(error_of(R"({"actions": [{"type": "stroke", "world": [[1e30, 0, 0]]}]})"), Contains("scene diagonals from the scene"));
+  // Points off every surface are errors, not silently skipped (docs: snapped within 1% of the diagonal).
+  CHECK_THAT(error_of(R"({"actions": [{"type": "stroke", "world": [[2, 0, 2], [2, 3, 2]]}]})"),
+             Contains("far.json: action 0 (stroke): point 1 (2, 3, 2) is not on any surface"));
+  CHECK(doc->painted_count() == 0);  // nothing of the stroke was applied
+  CHECK_THAT(error_of(R"({"actions": [{"type": "adjust_region", "world": [[2, 3, 2]], "multiplier": 2}]})"),
+             Contains("is not on any surface"));
+  // World points a little above the floor snap onto it.
+  CHECK(error_of(R"({"actions": [{"type": "stroke", "world": [[2, 0.05, 2]]}]})").empty());
+  CHECK(doc->painted_count() > 0);
+}
+
+TEST_CASE("painter: values too large for a float are never written", "[painter]") {
+  auto world = painter_test::floor_with_boxes({});
+  auto doc = world.document();
+  SolveJob job(test::registry(), world.scene, world.rays, painter_test::quick_options());
+  SessionPlayer player(*doc, job, {}, {});
+  const auto dir = test::output_dir("painter_overflow");
+  // Each valid as a float; their product is not.
+  player.play(parse_session(R"({"actions": [{"type": "brush", "colour": 3e38, "brightness": 3e38},
+                                             {"type": "stroke", "world": [[0, 0, 0]]}]})", "big.json"));
+  CHECK_THROWS_WITH(doc->save_target(dir / "t.ply"), Contains("non-finite painted value"));
+  CHECK_FALSE(std::filesystem::exists(dir / "t.ply"));
+  doc->set_lights({Light::point({0.f, 2.f, 0.f}, Rgb(std::numeric_limits<float>::infinity()))}, "inf");
+  CHECK_THROWS_WITH(doc->save_lights(dir / "l.json"), Contains("light 0 is not finite"));
+  CHECK_FALSE(std::filesystem::exists(dir / "l.json"));
+}
+
+TEST_CASE("painter: recorded strokes carry their normals; brush values from the UI are clamped", "[painter]") {
+  // A thin wall: both faces within a dab. The recorded normal picks the face painted.
+  auto world = painter_test::floor_with_boxes({{{-1.f, 0.f, -0.01f}, {1.f, 1.f, 0.01f}}}, 0.2f);
+  auto painted_with = [&](const nlohmann::json& normal) {
+    auto doc = world.document();
+    SolveJob job(test::registry(), world.scene, world.rays, painter_test::quick_options());
+    SessionPlayer player(*doc, job, {}, {});
+    Action stroke{"stroke", {{"world", {{0.0, 0.5, 0.01}}}}};
+    if (!normal.is_null()) stroke.params["normals"] = {normal};
+    player.apply({"brush", {{"radius", 0.3}, {"hardness", 1.0}}}, 0);
+    player.apply(stroke, 1);
+    std::vector<uint32_t> painted;
+    for (uint32_t v = 0; v < doc->state().weight.size(); ++v)
+      if (doc->state().weight[v] > 0.f) painted.push_back(v);
+    return std::pair(painted, world.scene->normals[painted.at(0)]);
+  };
+  const auto [front, front_normal] = painted_with({0.0, 0.0, 1.0});
+  const auto [back, back_normal] = painted_with({0.0, 0.0, -1.0});
+  CHECK(front_normal.z > 0.9f);
+  CHECK(back_normal.z < -0.9f);
+  CHECK(front != back);
+
+  // What a typed-in slider value becomes is always a valid brush action.
+  BrushSettings typed;
+  typed.radius = 0.f;
+  typed.colour = Rgb(-1.f, std::numeric_limits<float>::quiet_NaN(), 2.f);
+  typed.brightness = 1e30f;
+  typed.hardness = 3.f;
+  const BrushSettings brush = clamped_brush(typed, 10.f);
+  CHECK(brush.radius > 0.f);
+  CHECK(brush.colour == Rgb(0.f, 0.f, 2.f));
+  CHECK(brush.brightness <= 1e6f);
+  CHECK(brush.hardness == 1.f);
+  CHECK_NOTHROW(validate_action(brush_action(brush), "ui", 0));
+  SessionRecorder recorder;
+  CHECK_NOTHROW(recorder.record(brush_action(brush)));
 }
 
 TEST_CASE("painter: a replayed patch-and-shadow script yields a light in the shadow's cone that lights the patch", "[painter]") {

@@ -1,6 +1,7 @@
 #include "core/brush.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hilight::painter {
 
@@ -45,6 +46,7 @@ void Stroke::dab(const SurfacePick& centre) {
   if (!m_open) return;
   if (apply_dab(m_document.scene(), m_document.begin_edit(), m_brush, m_mode, centre)) m_document.bump();
   m_points.push_back(centre.position);
+  m_normals.push_back(centre.normal);
   m_last = centre;
 }
 
@@ -82,6 +84,25 @@ void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode
   Stroke stroke(document, brush, mode);
   for (const Vec3& p : world_points) stroke.dab_at(p);
   stroke.finish();
+}
+
+void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode, const std::vector<SurfacePick>& picks) {
+  Stroke stroke(document, brush, mode);
+  for (const SurfacePick& p : picks) stroke.dab(p);
+  stroke.finish();
+}
+
+namespace {
+float clamp_to(float v, float lo, float hi) { return std::isnan(v) ? lo : std::clamp(v, lo, hi); }
+} // namespace
+
+BrushSettings clamped_brush(BrushSettings brush, float diagonal) {
+  const float d = diagonal > 0.f && std::isfinite(diagonal) ? diagonal : 1.f;
+  brush.radius = clamp_to(brush.radius, 1e-4f * d, 10.f * d);
+  for (float* c : {&brush.colour.r, &brush.colour.g, &brush.colour.b}) *c = clamp_to(*c, 0.f, 1e6f);
+  brush.brightness = clamp_to(brush.brightness, 0.f, 1e6f);
+  brush.hardness = clamp_to(brush.hardness, 0.f, 1.f);
+  return brush;
 }
 
 } // namespace hilight::painter

@@ -23,6 +23,11 @@ struct BrushSettings {
   bool operator==(const BrushSettings&) const = default;
 };
 
+/// `brush` inside what a brush action accepts (the UI's typed-in values):
+/// radius in [1e-4, 10] × diagonal, colour and brightness in [0, 1e6],
+/// hardness in [0, 1]; NaN becomes the lower bound.
+BrushSettings clamped_brush(BrushSettings brush, float diagonal);
+
 enum class BrushMode { Paint, Erase };
 
 /// Coverage in [0, 1] of a vertex at `distance` (see above).
@@ -54,17 +59,22 @@ public:
 
   /// World positions of the dabs so far (what a session script records).
   const std::vector<Vec3>& points() const { return m_points; }
+  /// The dabs' surface normals (recorded too: at a crease the nearest
+  /// surface of a bare point may be the other face).
+  const std::vector<Vec3>& normals() const { return m_normals; }
 
 private:
   Document& m_document;
   BrushSettings m_brush;
   BrushMode m_mode;
-  std::vector<Vec3> m_points;
+  std::vector<Vec3> m_points, m_normals;
   std::optional<SurfacePick> m_last;
   bool m_open = true;
 };
 
 /// A whole stroke from world points (session replay): one undo step.
 void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode, const std::vector<Vec3>& world_points);
+/// A whole stroke from surface picks: one undo step.
+void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode, const std::vector<SurfacePick>& picks);
 
 } // namespace hilight::painter

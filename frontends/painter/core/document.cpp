@@ -8,25 +8,8 @@
 
 namespace hilight::painter {
 
-namespace {
-
-bool same_light(const Light& a, const Light& b) {
-  return a.type == b.type && a.position == b.position && a.intensity == b.intensity && a.direction == b.direction &&
-         a.cutoff_deg == b.cutoff_deg && a.falloff_deg == b.falloff_deg;
-}
-
-bool same_lights(const Lighting& a, const Lighting& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (!same_light(a[i], b[i])) return false;
-  return true;
-}
-
-} // namespace
-
 bool PaintState::operator==(const PaintState& other) const {
-  return psi == other.psi && weight == other.weight && same_lights(lights, other.lights) &&
-         same_lights(spot_hints, other.spot_hints);
+  return psi == other.psi && weight == other.weight && lights == other.lights && spot_hints == other.spot_hints;
 }
 
 Document::Document(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays)
@@ -142,6 +125,10 @@ Target Document::target() const {
 void Document::save_target(const std::filesystem::path& path) const {
   TargetPoints points = painted_points(*m_scene, m_state);
   if (points.positions.empty()) throw InputError(path.string(), "nothing is painted: no target to save");
+  for (size_t v = 0; v < m_state.psi.size(); ++v)
+    if (m_state.weight[v] > 0.f && !is_finite(m_state.psi[v]))
+      throw InputError(path.string(), "not written: vertex " + std::to_string(v) +
+                                          " has a non-finite painted value (a brightness too large for a float)");
   write_target_ply(path, points);
 }
 
@@ -172,7 +159,15 @@ void Document::load_target(const std::filesystem::path& path) {
   });
 }
 
-void Document::save_lights(const std::filesystem::path& path) const { write_lights_json(path, m_state.lights); }
+void Document::save_lights(const std::filesystem::path& path) const {
+  for (size_t i = 0; i < m_state.lights.size(); ++i) {
+    const Light& l = m_state.lights[i];
+    if (!is_finite(l.position) || !is_finite(l.intensity) || !is_finite(l.direction))
+      throw InputError(path.string(), "not written: light " + std::to_string(i) +
+                                          " is not finite (an intensity or position too large for a float)");
+  }
+  write_lights_json(path, m_state.lights);
+}
 
 void Document::load_lights(const std::filesystem::path& path) {
   Lighting lights = read_lights_json(path);

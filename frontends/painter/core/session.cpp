@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -57,8 +58,10 @@ const std::map<std::string, Spec>& specs() {
       {"brush",
        {{{"radius", Kind::Positive}, {"colour", Kind::Colour}, {"brightness", Kind::NonNegative}, {"hardness", Kind::Unit}},
         {}, {}, {}, true}},
-      {"stroke", {{{"world", Kind::Points3}, {"screen", Kind::Points2}, {"mode", Kind::String}}, {}, {{"world", "screen"}}, {}, false}},
-      {"erase", {{{"world", Kind::Points3}, {"screen", Kind::Points2}}, {}, {{"world", "screen"}}, {}, false}},
+      {"stroke",
+       {{{"world", Kind::Points3}, {"screen", Kind::Points2}, {"mode", Kind::String}, {"normals", Kind::Points3}},
+        {}, {{"world", "screen"}}, {}, false}},
+      {"erase", {{{"world", Kind::Points3}, {"screen", Kind::Points2}, {"normals", Kind::Points3}}, {}, {{"world", "screen"}}, {}, false}},
       {"shadow", {{{"pairs", Kind::ShadowPairs}}, {"pairs"}, {}, {}, false}},
       {"erase_shadow", {{{"world", Kind::Vec3}, {"screen", Kind::Vec2}, {"pick", Kind::Index}}, {}, {{"world", "screen"}}, {}, false}},
       {"spot_region",
@@ -84,7 +87,12 @@ const std::map<std::string, Spec>& specs() {
   return table;
 }
 
-bool finite_number(const json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
+/// Finite as the float the painter computes with (1e300 is a valid double but inf as float).
+bool finite_number(const json& v) {
+  return v.is_number() && std::isfinite(v.get<double>()) && std::abs(v.get<double>()) <= double(std::numeric_limits<float>::max());
+}
+/// > 0 also as float (1e-300 would be 0).
+bool positive_number(const json& v) { return finite_number(v) && float(v.get<double>()) > 0.f; }
 
 bool numbers(const json& v, size_t n) {
   if (!v.is_array() || v.size() != n) return false;
@@ -103,19 +111,19 @@ bool point_list(const json& v, size_t n) {
 /// "" when `v` is a valid `kind`, else what it should be.
 std::string check_kind(const json& v, Kind kind) {
   switch (kind) {
-  case Kind::Number: return finite_number(v) ? "" : "a number";
-  case Kind::Positive: return finite_number(v) && v.get<double>() > 0 ? "" : "a number > 0";
-  case Kind::NonNegative: return finite_number(v) && v.get<double>() >= 0 ? "" : "a number ≥ 0";
+  case Kind::Number: return finite_number(v) ? "" : "a number (finite as a float)";
+  case Kind::Positive: return positive_number(v) ? "" : "a number > 0 (and below 3.4e38, as a float)";
+  case Kind::NonNegative: return finite_number(v) && v.get<double>() >= 0 ? "" : "a number ≥ 0 (and below 3.4e38, as a float)";
   case Kind::Unit: return finite_number(v) && v.get<double>() >= 0 && v.get<double>() <= 1 ? "" : "a number in [0, 1]";
   case Kind::Count: return v.is_number_integer() && v.get<long long>() >= 1 ? "" : "an integer ≥ 1";
   case Kind::Index: return v.is_number_integer() && v.get<long long>() >= 0 ? "" : "an integer ≥ 0";
-  case Kind::Vec2: return numbers(v, 2) ? "" : "[x, y]";
-  case Kind::Vec3: return numbers(v, 3) ? "" : "[x, y, z]";
+  case Kind::Vec2: return numbers(v, 2) ? "" : "[x, y] (finite as floats)";
+  case Kind::Vec3: return numbers(v, 3) ? "" : "[x, y, z] (finite as floats)";
   case Kind::Colour: {
     bool ok = (finite_number(v) && v.get<double>() >= 0) || numbers(v, 3);
     if (ok && v.is_array())
       for (const auto& x : v) ok = ok && x.get<double>() >= 0;
-    return ok ? "" : "[r, g, b] (≥ 0) or one number ≥ 0";
+    return ok ? "" : "[r, g, b] (≥ 0) or one number ≥ 0 (finite as floats)";
   }
   case Kind::Points2: return point_list(v, 2) ? "" : "a non-empty list of [x, y]";
   case Kind::Points3: return point_list(v, 3) ? "" : "a non-empty list of [x, y, z]";
@@ -198,6 +206,16 @@ void validate_action(const Action& action, const std::string& source, size_t ind
   if (action.type == "stroke" && action.params.contains("mode")) {
     const std::string mode = action.params["mode"].get<std::string>();
     if (mode != "paint" && mode != "erase") fail("stroke: mode must be 'paint' or 'erase', not '" + mode + "'");
+  }
+  if ((action.type == "stroke" || action.type == "erase") && action.params.contains("normals")) {
+    const json& normals = action.params["normals"];
+    if (!action.params.contains("world") || normals.size() != action.params["world"].size())
+      fail(action.type + ": 'normals' needs 'world' and one normal per point");
+    for (const auto& n : normals) {
+      const double l2 = n[0].get<double>() * n[0].get<double>() + n[1].get<double>() * n[1].get<double>() +
+                        n[2].get<double>() * n[2].get<double>();
+      if (!(l2 > 1e-12) || !std::isfinite(l2)) fail(action.type + ": a normal must be a non-zero [x, y, z]");
+    }
   }
   if (action.type == "camera" && action.params.contains("fov") && action.params["fov"].get<double>() >= 180)
     fail("camera: 'fov' must be below 180");

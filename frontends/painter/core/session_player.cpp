@@ -27,6 +27,11 @@ std::optional<Tool> tool_from_string(const std::string& name) {
   return std::nullopt;
 }
 
+Action brush_action(const BrushSettings& b) {
+  return Action{"brush",
+                {{"radius", b.radius}, {"colour", {b.colour.r, b.colour.g, b.colour.b}}, {"brightness", b.brightness}, {"hardness", b.hardness}}};
+}
+
 namespace {
 
 Vec3 vec3(const json& v) { return Vec3(v[0].get<float>(), v[1].get<float>(), v[2].get<float>()); }
@@ -57,11 +62,25 @@ void SessionPlayer::play(const Session& session) {
   if (m_options.wait_for_solves && m_job.busy()) finish_solve("end of session");
 }
 
+void SessionPlayer::check_near_scene(const Vec3& p, const std::string& what) const {
+  // Far-off points overflow the ray tracer's arithmetic (Embree asserts on them).
+  const Bounds& bounds = m_document.scene().bounds;
+  const DVec3 nearest = glm::clamp(DVec3(p), DVec3(bounds.lo), DVec3(bounds.hi));
+  const double distance = glm::length(DVec3(p) - nearest);
+  const double reach = double(kMaxSceneReach) * std::max(double(m_document.scene().diagonal()), 1e-30);
+  if (!is_finite(p) || !(distance <= reach)) {
+    std::ostringstream s;
+    s << what << " " << describe(p) << " is more than " << kMaxSceneReach << " scene diagonals from the scene";
+    throw InputError(s.str());
+  }
+}
+
 SurfacePick SessionPlayer::one_point(const json& value, bool screen, const std::string& where) const {
   if (!screen) {
     const Vec3 p = vec3(value);
+    check_near_scene(p, where + ": point");
     auto pick = pick_near(m_document.rays(), p);
-    if (!pick) throw InputError(where + ": " + describe(p) + " is not on any surface");
+    if (!pick) throw InputError(where + ": " + describe(p) + " is not on any surface (within 1% of the scene diagonal)");
     return *pick;
   }
   if (!m_hooks.pick_screen) throw InputError(where + ": screen coordinates need the painter's window (give world points)");
@@ -75,17 +94,42 @@ SurfacePick SessionPlayer::one_point(const json& value, bool screen, const std::
   return *pick;
 }
 
-std::vector<Vec3> SessionPlayer::world_points(const Action& action, const std::string& where) const {
-  std::vector<Vec3> points;
-  if (action.params.contains("world")) {
-    for (const auto& p : action.params["world"]) points.push_back(vec3(p));
-    return points;
+std::vector<SurfacePick> SessionPlayer::surface_picks(const json& params, const std::string& where) const {
+  std::vector<SurfacePick> picks;
+  if (params.contains("world")) {
+    // Every world point snaps to the nearest surface (within 1% of the
+    // diagonal) or is an error; recorded strokes carry their normals.
+    const json& world = params["world"];
+    for (size_t i = 0; i < world.size(); ++i) {
+      const Vec3 p = vec3(world[i]);
+      check_near_scene(p, where + ": point " + std::to_string(i));
+      if (params.contains("normals")) {
+        const Vec3 n = glm::normalize(vec3(params["normals"][i]));
+        if (!pick_near(m_document.rays(), p))
+          throw InputError(where + ": point " + std::to_string(i) + " " + describe(p) +
+                           " is not on any surface (within 1% of the scene diagonal)");
+        picks.push_back({p, n});
+        continue;
+      }
+      auto pick = pick_near(m_document.rays(), p);
+      if (!pick)
+        throw InputError(where + ": point " + std::to_string(i) + " " + describe(p) +
+                         " is not on any surface (within 1% of the scene diagonal)");
+      picks.push_back(*pick);
+    }
+    return picks;
   }
   // Screen points: whatever the cursor hit; misses are skipped, as with the mouse.
   if (!m_hooks.pick_screen) throw InputError(where + ": screen coordinates need the painter's window (give world points)");
-  for (const auto& p : action.params["screen"])
-    if (auto pick = m_hooks.pick_screen({p[0].get<float>(), p[1].get<float>()})) points.push_back(pick->position);
-  if (points.empty()) throw InputError(where + ": no screen point hits the scene");
+  for (const auto& p : params["screen"])
+    if (auto pick = m_hooks.pick_screen({p[0].get<float>(), p[1].get<float>()})) picks.push_back(*pick);
+  if (picks.empty()) throw InputError(where + ": no screen point hits the scene");
+  return picks;
+}
+
+std::vector<Vec3> SessionPlayer::world_points(const Action& action, const std::string& where) const {
+  std::vector<Vec3> points;
+  for (const SurfacePick& p : surface_picks(action.params, where)) points.push_back(p.position);
   return points;
 }
 
@@ -96,6 +140,8 @@ void SessionPlayer::apply(const Action& action, size_t index) {
   const std::string& type = action.type;
   try {
     if (type == "camera") {
+      if (p.contains("eye")) check_near_scene(vec3(p["eye"]), "camera: eye");
+      if (p.contains("target")) check_near_scene(vec3(p["target"]), "camera: target");
       if (m_hooks.camera) m_hooks.camera(action);
     } else if (type == "tool") {
       m_tool = *tool_from_string(p["tool"].get<std::string>());
@@ -108,7 +154,7 @@ void SessionPlayer::apply(const Action& action, size_t index) {
       if (m_hooks.tool_changed) m_hooks.tool_changed(action);
     } else if (type == "stroke" || type == "erase") {
       const bool erase = type == "erase" || (p.contains("mode") ? p["mode"] == "erase" : m_tool == Tool::Eraser);
-      paint_stroke(m_document, m_brush, erase ? BrushMode::Erase : BrushMode::Paint, world_points(action, where));
+      paint_stroke(m_document, m_brush, erase ? BrushMode::Erase : BrushMode::Paint, surface_picks(p, where));
     } else if (type == "shadow") {
       std::vector<ShadowRequest> requests;
       for (const auto& pair : p["pairs"]) {
@@ -151,6 +197,7 @@ void SessionPlayer::apply(const Action& action, size_t index) {
       if (p.contains("eye")) {
         pose.eye = vec3(p["eye"]);
         pose.direction = vec3(p["direction"]);
+        check_near_scene(pose.eye, "spot_region: eye");
       } else if (m_hooks.camera_pose) {
         pose = m_hooks.camera_pose();
       } else {
@@ -184,6 +231,7 @@ void SessionPlayer::apply(const Action& action, size_t index) {
       Target target = m_document.target();
       const PaintState& s = m_document.state();
       if (type != "solve" && s.lights.empty()) throw InputError(where + ": there are no lights yet (solve first)");
+      m_job_revision = m_document.revision();
       if (type == "solve") m_job.start_solve(std::move(target), s.spot_hints);
       else if (type == "fine_tune") m_job.start_fine_tune(std::move(target), s.lights);
       else m_job.start_add_lights(std::move(target), s.lights);
@@ -214,8 +262,17 @@ void SessionPlayer::apply(const Action& action, size_t index) {
   }
 }
 
-void SessionPlayer::commit(const JobResult& result) {
+void SessionPlayer::commit(JobResult& result) {
   if (result.outcome != JobOutcome::Done) return;
+  if (m_document.revision() != m_job_revision) {
+    // The document changed while the job ran (a stroke, an undo, new lights):
+    // its lights answer a question no longer asked. Dropped, so the session
+    // (whose recording drops the job too) replays the same.
+    result.outcome = JobOutcome::Superseded;
+    if (result.kind != JobKind::FineTune) m_job.discard_cuts();  // a later `cut` must not use them
+    log(std::string(to_string(result.kind)) + " result dropped: the document changed while it ran");
+    return;
+  }
   std::ostringstream label;
   label << to_string(result.kind) << ": " << result.lights.size() << " lights";
   m_document.set_lights(result.lights, label.str());
@@ -227,9 +284,9 @@ void SessionPlayer::commit(const JobResult& result) {
 void SessionPlayer::finish_solve(const std::string& where) {
   std::optional<JobResult> result = m_job.wait();
   if (!result) return;
+  commit(*result);
   if (result->outcome == JobOutcome::Failed) throw InputError(where + ": " + result->error);
   if (result->outcome == JobOutcome::Cancelled) throw InputError(where + ": the solve was cancelled");
-  commit(*result);
 }
 
 std::optional<JobResult> SessionPlayer::poll() {

@@ -31,6 +31,14 @@ const char* to_string(Tool tool);
 /// InputError-free lookup: nullopt for an unknown name.
 std::optional<Tool> tool_from_string(const std::string& name);
 
+/// The `brush` action that sets every field of `brush`.
+Action brush_action(const BrushSettings& brush);
+
+/// How far from the scene (in scene diagonals) a script's points, eyes and
+/// camera may be: farther ones are input errors (they would overflow the
+/// ray tracer's float arithmetic).
+constexpr float kMaxSceneReach = 1e6f;
+
 /// Where the camera is (spot_region without an explicit eye/direction).
 struct CameraPose {
   Vec3 eye{0.f, 0.f, 1.f};
@@ -77,8 +85,11 @@ public:
   /// Commits a finished background solve to the document (one undo step
   /// labelled with the job kind); returns it, or nullopt if none is ready.
   /// Failures come back as a JobResult with outcome Failed/Cancelled and
-  /// leave the document as it was. While the document has an open edit (a
-  /// stroke in progress) the result waits for the next poll.
+  /// leave the document as it was; so do results of jobs during which the
+  /// document changed (outcome Superseded: a stroke, an undo, new lights —
+  /// a replay, which waits for each job, could not reproduce them). While
+  /// the document has an open edit (a stroke in progress) the result waits
+  /// for the next poll.
   std::optional<JobResult> poll();
 
   Tool tool() const { return m_tool; }
@@ -92,11 +103,18 @@ public:
   const std::vector<ShadowPair>& last_shadow_pairs() const { return m_last_pairs; }
 
 private:
+  /// The action's "world" points snapped to surfaces (InputError for one off
+  /// every surface) or its "screen" points picked (InputError if none hits).
+  std::vector<SurfacePick> surface_picks(const nlohmann::json& params, const std::string& where) const;
   std::vector<Vec3> world_points(const Action& action, const std::string& where) const;
+  /// InputError unless `p` is within kMaxSceneReach diagonals of the scene's bounds.
+  void check_near_scene(const Vec3& p, const std::string& what) const;
   SurfacePick one_point(const nlohmann::json& value, bool screen, const std::string& where) const;
   /// Waits for the running job and commits its result (InputError if it failed).
   void finish_solve(const std::string& where);
-  void commit(const JobResult& result);
+  /// Done results go into the document, unless it changed since the job
+  /// started: then the outcome becomes Superseded and nothing changes.
+  void commit(JobResult& result);
   void log(const std::string& line) const;
 
   Document& m_document;
@@ -108,6 +126,7 @@ private:
   BrushSettings m_brush;
   std::optional<ShadowEstimate> m_last_estimate;
   std::vector<ShadowPair> m_last_pairs;
+  uint64_t m_job_revision = 0;  ///< the document's revision when the running job started
 };
 
 } // namespace hilight::painter

@@ -2,6 +2,7 @@
 
 #include "core/cancellable_renderer.hpp"
 #include "hilight/error.hpp"
+#include "hilight/pipeline/solve_renderers.hpp"
 
 #include <stdexcept>
 
@@ -18,19 +19,10 @@ const char* to_string(JobKind kind) {
 
 namespace {
 
-bool has_setting(const std::vector<std::string>& settings, const std::string& key) {
-  for (const auto& kv : settings)
-    if (kv.rfind(key + "=", 0) == 0) return true;
-  return false;
-}
-
-bool same_hints(const Lighting& a, const Lighting& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (a[i].position != b[i].position || a[i].direction != b[i].direction || a[i].cutoff_deg != b[i].cutoff_deg ||
-        a[i].falloff_deg != b[i].falloff_deg)
-      return false;
-  return true;
+/// Hints as the Solver sees them: only their shape (intensity is the solve's to find).
+Lighting hint_shapes(Lighting hints) {
+  for (auto& h : hints) h.intensity = Rgb(1.f);
+  return hints;
 }
 
 } // namespace
@@ -38,15 +30,11 @@ bool same_hints(const Lighting& a, const Lighting& b) {
 SolveJob::SolveJob(const Registry& registry, std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays,
                    SolveJobOptions options)
     : m_registry(registry), m_scene(std::move(scene)), m_rays(std::move(rays)), m_options(std::move(options)) {
-  // As `hilight solve` does: the renderer's sample streams follow the solve's
-  // seed, the reference is the renderer as configured, and for Embree the
-  // solve's own φ uses the fast bounce (direct light interpolated at vertices).
-  std::vector<std::string> settings = m_options.renderer_settings;
-  if (!has_setting(settings, "seed")) settings.push_back("seed=" + std::to_string(m_options.solve.seed & 0x7FFFFFFFFFFFFFFFull));
-  m_reference_settings = settings;
+  // As `hilight solve` does (hilight/pipeline/solve_renderers.hpp).
+  m_reference_settings = reference_renderer_settings(m_options.renderer_settings, m_options.solve.seed);
   m_reference = make_renderer();
-  if (m_options.renderer == "embree" && !has_setting(settings, "bounce_direct")) settings.push_back("bounce_direct=vertex");
-  m_fast = registry.create_renderer(m_options.renderer, Properties::from_assignments(settings));
+  m_fast = registry.create_renderer(m_options.renderer,
+                                    Properties::from_assignments(fast_renderer_settings(m_options.renderer, m_reference_settings)));
   m_fast->set_scene(m_scene);
   m_fast_guarded = std::make_unique<CancellableRenderer>(*m_fast, m_cancel);
   m_reference_guarded = std::make_unique<CancellableRenderer>(*m_reference, m_cancel);
@@ -61,17 +49,16 @@ SolveJob::~SolveJob() {
 }
 
 Solver& SolveJob::solver_for(const Lighting& spot_hints) {
-  if (!m_solver || !same_hints(spot_hints, m_solver_hints)) {
+  if (!m_solver || hint_shapes(spot_hints) != m_solver_hints) {
     SolveSettings settings = m_options.solve;
-    settings.spot_hints = spot_hints;
-    for (auto& h : settings.spot_hints) h.intensity = Rgb(1.f);
+    settings.spot_hints = hint_shapes(spot_hints);
     m_solver = std::make_unique<Solver>(m_scene, m_rays, *m_fast_guarded, *m_reference_guarded, *m_sampler, *m_optimizer, settings,
                                         [this](const std::string& stage) {
                                           if (m_cancel) throw SolveCancelled();
                                           std::lock_guard<std::mutex> lock(m_mutex);
                                           m_progress = stage;
                                         });
-    m_solver_hints = spot_hints;
+    m_solver_hints = settings.spot_hints;
     m_cuts_valid = false;
   }
   return *m_solver;
@@ -115,16 +102,26 @@ void SolveJob::start(JobKind kind, Target target, Lighting lights, Lighting spot
       result.outcome = JobOutcome::Failed;
       result.error = e.what();
     }
-    std::lock_guard<std::mutex> lock(m_mutex);
-    if (result.outcome == JobOutcome::Done && kind != JobKind::FineTune) {
-      m_cuts_valid = true;
-      m_cut_base = kind == JobKind::AddLights ? lights : Lighting{};
+    std::function<void()> on_finished;
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      if (result.outcome == JobOutcome::Done && kind != JobKind::FineTune) {
+        m_cuts_valid = true;
+        m_cut_base = kind == JobKind::AddLights ? lights : Lighting{};
+      }
+      m_progress.clear();
+      m_result = std::move(result);
+      m_busy = false;
+      on_finished = m_on_finished;
+      m_done.notify_all();
     }
-    m_progress.clear();
-    m_result = std::move(result);
-    m_busy = false;
-    m_done.notify_all();
+    if (on_finished) on_finished();
   });
+}
+
+void SolveJob::set_on_finished(std::function<void()> callback) {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  m_on_finished = std::move(callback);
 }
 
 std::string SolveJob::progress() const {
@@ -160,6 +157,16 @@ Lighting SolveJob::cut_lights(size_t k) const {
 size_t SolveJob::cut_count() const {
   if (m_busy || !m_cuts_valid || !m_solver) return 0;
   return m_solver->cut_count();
+}
+
+size_t SolveJob::cut_base_count() const {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  return m_cut_base.size();
+}
+
+void SolveJob::discard_cuts() {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  m_cuts_valid = false;
 }
 
 std::unique_ptr<Renderer> SolveJob::make_renderer() const {

@@ -18,6 +18,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -46,7 +47,8 @@ struct SolveJobOptions {
 enum class JobKind { Solve, FineTune, AddLights };
 const char* to_string(JobKind kind);
 
-enum class JobOutcome { Done, Failed, Cancelled };
+/// Superseded: done, but the document changed while it ran (set by SessionPlayer).
+enum class JobOutcome { Done, Failed, Cancelled, Superseded };
 
 struct JobResult {
   JobKind kind = JobKind::Solve;
@@ -80,6 +82,9 @@ public:
   std::string progress() const;
   /// Asks the running job to stop at its next stage (no-op when idle).
   void cancel() { m_cancel = true; }
+  /// Called on the worker thread when a job has finished and its result is
+  /// ready (the window wakes its event loop with it). Set while idle.
+  void set_on_finished(std::function<void()> callback);
   /// The finished job's result, once (nullopt while running or when taken).
   std::optional<JobResult> take_result();
   /// Blocks until the running job (if any) finishes, then takes its result;
@@ -92,6 +97,10 @@ public:
   Lighting cut_lights(size_t k) const;
   /// Number of cuts available to cut_lights (0 if none).
   size_t cut_count() const;
+  /// How many lights cut_lights puts before the cut (the lights an add kept; 0 after a solve).
+  size_t cut_base_count() const;
+  /// Forgets the last solve's cuts (its result was not used).
+  void discard_cuts();
 
   /// The reference renderer (the user's settings), for the painter's own
   /// evaluations (region adjustment, shadow erase, display). Only while not
@@ -126,6 +135,7 @@ private:
   std::condition_variable m_done;
   std::string m_progress;
   std::optional<JobResult> m_result;
+  std::function<void()> m_on_finished;
 };
 
 } // namespace hilight::painter

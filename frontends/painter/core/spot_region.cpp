@@ -41,6 +41,10 @@ Light spot_for_region_in_scene(const RayScene& rays, const Vec3& eye, const Vec3
   if (region.empty()) throw InputError(what, "the region is empty");
   if (!(glm::length(direction) > 0.f) || !is_finite(direction)) throw InputError(what, "the view direction is zero");
   const Scene& scene = rays.scene();
+  // Rays from far-off origins overflow the ray tracer's float arithmetic.
+  if (!is_finite(eye) ||
+      !(glm::length(DVec3(eye) - DVec3(scene.bounds.center())) <= 1e6 * std::max(double(scene.diagonal()), 1e-30)))
+    throw InputError(what, "the eye is more than 1e6 scene diagonals from the scene");
   const Bounds bounds = scene.light_bounds();
   const Vec3 axis = glm::normalize(direction);
   const Vec3 target = centroid(region);
