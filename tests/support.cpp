@@ -49,10 +49,26 @@ std::string read_file(const fs::path& p) {
 }
 
 RunResult run_hilight(const std::vector<std::string>& args, unsigned long long address_space) {
+  return run_hilight(args, Environment{}, address_space);
+}
+
+RunResult run_hilight(const std::vector<std::string>& args, const Environment& env, unsigned long long address_space) {
   // Output goes through files, not pipes, so large outputs cannot deadlock.
   static int counter = 0;
   fs::path dir = output_dir("run_hilight_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
   fs::path out_path = dir / "stdout.txt", err_path = dir / "stderr.txt";
+  // The child's environment, built before fork (no allocation in the child).
+  std::vector<std::string> environment;
+  for (char** e = environ; *e; ++e) {
+    const std::string entry = *e;
+    bool replaced = false;
+    for (const auto& [name, value] : env) replaced |= entry.rfind(name + "=", 0) == 0;
+    if (!replaced) environment.push_back(entry);
+  }
+  for (const auto& [name, value] : env) environment.push_back(name + "=" + value);
+  std::vector<char*> envp;
+  for (auto& entry : environment) envp.push_back(entry.data());
+  envp.push_back(nullptr);
   pid_t pid = ::fork();
   if (pid == 0) {
     if (address_space) {
@@ -71,7 +87,7 @@ RunResult run_hilight(const std::vector<std::string>& args, unsigned long long a
     std::vector<std::string> copy = args;
     for (auto& a : copy) argv.push_back(a.data());
     argv.push_back(nullptr);
-    ::execv(bin.c_str(), argv.data());
+    ::execve(bin.c_str(), argv.data(), envp.data());
     ::_exit(127);
   }
   int status = 0;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace test {
@@ -33,6 +34,10 @@ struct RunResult {
 /// Runs `hilight <args>` (no shell), capturing stdout and stderr.
 /// `address_space` > 0 caps the child's address space (RLIMIT_AS, bytes).
 RunResult run_hilight(const std::vector<std::string>& args, unsigned long long address_space = 0);
+/// Environment variables set in the child only (name, value).
+using Environment = std::vector<std::pair<std::string, std::string>>;
+/// As above, with `env` set in the child (the test's own environment is untouched).
+RunResult run_hilight(const std::vector<std::string>& args, const Environment& env, unsigned long long address_space = 0);
 
 /// A file's bytes ("" if it cannot be read).
 std::string read_file(const std::filesystem::path& path);

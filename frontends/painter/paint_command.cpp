@@ -3,12 +3,14 @@
 #include "paint_command.hpp"
 
 #include "hilight/error.hpp"
+#include "hilight/io/atomic_file.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/light_cache.hpp"
 #include "hilight/threads.hpp"
 #include "painter_app.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <cmath>
 #include <iostream>
 
@@ -27,13 +29,22 @@ void parse_size(const std::string& text, int& width, int& height) {
   height = h;
 }
 
+/// An image path's extension must be one write_image knows.
+void check_image_path(const std::string& option, const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".png" && ext != ".exr")
+    throw InputError(path.string(), option + ": unknown image type (use .png or .exr)");
+  check_writable(path);
+}
+
 } // namespace
 
 int run_paint(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Paint the illumination you want onto a scene; hilight finds the lights", "paint");
   PaintOptions o;
   std::string scene, target, lights, script, screenshot, window_screenshot, record, timings, size = "1280x800", cache_dir;
-  int threads = 0, bounces = 1;
+  int threads = 0, bounces = 1, bounce_samples = 0;
   bool no_auto = false, no_cache = false;
   app.add_option("scene", scene, "scene file (any format assimp reads)")->required();
   app.add_option("--max-edge", o.max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::Range(0.f, 1e30f));
@@ -41,6 +52,8 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--lights", lights, "lights JSON to start from");
   app.add_option("--renderer", o.job.renderer, "renderer plugin for the view and the solve")->capture_default_str();
   app.add_option("--bounces", bounces, "0 = direct light only, 1 = plus the first diffuse bounce")->check(CLI::IsMember({0, 1}))->capture_default_str();
+  app.add_option("--bounce-samples", bounce_samples, "gather rays per point for the bounce (renderer default if 0)")
+      ->check(CLI::Range(0, 4096));
   app.add_option("--set", o.job.renderer_settings, "renderer setting key=value (repeatable)");
   app.add_option("--optimizer", o.job.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
   app.add_option("--opt", o.job.optimizer_settings, "optimizer setting key=value (repeatable)");
@@ -91,14 +104,23 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   o.timings = timings;
   o.auto_fine_tune = !no_auto;
   o.job.renderer_settings.push_back("bounces=" + std::to_string(bounces));
+  if (bounce_samples > 0) o.job.renderer_settings.push_back("bounce_samples=" + std::to_string(bounce_samples));
   o.job.solve.use_cache = !no_cache;
   o.job.solve.cache_dir = no_cache ? std::filesystem::path() : cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir);
   if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty() && window_screenshot.empty())
     throw InputError("paint: --exit without --script, --screenshot or --bench would do nothing");
   set_thread_limit(threads);
 
+  // Output paths before anything runs: a script's save_* must not have
+  // written files when the run then fails on a bad --screenshot.
+  if (!o.screenshot.empty()) check_image_path("--screenshot", o.screenshot);
+  if (!o.window_screenshot.empty()) check_image_path("--window-screenshot", o.window_screenshot);
+  if (!o.timings.empty() && o.timings != "-") check_writable(o.timings);
+  if (!o.record.empty()) check_writable(o.record);
+
   // Input first: a bad renderer, scene or script fails before any window opens.
-  registry.renderer_unavailable_reason(o.job.renderer);
+  if (const std::string why = registry.renderer_unavailable_reason(o.job.renderer); !why.empty())
+    throw InputError("paint: renderer '" + o.job.renderer + "' is unavailable: " + why);
   std::optional<Session> session;
   if (!o.script.empty()) session = read_session(o.script);
   auto loaded = std::make_shared<const Scene>(load_scene(o.scene, {o.max_edge}));

@@ -2,6 +2,7 @@
 
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
+#include "hilight/pipeline/solve_renderers.hpp"
 #include "ui/gl.hpp"
 #include "ui/light_markers.hpp"
 #include "ui/screenshot.hpp"
@@ -11,21 +12,11 @@
 #include <fstream>
 #include <imgui.h>
 #include <iostream>
+#include <stdexcept>
 
 namespace hilight::painter {
 
 namespace {
-
-bool same_lights(const Lighting& a, const Lighting& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i) {
-    const Light &x = a[i], &y = b[i];
-    if (x.type != y.type || x.position != y.position || x.intensity != y.intensity || x.direction != y.direction ||
-        x.cutoff_deg != y.cutoff_deg || x.falloff_deg != y.falloff_deg)
-      return false;
-  }
-  return true;
-}
 
 /// The display renderers, quick to exact. The exact one is the solve job's
 /// reference (same renderer, settings and seed), so the result view shows
@@ -35,18 +26,17 @@ bool same_lights(const Lighting& a, const Lighting& b) {
 std::vector<std::unique_ptr<Renderer>> display_renderers(const Registry& registry, const SolveJob& job,
                                                          const std::shared_ptr<const Scene>& scene) {
   const SolveJobOptions& options = job.options();
-  bool has_seed = false, direct_only = false, user_bounce = false;
+  bool direct_only = false, user_bounce = false;
   for (const auto& kv : options.renderer_settings) {
-    has_seed |= kv.rfind("seed=", 0) == 0;
     direct_only |= kv == "bounces=0";
     user_bounce |= kv.rfind("bounce_samples=", 0) == 0 || kv.rfind("bounce_direct=", 0) == 0;
   }
   std::vector<std::unique_ptr<Renderer>> stages;
   if (options.renderer == "embree" && !direct_only && !user_bounce) {
-    Properties quick = Properties::from_assignments(options.renderer_settings);
-    if (!has_seed) quick.set("seed", std::to_string(options.solve.seed & 0x7FFFFFFFFFFFFFFFull));
+    // The solve's fast twin (seed, interpolated direct light), with fewer gather rays.
+    Properties quick = Properties::from_assignments(
+        fast_renderer_settings(options.renderer, reference_renderer_settings(options.renderer_settings, options.solve.seed)));
     quick.set("bounce_samples", "16");
-    quick.set("bounce_direct", "vertex");
     stages.push_back(registry.create_renderer(options.renderer, quick));
     stages.back()->set_scene(scene);
   }
@@ -100,16 +90,7 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_camera = ui::OrbitCamera::framing(m_scene->bounds, aspect());
   // Background results wake the event loop at once (glfwPostEmptyEvent is thread-safe).
   m_illumination_worker = std::make_unique<ui::IlluminationWorker>(std::move(renderers), *m_scene, [] { glfwPostEmptyEvent(); });
-  m_job_waker = std::jthread([this](std::stop_token stop) {
-    bool was_busy = false;
-    while (!stop.stop_requested()) {
-      const bool busy = m_job->busy();
-      if (was_busy && !busy) glfwPostEmptyEvent();
-      was_busy = busy;
-      std::this_thread::sleep_for(std::chrono::milliseconds(busy ? 2 : 10));
-    }
-  });
-
+  m_job->set_on_finished([] { glfwPostEmptyEvent(); });  // a finished solve wakes the event loop at once
   m_view = m_options.view == "target" ? ui::ViewMode::Target : m_options.view == "difference" ? ui::ViewMode::Difference : ui::ViewMode::Result;
   m_headless = m_options.exit_after_script;
   m_player = std::make_unique<SessionPlayer>(*m_document, *m_job, make_hooks(),
@@ -124,7 +105,6 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
 PainterApp::~PainterApp() {
   // Stop background work and free GL objects before the context goes.
   m_view_buffer.reset();
-  m_job_waker = {};  // requests stop and joins
   m_illumination_worker.reset();
   m_job.reset();
 }
@@ -169,7 +149,15 @@ int PainterApp::run() {
   m_player->set_tool(tool);
   m_player->set_brush(brush);
   if (!m_record_path.empty()) status("recording this session to " + m_record_path.string());
-  while (!m_window->should_close()) frame(true);
+  while (!m_window->should_close()) {
+    try {
+      frame(true);
+    } catch (const InputError& e) {
+      status(e.what());  // a bad value typed into a panel is a status line, never a lost session
+    } catch (const std::logic_error& e) {
+      status(std::string("internal error: ") + e.what());
+    }
+  }
   m_job->cancel();
   write_timings();  // the interactive frames too: what a designer's hands produced
   return 0;
@@ -247,8 +235,8 @@ void PainterApp::poll_workers() {
   m_illumination_pending = m_illumination_worker->busy();
   // The stroke's fine-tune is over and the view shows its lights.
   if (m_stroke_released && !m_fine_tune_after_stroke && !m_job->busy() &&
-      m_requested_lights && same_lights(*m_requested_lights, m_document->state().lights) &&
-      same_lights(m_radiance_lights, m_document->state().lights)) {
+      m_requested_lights && *m_requested_lights == m_document->state().lights &&
+      m_radiance_lights == m_document->state().lights) {
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - *m_stroke_released).count();
     if (!m_stroke_shown) m_timer.add_latency("stroke_to_display", ms);
     m_stroke_shown = true;
@@ -263,7 +251,7 @@ void PainterApp::poll_workers() {
 
 void PainterApp::request_illumination() {
   const Lighting& lights = m_document->state().lights;
-  if (m_requested_lights && same_lights(lights, *m_requested_lights)) return;
+  if (m_requested_lights && lights == *m_requested_lights) return;
   m_requested_lights = lights;
   m_illumination_worker->request(lights, m_document->revision());
   m_illumination_pending = true;

@@ -164,7 +164,6 @@ private:
   bool m_fine_tune_after_stroke = false;
   bool m_fine_tune_queued = false;  ///< a stroke ended while a job ran
   bool m_stroke_shown = false;    ///< its lights are on screen (a quick stage so far)
-  std::jthread m_job_waker;       ///< wakes the event loop when a solve ends (joins on destruction)
 
   std::string m_target_path, m_lights_path, m_screenshot_path;  ///< the Files panel's fields
 

@@ -4,6 +4,7 @@
 #include "painter_app.hpp"
 #include "ui/screen_pick.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <imgui.h>
 
@@ -104,6 +105,8 @@ void PainterApp::handle_keys() {
   if (pressed(GLFW_KEY_LEFT_BRACKET) || pressed(GLFW_KEY_RIGHT_BRACKET)) {
     BrushSettings brush = m_player->brush();
     brush.radius *= pressed(GLFW_KEY_LEFT_BRACKET) ? 0.8f : 1.25f;
+    // Within the radius slider's range, as a typed-in value would be.
+    brush.radius = std::clamp(brush.radius, 0.002f * m_scene->diagonal(), 0.25f * m_scene->diagonal());
     perform(Action{"brush", {{"radius", brush.radius}}});
   }
   // Arrow keys orbit, +/- zoom: the camera without a mouse.
@@ -198,10 +201,13 @@ void PainterApp::lights_from_shadows() {
 void PainterApp::finish_stroke() {
   const BrushMode mode = m_player->tool() == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint;
   std::vector<Vec3> points = m_stroke->points();
+  std::vector<Vec3> normals = m_stroke->normals();
   m_stroke->finish();
   m_stroke.reset();
   if (points.empty()) return;
-  record(Action{"stroke", {{"world", points_json(points)}, {"mode", mode == BrushMode::Erase ? "erase" : "paint"}}});
+  // With the normals: a replay paints the same faces (pick_near may choose the other one at a crease).
+  record(Action{"stroke", {{"world", points_json(points)}, {"normals", points_json(normals)},
+                           {"mode", mode == BrushMode::Erase ? "erase" : "paint"}}});
   // §4.2 fine-tune: the lights follow the edit at once when there are any.
   if (m_options.auto_fine_tune && !m_document->state().lights.empty()) {
     if (m_job->busy()) {

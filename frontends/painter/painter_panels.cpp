@@ -2,8 +2,10 @@
 // Buttons call perform() with the same actions a session script holds.
 #include "painter_app.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <imgui.h>
 #include <imgui_stdlib.h>
 #define GLFW_INCLUDE_NONE
@@ -12,6 +14,15 @@
 namespace hilight::painter {
 
 namespace {
+
+/// Files-panel paths are recorded absolute: a replay from another folder
+/// reads and writes the same files.
+std::string absolute_path(const std::string& path) {
+  if (path.empty()) return path;
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+  return ec ? path : absolute.lexically_normal().string();
+}
 
 void tip(const char* text) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
@@ -82,23 +93,27 @@ void PainterApp::panel_tools() {
   BrushSettings brush = m_player->brush();
   bool changed = false;
   const float diagonal = m_scene->diagonal();
-  changed |= ImGui::SliderFloat("radius", &brush.radius, 0.002f * diagonal, 0.25f * diagonal, "%.3f", ImGuiSliderFlags_Logarithmic);
+  // AlwaysClamp: a value typed with Ctrl+click stays in the slider's range (a
+  // zero radius would be an invalid brush action).
+  changed |= ImGui::SliderFloat("radius", &brush.radius, 0.002f * diagonal, 0.25f * diagonal, "%.3f",
+                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   tip("Brush radius in scene units ([ and ] change it)");
   changed |= ImGui::ColorEdit3("colour", &brush.colour.r, ImGuiColorEditFlags_Float);
   tip("Colour of the light you paint (linear RGB)");
-  changed |= ImGui::SliderFloat("brightness", &brush.brightness, 0.f, 20.f, "%.2f", ImGuiSliderFlags_Logarithmic);
+  changed |= ImGui::SliderFloat("brightness", &brush.brightness, 0.f, 20.f, "%.2f",
+                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   tip("Radiance painted = colour x brightness");
-  changed |= ImGui::SliderFloat("hardness", &brush.hardness, 0.f, 1.f);
+  changed |= ImGui::SliderFloat("hardness", &brush.hardness, 0.f, 1.f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
   tip("0: soft edge from the centre, 1: a hard disc");
+  brush = clamped_brush(brush, diagonal);
   if (changed) {
     // Applied live; recorded as one brush action when the slider is let go.
     m_player->set_brush(brush);
   }
   if (!ImGui::IsAnyItemActive() && !(brush == m_recorded_brush)) {
-    record(Action{"brush",
-                  {{"radius", brush.radius}, {"colour", {brush.colour.r, brush.colour.g, brush.colour.b}}, {"brightness", brush.brightness},
-                   {"hardness", brush.hardness}}});
-    m_recorded_brush = brush;
+    // Through perform(), as every other action: an invalid value is a status line.
+    if (!perform(brush_action(brush))) m_player->set_brush(m_recorded_brush);
+    m_recorded_brush = m_player->brush();
   }
   if (m_player->tool() == Tool::Shadow) {
     ImGui::Text("%zu shadow request(s)", m_shadow_pairs.size());
@@ -175,10 +190,15 @@ void PainterApp::panel_solve() {
   }
   const size_t cuts = busy ? 0 : m_job->cut_count();
   if (cuts > 0) {
-    if (m_cut_k <= 0) m_cut_k = int(std::min<size_t>(cuts, std::max<size_t>(1, m_document->state().lights.size())));
-    ImGui::SliderInt("light count", &m_cut_k, 1, int(cuts));
-    tip("Move along the light hierarchy's cuts without a new solve");
-    if (ImGui::IsItemDeactivatedAfterEdit()) perform(Action{"cut", {{"k", m_cut_k}}});
+    // The slider shows the total light count: after an add, the kept lights
+    // plus the cut's k (the `cut` action's k counts the cut only).
+    const int base = int(m_job->cut_base_count());
+    const int lights = int(m_document->state().lights.size());
+    if (m_cut_k <= base || m_cut_k > base + int(cuts)) m_cut_k = std::clamp(lights, base + 1, base + int(cuts));
+    ImGui::SliderInt("light count", &m_cut_k, base + 1, base + int(cuts), "%d", ImGuiSliderFlags_AlwaysClamp);
+    tip(base > 0 ? "Lights kept by the add, plus a cut of the light hierarchy (no new solve)"
+                 : "Move along the light hierarchy's cuts without a new solve");
+    if (ImGui::IsItemDeactivatedAfterEdit() && m_cut_k != lights) perform(Action{"cut", {{"k", m_cut_k - base}}});
   }
   ImGui::BeginDisabled(!m_document->can_undo());
   if (ImGui::Button("Undo")) perform(Action{"undo", nlohmann::json::object()});
@@ -212,16 +232,16 @@ void PainterApp::panel_files() {
   if (!ImGui::CollapsingHeader("Files")) return;
   ImGui::InputText("target", &m_target_path);
   tip("Target PLY, the format `hilight solve --target` reads");
-  if (ImGui::Button("Open target")) perform(Action{"load_target", {{"path", m_target_path}}});
+  if (ImGui::Button("Open target")) perform(Action{"load_target", {{"path", absolute_path(m_target_path)}}});
   ImGui::SameLine();
-  if (ImGui::Button("Save target")) perform(Action{"save_target", {{"path", m_target_path}}});
+  if (ImGui::Button("Save target")) perform(Action{"save_target", {{"path", absolute_path(m_target_path)}}});
   ImGui::InputText("lights", &m_lights_path);
   tip("Lights JSON, as `hilight render --lights` and `hilight solve -o` use");
-  if (ImGui::Button("Load lights")) perform(Action{"load_lights", {{"path", m_lights_path}}});
+  if (ImGui::Button("Load lights")) perform(Action{"load_lights", {{"path", absolute_path(m_lights_path)}}});
   ImGui::SameLine();
-  if (ImGui::Button("Save lights")) perform(Action{"save_lights", {{"path", m_lights_path}}});
+  if (ImGui::Button("Save lights")) perform(Action{"save_lights", {{"path", absolute_path(m_lights_path)}}});
   ImGui::InputText("image", &m_screenshot_path);
-  if (ImGui::Button("Screenshot")) perform(Action{"screenshot", {{"path", m_screenshot_path}}});
+  if (ImGui::Button("Screenshot")) perform(Action{"screenshot", {{"path", absolute_path(m_screenshot_path)}}});
   tip("The scene view as PNG (without these panels)");
   if (!m_record_path.empty()) ImGui::TextWrapped("Recording to %s", m_record_path.c_str());
 }

@@ -40,12 +40,12 @@ void PainterApp::apply_camera_action(const Action& action) {
     camera.eye = vec3_of(p["eye"]);
     camera.target = vec3_of(p["target"]);
     if (glm::length(camera.eye - camera.target) <= 0.f) throw InputError("camera: eye and target coincide");
-    m_camera = ui::OrbitCamera::from_camera(camera, m_scene->diagonal());
+    m_camera = ui::OrbitCamera::from_camera(camera, m_scene->diagonal(), m_scene->bounds.center());
   }
   if (p.contains("fov")) {
     Camera camera = m_camera.to_camera();
     camera.fov_deg = p["fov"].get<float>();
-    m_camera = ui::OrbitCamera::from_camera(camera, m_scene->diagonal());
+    m_camera = ui::OrbitCamera::from_camera(camera, m_scene->diagonal(), m_scene->bounds.center());
   }
   if (p.contains("orbit")) m_camera.orbit(p["orbit"][0].get<float>(), p["orbit"][1].get<float>());
   if (p.contains("pan")) m_camera.pan(p["pan"][0].get<float>(), p["pan"][1].get<float>());
@@ -79,7 +79,13 @@ void PainterApp::unrecord_failed_job() {
 }
 
 void PainterApp::record(const Action& action) {
-  m_recorder.record(action);
+  try {
+    m_recorder.record(action);
+  } catch (const std::exception& e) {
+    // An action the recorder refuses is a bug, but never a reason to lose the session.
+    status(std::string("not recorded: ") + e.what());
+    return;
+  }
   if (action.type == "brush") m_recorded_brush = m_player->brush();
   if (m_record_path.empty()) return;
   try {

@@ -115,3 +115,55 @@ TEST_CASE("painter ui: a script action that fails names the action", "[painter-u
       test::run_hilight({"paint", kRoom, "--script", (dir / "miss.json").string(), "--exit", "--no-record", "--size", "320x240"}),
       "nothing under the screen point");
 }
+
+TEST_CASE("painter ui: huge coordinates are input errors, never a crash in the ray tracer", "[painter-ui]") {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) {
+    std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;
+    return;
+  }
+  const fs::path dir = test::output_dir("painter_ui_huge_coordinates");
+  auto run = [&](const std::string& name, const std::string& script) {
+    test::write_text(dir / name, script);
+    return test::run_hilight({"paint", kRoom, "--script", (dir / name).string(), "--exit", "--no-record", "--size", "320x240"});
+  };
+  // inf as a float: refused when the script is read.
+  check_one_line_error(run("pan_inf.json", R"({"actions": [{"type": "camera", "pan": [1e300, 0]}]})"), "pan_inf.json: action 0: camera: 'pan'");
+  check_one_line_error(run("eye.json", R"({"actions": [{"type": "camera", "eye": [1e19, 1e19, 1e19], "target": [0, 0, 0]},
+                                                       {"type": "stroke", "screen": [[160, 120]]}]})"),
+                       "eye.json: action 0 (camera): camera: eye");
+  check_one_line_error(run("spot.json", R"({"actions": [{"type": "spot_region", "world": [[0, 0, 0]], "eye": [1e30, 2, 1], "direction": [-1, 0, 0]}]})"),
+                       "spot.json: action 0 (spot_region): spot_region: eye");
+  // Finite as a float: the camera stays near the scene, whatever the pan.
+  const test::RunResult far_pan = run("pan_far.json", R"({"actions": [{"type": "camera", "pan": [1e30, 0]}, {"type": "camera", "zoom": 1e30},
+                                                                    {"type": "stroke", "screen": [[160, 120]]}]})");
+  INFO(far_pan.err);
+  CHECK((far_pan.exit_code == 0 || far_pan.exit_code == 2));
+  if (far_pan.exit_code == 2) check_one_line_error(far_pan, "pan_far.json: action 2 (stroke)");
+}
+
+TEST_CASE("painter ui: output paths are checked before anything runs", "[painter-ui]") {
+  const fs::path dir = test::output_dir("painter_ui_output_paths");
+  test::write_text(dir / "save.json", R"({"actions": [{"type": "save_lights", "path": ")" + (dir / "lights.json").string() + R"("}]})");
+  const std::string script = (dir / "save.json").string();
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--script", script, "--exit", "--no-record", "--screenshot", (dir / "shot.bmp").string()}),
+                       "--screenshot: unknown image type");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--script", script, "--exit", "--no-record", "--window-screenshot",
+                                          (dir / "no" / "shot.png").string()}),
+                       "shot.png");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--script", script, "--exit", "--no-record", "--timings",
+                                          (dir / "no" / "timings.json").string()}),
+                       "timings.json");
+  // An unwritable --record is an input error up front, not a warning and exit 0.
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--script", script, "--exit", "--record", (dir / "no" / "session.json").string()}),
+                       "session.json");
+  check_one_line_error(test::run_hilight({"paint", kRoom, "--record", dir.string()}), dir.string());
+  // None of them ran the script's save.
+  CHECK_FALSE(fs::exists(dir / "lights.json"));
+}
+
+TEST_CASE("painter ui: no Vulkan device gives one clean error line", "[painter-ui]") {
+  const test::RunResult r = test::run_hilight({"paint", kRoom, "--renderer", "ism-vulkan", "--no-record"}, {{"VK_ICD_FILENAMES", "/nonexistent"},
+                                                                                                            {"VK_DRIVER_FILES", "/nonexistent"}});
+  check_one_line_error(r, "ism-vulkan");
+}

@@ -226,3 +226,72 @@ TEST_CASE("painter ui: mouse and keys paint, fine-tune, orbit, undo and quit", "
   INFO("replay: " << replay.err);
   CHECK(replay.exit_code == 0);
 }
+
+TEST_CASE("painter ui: a brush value typed out of range is clamped, recorded, and never quits", "[painter-ui]") {
+  PrivateXServer server;
+  if (server.display().empty()) {
+    std::cout << "SKIPPED: cannot start Xvfb" << std::endl;
+    return;
+  }
+  FakeInput input(server.display());
+  if (!input.ready()) {
+    std::cout << "SKIPPED: no XTest (libXtst.so.6) to send input events" << std::endl;
+    return;
+  }
+  const fs::path dir = test::output_dir("painter_ui_typed_brush");
+  const fs::path recording = dir / "session.json";
+  const pid_t pid = spawn_hilight({"paint", HILIGHT_SOURCE_DIR "/scenes/room.obj", "--lights", HILIGHT_SOURCE_DIR "/scenes/room-4lights.json",
+                                   "--size", "1280x800", "--record", recording.string(), "--set", "bounce_samples=16",
+                                   "--cache-dir", (dir / "cache").string()},
+                                  server.display(), dir);
+  REQUIRE(pid > 0);
+  auto recorded = [&](const std::string& text) { return test::read_file(recording).find(text) != std::string::npos; };
+  int status = 0;
+  auto exited = [&] { return ::waitpid(pid, &status, WNOHANG) == pid; };
+  if (!wait_for([&] { return recorded("load_lights"); }, 15s)) {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+    FAIL("the painter did not start: " << test::read_file(dir / "stderr.txt"));
+  }
+  std::this_thread::sleep_for(1500ms);
+  // Ctrl+click the radius slider (the Tools panel's first slider at the
+  // window's top left), type 0, Enter: the typed value is below the range.
+  input.move(120, 136);
+  input.key("Control_L", true);
+  input.button(1, true);
+  input.button(1, false);
+  input.key("Control_L", false);
+  input.tap("0");
+  input.tap("Return");
+  const bool brush = wait_for([&] { return recorded("\"brush\""); }, 10s);
+  std::this_thread::sleep_for(500ms);
+  const bool alive = !exited();
+  input.key("Control_L", true);
+  input.tap("q");
+  input.key("Control_L", false);
+  const bool quit = wait_for(exited, 15s);
+  if (!quit) {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+  }
+  const std::string text = test::read_file(recording);
+  INFO("recording: " << text);
+  INFO("stderr: " << test::read_file(dir / "stderr.txt"));
+  CHECK(brush);
+  CHECK(alive);
+  CHECK(quit);
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+  // The recorded radius is the slider's least (0.002 x the diagonal), not 0; the recording replays.
+  CHECK(text.find("\"radius\":0.0,") == std::string::npos);
+  CHECK(text.find("\"radius\":0,") == std::string::npos);
+  const char* outer = std::getenv("DISPLAY");
+  const std::string outer_display = outer ? outer : "";
+  ::setenv("DISPLAY", server.display().c_str(), 1);
+  const test::RunResult replay = test::run_hilight({"paint", HILIGHT_SOURCE_DIR "/scenes/room.obj", "--script", recording.string(),
+                                                    "--size", "1280x800", "--set", "bounce_samples=16", "--cache-dir",
+                                                    (dir / "cache").string(), "--exit", "--no-record"});
+  if (outer) ::setenv("DISPLAY", outer_display.c_str(), 1);
+  else ::unsetenv("DISPLAY");
+  INFO("replay: " << replay.err);
+  CHECK(replay.exit_code == 0);
+}

@@ -18,7 +18,11 @@ public:
   /// The view hilight render uses by default (Camera::framing), as an orbit.
   static OrbitCamera framing(const Bounds& bounds, float aspect);
   /// Any eye/target/fov (session scripts set cameras this way).
-  static OrbitCamera from_camera(const Camera& camera, float scene_diagonal);
+  /// The target stays within kMaxReach scene diagonals of `scene_centre` and
+  /// the distance within [1e-4, kMaxReach] diagonals, whatever the input, so
+  /// the camera (and every ray cast from it) stays finite.
+  static OrbitCamera from_camera(const Camera& camera, float scene_diagonal, const Vec3& scene_centre = Vec3(0.f));
+  static constexpr float kMaxReach = 1e6f;
 
   Camera to_camera() const;
   Vec3 eye() const;
@@ -42,6 +46,8 @@ private:
   Vec3 m_target{0.f};
   float m_yaw_deg = 0.f, m_pitch_deg = 20.f, m_distance = 1.f, m_fov_deg = 50.f;
   float m_scene_diagonal = 1.f;  ///< sets near/far planes and the zoom limits
+  Vec3 m_scene_centre{0.f};
+  void keep_near_scene();
 };
 
 } // namespace hilight::painter::ui

@@ -7,14 +7,26 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
+#include <mutex>
 
 namespace hilight::painter::ui {
 
 namespace {
 
+// GLFW calls the error callback on the thread that failed, and worker
+// threads call glfwPostEmptyEvent: guard the message.
+std::mutex g_glfw_error_mutex;
 std::string g_last_glfw_error;
 
-void remember_glfw_error(int /*code*/, const char* description) { g_last_glfw_error = description ? description : "unknown"; }
+void remember_glfw_error(int /*code*/, const char* description) {
+  std::lock_guard<std::mutex> lock(g_glfw_error_mutex);
+  g_last_glfw_error = description ? description : "unknown";
+}
+
+std::string last_glfw_error() {
+  std::lock_guard<std::mutex> lock(g_glfw_error_mutex);
+  return g_last_glfw_error;
+}
 
 } // namespace
 
@@ -25,7 +37,7 @@ Window::Window(int width, int height, const std::string& title, bool visible) {
   if ((!display || !*display) && (!wayland || !*wayland))
     throw InputError("paint: no display (DISPLAY is not set); run under X, or headless with xvfb-run -a hilight paint ...");
   glfwSetErrorCallback(remember_glfw_error);
-  if (!glfwInit()) throw InputError("paint: cannot open the display '" + std::string(display ? display : "") + "': " + g_last_glfw_error);
+  if (!glfwInit()) throw InputError("paint: cannot open the display '" + std::string(display ? display : "") + "': " + last_glfw_error());
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -34,7 +46,7 @@ Window::Window(int width, int height, const std::string& title, bool visible) {
   glfwWindowHint(GLFW_SAMPLES, 0);
   m_window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!m_window) {
-    std::string why = g_last_glfw_error;
+    std::string why = last_glfw_error();
     glfwTerminate();
     throw InputError("paint: no OpenGL 3.3 core context on this display: " + why);
   }
