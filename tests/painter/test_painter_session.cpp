@@ -309,7 +309,7 @@ TEST_CASE("painter: values too large for a float are never written", "[painter]"
   CHECK_FALSE(std::filesystem::exists(dir / "l.json"));
 }
 
-TEST_CASE("painter: recorded strokes carry their normals; brush values from the UI are clamped", "[painter]") {
+TEST_CASE("painter: recorded strokes carry their normals and brush values from the UI are clamped", "[painter]") {
   // A thin wall: both faces within a dab. The recorded normal picks the face painted.
   auto world = painter_test::floor_with_boxes({{{-1.f, 0.f, -0.01f}, {1.f, 1.f, 0.01f}}}, 0.2f);
   auto painted_with = [&](const nlohmann::json& normal) {

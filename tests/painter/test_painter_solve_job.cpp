@@ -5,6 +5,7 @@
 #include "hilight/surface_points.hpp"
 #include "painter_fixtures.hpp"
 
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <thread>
@@ -47,6 +48,9 @@ TEST_CASE("painter: background solve, fine-tune, add lights and the count contro
   CHECK_FALSE(job.busy());
   CHECK(job.cut_count() == 0);
   CHECK_THROWS_AS(job.cut_lights(1), std::logic_error);
+  // The window wakes its event loop from this callback (no polling thread).
+  std::atomic<int> finished_calls{0};
+  job.set_on_finished([&] { ++finished_calls; });
 
   job.start_solve(c.target);
   // The window evaluates with its own renderer while the job runs.
@@ -57,11 +61,13 @@ TEST_CASE("painter: background solve, fine-tune, add lights and the count contro
   REQUIRE(solved.lights.size() == 2);
   CHECK(solved.report.dbar < 0.05);
   CHECK_FALSE(job.take_result());  // taken once
+  CHECK(finished_calls == 1);
 
   // Count control: cuts without a new solve.
   REQUIRE(job.cut_count() >= 2);
   CHECK(job.cut_lights(1).size() == 1);
   CHECK(job.cut_lights(2).size() == 2);
+  CHECK(job.cut_base_count() == 0);
 
   // Fine-tune from moved lights: same count, back near the truth.
   Lighting moved = solved.lights;
@@ -85,6 +91,11 @@ TEST_CASE("painter: background solve, fine-tune, add lights and the count contro
   Lighting cut = job.cut_lights(1);
   REQUIRE(cut.size() == 2);
   CHECK(cut[0].position == one[0].position);
+  // The light-count slider shows totals base + k: each total is what the cut gives.
+  CHECK(job.cut_base_count() == 1);
+  for (size_t total = job.cut_base_count() + 1; total <= job.cut_base_count() + job.cut_count(); ++total)
+    CHECK(job.cut_lights(total - job.cut_base_count()).size() == total);
+  CHECK(finished_calls == 3);
 }
 
 TEST_CASE("painter: cancel stops a running solve promptly", "[painter]") {

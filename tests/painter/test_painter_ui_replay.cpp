@@ -95,7 +95,7 @@ std::vector<std::string> paint_args(const fs::path& dir, const fs::path& scene) 
 
 } // namespace
 
-TEST_CASE("painter ui: a replayed patch-and-shadow session solves for the light the shadow implies; the CLI agrees",
+TEST_CASE("painter ui: a replayed patch-and-shadow session solves for the light the shadow implies and the CLI agrees",
           "[painter-ui]") {
   REQUIRE_DISPLAY();
   const fs::path dir = test::output_dir("painter_ui_replay");
