@@ -233,6 +233,15 @@ TEST_CASE("painter: stroke, fine-tune and an undo while it runs: interactive and
   SessionPlayer player(*live, live_job, {}, interactive);
   const PaintState before = live->state();
   player.apply({"fine_tune", {}}, 5);
+  // While it runs, saving lights waits (the replay would save the job's result).
+  const auto dir = test::output_dir("painter_superseded");
+  bool refused = false;
+  try {
+    player.apply({"save_lights", {{"path", (dir / "l.json").string()}}}, 6);
+  } catch (const InputError& e) {
+    refused = std::string(e.what()).find("wait for the running solve") != std::string::npos;
+  }
+  CHECK((refused || !live_job.busy()));
   player.apply({"undo", {}}, 6);
   recorder.record({"undo", {}});  // the window unrecords a job whose result is dropped
   while (live_job.busy()) std::this_thread::sleep_for(std::chrono::milliseconds(5));

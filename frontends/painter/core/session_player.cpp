@@ -246,6 +246,10 @@ void SessionPlayer::apply(const Action& action, size_t index) {
     } else if (type == "redo") {
       m_document.redo();
     } else {
+      // The lights are about to change under them (a replay, which waits for
+      // each job, would save the job's result): wait for it.
+      if ((type == "save_lights" || type == "screenshot") && m_job.busy() && !m_options.wait_for_solves)
+        throw InputError(where + ": wait for the running solve to finish");
       const std::filesystem::path path = m_options.base_dir / p["path"].get<std::string>();
       if (type == "save_target") m_document.save_target(path);
       else if (type == "save_lights") m_document.save_lights(path);
