@@ -153,8 +153,10 @@ int PainterApp::run() {
     try {
       frame(true);
     } catch (const InputError& e) {
-      status(e.what());  // a bad value typed into a panel is a status line, never a lost session
+      ImGui::EndFrame();  // close the frame the error left open (a no-op if it had ended)
+      status(e.what());   // a bad value typed into a panel is a status line, never a lost session
     } catch (const std::logic_error& e) {
+      ImGui::EndFrame();
       status(std::string("internal error: ") + e.what());
     }
   }
