@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr uint32_t kFormatVersion = 4;  // 4: grid over light_bounds()
+constexpr uint32_t kFormatVersion = 5;  // 4: grid over light_bounds(); 5: flat axes grow on the side surfaces face
 constexpr char kMagic[8] = {'H', 'L', 'C', 'A', 'C', 'H', 'E', '1'};
 
 } // namespace
