@@ -1,5 +1,6 @@
 #include "support.hpp"
 
+#include <cmath>
 #include <iostream>
 
 #include <array>
@@ -14,6 +15,16 @@
 namespace test {
 
 namespace fs = std::filesystem;
+
+double dbar(const std::vector<hilight::Rgb>& a, const std::vector<hilight::Rgb>& reference) {
+  double num = 0, den = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const hilight::DVec3 d = hilight::DVec3(a[i]) - hilight::DVec3(reference[i]);
+    num += glm::dot(d, d);
+    den += glm::dot(hilight::DVec3(reference[i]), hilight::DVec3(reference[i]));
+  }
+  return std::sqrt(num / den);
+}
 
 bool skip_without_renderer(const std::string& name) {
   std::string why = registry().renderer_unavailable_reason(name);

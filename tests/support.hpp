@@ -47,6 +47,10 @@ std::filesystem::path output_dir(const std::string& test_name);
 /// Writes text to a file (test inputs).
 void write_text(const std::filesystem::path& path, const std::string& text);
 
+/// D̄ of `a` against `reference`, as the solve reports it: ‖a − ref‖ / ‖ref‖
+/// over all points and channels.
+double dbar(const std::vector<hilight::Rgb>& a, const std::vector<hilight::Rgb>& reference);
+
 /// Number of lines in `text` (a one-line error has exactly 1).
 size_t line_count(const std::string& text);
 

@@ -40,16 +40,6 @@ double worst_relative(const std::vector<Rgb>& a, const std::vector<Rgb>& b, size
   return worst;
 }
 
-double dbar(const std::vector<Rgb>& a, const std::vector<Rgb>& reference) {
-  double num = 0, den = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    DVec3 d = DVec3(a[i]) - DVec3(reference[i]);
-    num += glm::dot(d, d);
-    den += glm::dot(DVec3(reference[i]), DVec3(reference[i]));
-  }
-  return std::sqrt(num / den);
-}
-
 /// A floor with a floating blocker (nothing touches: no contact corners,
 /// where illumination is discontinuous and two renderers may sample either side).
 std::shared_ptr<const Scene> shadow_scene() {
@@ -139,7 +129,7 @@ TEST_CASE("the first bounce of a closed room: Embree and POV-Ray agree within 5%
     embree_indirect[i] = embree[i] - embree_direct[i];
     pov_indirect[i] = pov[i] - embree_direct[i];
   }
-  double total = dbar(pov, embree), bounce_only = dbar(pov_indirect, embree_indirect);
+  double total = test::dbar(pov, embree), bounce_only = test::dbar(pov_indirect, embree_indirect);
   double sum_pov = 0, sum_embree = 0;
   for (size_t i = 0; i < points.size(); ++i) sum_pov += pov_indirect[i].r, sum_embree += embree_indirect[i].r;
   if (const char* dump = std::getenv("HILIGHT_DUMP_BOUNCE")) {

@@ -279,17 +279,6 @@ void write_points(const fs::path& path, const Points& p) {
   test::write_text(path, o.str());
 }
 
-/// Normalized difference ‖a − b‖ / ‖b‖ over all points (D̄ with unit weights).
-double dbar(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
-  double diff = 0, norm = 0;
-  for (size_t i = 0; i < b.size(); ++i) {
-    glm::dvec3 d = glm::dvec3(a[i]) - glm::dvec3(b[i]);
-    diff += glm::dot(d, d);
-    norm += glm::dot(glm::dvec3(b[i]), glm::dvec3(b[i]));
-  }
-  return std::sqrt(diff / norm);
-}
-
 /// Renders `lights_json` on scene (b) or (c) written to `dir`, returns scene path and target path.
 struct Case {
   fs::path scene, lights, target;
@@ -414,7 +403,7 @@ TEST_CASE("solve with a spot hint recovers one spotlight and one point light", "
 double embree_dbar(const Case& c, const fs::path& lights, const fs::path& dir) {
   const fs::path rendered = dir / "found-by-embree.ply";
   render(c.scene, lights, rendered);
-  return dbar(read_points(rendered).colour, read_points(c.target).colour);
+  return test::dbar(read_points(rendered).colour, read_points(c.target).colour);
 }
 
 TEST_CASE("a solve with --renderer ism-vulkan recovers the open scene's 2 lights", "[solve][recovery][ism]") {
@@ -582,7 +571,7 @@ TEST_CASE("fine-tune re-optimizes found lights to a brightened target", "[solve]
   render(c.scene, first.lights_path, dir / "initial.ply");
   Points initial = read_points(dir / "initial.ply");
   REQUIRE(initial.colour.size() == target.colour.size());
-  const double dbar_initial = dbar(initial.colour, target.colour);
+  const double dbar_initial = test::dbar(initial.colour, target.colour);
 
   Solved tuned = solve(c.scene, brighter, dir, "tuned", {"--mode", "fine-tune", "--initial", first.lights_path.string()});
   const double dbar_tuned = tuned.report.at("dbar").get<double>();

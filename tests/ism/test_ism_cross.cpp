@@ -14,17 +14,6 @@ using namespace hilight;
 
 namespace {
 
-/// Relative L2 difference, as the solve's D̄.
-double dbar(const std::vector<Rgb>& a, const std::vector<Rgb>& reference) {
-  double num = 0, den = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    DVec3 d = DVec3(a[i]) - DVec3(reference[i]);
-    num += glm::dot(d, d);
-    den += glm::dot(DVec3(reference[i]), DVec3(reference[i]));
-  }
-  return std::sqrt(num / den);
-}
-
 std::unique_ptr<Renderer> ism(std::shared_ptr<const Scene> scene, std::vector<std::string> settings = {}) {
   settings.push_back("validation=true");
   return test::make_renderer("ism-vulkan", std::move(scene), settings);
@@ -56,7 +45,7 @@ TEST_CASE("ism-vulkan: direct light with shadows matches Embree within 2% D-bar"
                      Light::point({2.3f, 1.6f, 3.9f}, Rgb(1.6f, 1.7f, 2.f))};
   auto embree = test::make_renderer("embree", scene, {"bounces=0"})->illuminate(points, lights);
   auto gpu = ism(scene, {"bounces=0"})->illuminate(points, lights);
-  double d = dbar(gpu, embree);
+  double d = test::dbar(gpu, embree);
   INFO("D-bar " << d << " over " << points.size() << " points");
   CHECK(d < 0.02);
 }
@@ -69,7 +58,7 @@ TEST_CASE("ism-vulkan: a spotlight matches Embree within 2% D-bar, dark outside 
                      Light::spot({5.f, 2.f, 4.f}, {-1.f, -0.6f, -0.2f}, 20.f, Rgb(3.f))};
   auto embree = test::make_renderer("embree", scene, {"bounces=0"})->illuminate(points, lights);
   auto gpu = ism(scene, {"bounces=0"})->illuminate(points, lights);
-  double d = dbar(gpu, embree);
+  double d = test::dbar(gpu, embree);
   size_t lit_outside = 0;
   for (size_t i = 0; i < points.size(); ++i) lit_outside += embree[i].r == 0.f && gpu[i].r > 0.f;
   INFO("D-bar " << d << "; points lit by ism-vulkan but dark in Embree: " << lit_outside);
@@ -91,8 +80,8 @@ TEST_CASE("ism-vulkan: the first bounce of a closed room matches Embree, closer 
   };
   auto gpu = ism(scene)->illuminate(points, lights);
   auto few = ism(scene, {"vpls=16"})->illuminate(points, lights);
-  double total = dbar(gpu, embree);
-  double bounce = dbar(bounce_of(gpu), bounce_of(embree)), bounce_few = dbar(bounce_of(few), bounce_of(embree));
+  double total = test::dbar(gpu, embree);
+  double bounce = test::dbar(bounce_of(gpu), bounce_of(embree)), bounce_few = test::dbar(bounce_of(few), bounce_of(embree));
   double sum_gpu = 0, sum_embree = 0;
   for (size_t i = 0; i < points.size(); ++i) sum_gpu += gpu[i].r - embree_direct[i].r, sum_embree += embree[i].r - embree_direct[i].r;
   INFO("bounce energy ism/embree " << sum_gpu / sum_embree);
