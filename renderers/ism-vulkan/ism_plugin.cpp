@@ -84,4 +84,4 @@ void register_ism(hilight::PluginRegistrar& registrar) { registrar.renderer(crea
 } // namespace
 
 HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, "0.1.0",
-               "imperfect shadow maps on Vulkan: cube shadow maps, first bounce from VPLs", register_ism)
+               "imperfect shadow maps on Vulkan: cube ID shadow maps, first bounce from VPLs", register_ism)
