@@ -4,7 +4,6 @@
 #include "hilight/threads.hpp"
 
 #include <cmath>
-#include <iostream>
 
 namespace hilight::cli {
 
@@ -18,19 +17,6 @@ const CLI::Validator FiniteNonNegative(
       return {};
     },
     "NUMBER >= 0");
-
-std::optional<int> parse(CLI::App& app, const std::vector<std::string>& args) {
-  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them back to front
-  try {
-    app.parse(reversed);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return 0;
-  } catch (const CLI::ParseError& e) {
-    throw InputError(app.get_name() + ": " + e.what());
-  }
-  return std::nullopt;
-}
 
 void RendererOptions::add_to(CLI::App& app) {
   app.add_option("--renderer", name, "renderer plugin (hilight plugins lists them)")->capture_default_str();

@@ -1,6 +1,7 @@
 #pragma once
 /// Helpers shared by the CLI's commands: argument parsing with CLI11, the
 /// scene/renderer options every command takes, and output-path checks.
+#include "cli_arguments.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/registry.hpp"
@@ -14,9 +15,7 @@
 
 namespace hilight::cli {
 
-/// Parses `args` into `app`. Returns an exit code when the command should
-/// stop here (--help printed: 0), nullopt to go on; bad arguments throw InputError.
-std::optional<int> parse(CLI::App& app, const std::vector<std::string>& args);
+using hilight::parse_arguments;
 
 /// Renderer choice and its settings, as every rendering command takes them.
 struct RendererOptions {

@@ -76,7 +76,7 @@ int run_bench(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   int reference_points = 10000;
   app.add_option("--reference-points", reference_points, "points for the POV-Ray comparison (0: skip)")->check(CLI::Range(0, 1000000))->capture_default_str();
-  if (auto code = parse(app, args)) return *code;
+  if (auto code = parse_arguments(app, args)) return *code;
   set_thread_limit(threads);
 
   auto scene = std::make_shared<const Scene>(bench_scene(size_t(min_triangles)));

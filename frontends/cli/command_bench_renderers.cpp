@@ -42,7 +42,7 @@ int run_bench_renderers(const std::vector<std::string>& args, Registry& registry
   app.add_option("--repeat", repeat, "runs per figure (median reported)")->check(CLI::Range(1, 50))->capture_default_str();
   app.add_option("--max-edge", max_edge, "tessellation of the room (0.15: about 25k vertices)")->check(FiniteNonNegative)->capture_default_str();
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
-  if (auto code = parse(app, args)) return *code;
+  if (auto code = parse_arguments(app, args)) return *code;
   set_thread_limit(threads);
 
   auto scene = std::make_shared<const Scene>(finish_scene(builders::furnished_room(), {max_edge}));

@@ -48,7 +48,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   bool no_cache_figure = false;
   app.add_flag("--skip-no-cache", no_cache_figure, "skip the comparison solve without the light cache");
-  if (auto code = parse(app, args)) return *code;
+  if (auto code = parse_arguments(app, args)) return *code;
   set_thread_limit(threads);
 
   auto scene = std::make_shared<const Scene>(finish_scene(builders::furnished_room(), {max_edge}));

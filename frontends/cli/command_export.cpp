@@ -25,7 +25,7 @@ int run_export(const std::vector<std::string>& args, Registry&) {
   app.add_option("--width", width, "image width the camera is set up for")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height the camera is set up for")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
-  if (auto code = parse(app, args)) return *code;
+  if (auto code = parse_arguments(app, args)) return *code;
 
   check_writable(output);
   Lighting lights = read_lights_json(lights_path);

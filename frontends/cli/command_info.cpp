@@ -15,7 +15,7 @@ int run_info(const std::vector<std::string>& args) {
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
   app.add_flag("--json", as_json, "print JSON instead of text");
-  if (auto code = parse(app, args)) return *code;
+  if (auto code = parse_arguments(app, args)) return *code;
 
   Scene scene = load_scene(scene_path, {max_edge});
   const Bounds& b = scene.bounds;

@@ -10,7 +10,7 @@ int run_plugins(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("List plugin modules, their versions and availability", "plugins");
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "also print each module's path");
-  if (auto code = parse(app, args)) return *code;
+  if (auto code = parse_arguments(app, args)) return *code;
 
   if (registry.modules().empty()) {
     std::printf("no plugin modules found (looked in lib/hilight beside bin/ and HILIGHT_PLUGIN_PATH)\n");

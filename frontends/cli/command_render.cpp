@@ -53,7 +53,7 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--height", height, "image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--exposure", exposure, "PNG exposure multiplier (default: automatic)")->check(FiniteNonNegative);
   ropts.add_to(app);
-  if (auto code = parse(app, args)) return *code;
+  if (auto code = parse_arguments(app, args)) return *code;
 
   // Everything that can be checked cheaply is checked before any work.
   std::vector<fs::path> paths = expand_outputs(outputs);

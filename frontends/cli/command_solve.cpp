@@ -88,7 +88,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
   app.add_flag("-q,--quiet", quiet, "no progress or summary on stderr");
   ropts.add_to(app);
-  if (auto code = parse(app, args)) return *code;
+  if (auto code = parse_arguments(app, args)) return *code;
 
   if (mode != "solve" && initial_path.empty()) throw InputError("--mode " + mode + " needs --initial LIGHTS.json");
   if (mode == "solve" && !initial_path.empty()) throw InputError("--initial needs --mode fine-tune or add");
@@ -102,7 +102,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       h.intensity = Rgb(1.f);
     }
   }
-  registry.renderer_unavailable_reason(ropts.name);
+  registry.renderer_unavailable_reason(ropts.name);  // throws for an unknown renderer, before the scene loads
   auto optimizer = registry.create_optimizer(optimizer_name, Properties::from_assignments(optimizer_settings));
   auto sampler = registry.create_sampler(sampler_name, {});
 

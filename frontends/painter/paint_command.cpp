@@ -2,6 +2,8 @@
 // the script (so bad input fails before any window opens), runs the painter.
 #include "paint_command.hpp"
 
+#include "cli_arguments.hpp"
+
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/scene_io.hpp"
@@ -12,7 +14,6 @@
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <cmath>
-#include <iostream>
 
 namespace hilight::painter {
 
@@ -83,15 +84,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_flag("--bench", o.bench, "after the script: timed orbit, strokes and fine-tunes (use with --timings)");
   app.add_flag("--no-auto-fine-tune", no_auto, "do not fine-tune the lights after each brush stroke");
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
-  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them back to front
-  try {
-    app.parse(reversed);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return 0;
-  } catch (const CLI::ParseError& e) {
-    throw InputError(std::string("paint: ") + e.what());
-  }
+  if (auto code = parse_arguments(app, args)) return *code;
   if (!std::isfinite(o.max_edge) || o.max_edge < 0.f) throw InputError("paint: --max-edge must be a finite number >= 0");
   parse_size(size, o.width, o.height);
   o.scene = scene;

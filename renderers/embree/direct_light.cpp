@@ -6,8 +6,7 @@ PreparedLight::PreparedLight(const Light& light) : position(light.position), int
   if (light.type == LightType::Spot) {
     spot = true;
     direction = glm::normalize(light.direction);
-    cos_cutoff = std::cos(float(light.cutoff_deg * kPi / 180.0));
-    cos_inner = light.falloff_deg > 0.f ? std::cos(float((light.cutoff_deg - light.falloff_deg) * kPi / 180.0)) : cos_cutoff;
+    cone = SpotCone::of(light);
   }
 }
 

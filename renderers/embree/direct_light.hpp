@@ -14,21 +14,13 @@ struct PreparedLight {
   Vec3 position;
   bool spot = false;
   Vec3 direction{0.f};
-  float cos_cutoff = -1.f;   ///< outside the cone below this
-  float cos_inner = -1.f;    ///< full intensity above this
+  SpotCone cone;
   Rgb intensity{1.f};
 
   explicit PreparedLight(const Light& light);
   /// Angular factor toward unit direction `to_point` (from the light):
   /// smoothstep in the cosine between the cone's edge and its full-intensity core.
-  float angular(const Vec3& to_point) const {
-    if (!spot) return 1.f;
-    float c = glm::dot(direction, to_point);
-    if (c < cos_cutoff) return 0.f;
-    if (c >= cos_inner) return 1.f;
-    float t = (c - cos_cutoff) / (cos_inner - cos_cutoff);
-    return t * t * (3.f - 2.f * t);
-  }
+  float angular(const Vec3& to_point) const { return spot ? cone.factor(glm::dot(direction, to_point)) : 1.f; }
 };
 
 /// Irradiance on one side of a surface at `p` — the side `side_normal` points

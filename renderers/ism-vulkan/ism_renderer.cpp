@@ -56,9 +56,9 @@ GpuLight to_gpu(const Light& light) {
     g.direction[k] = light.direction[k];
   }
   if (light.type == LightType::Spot) {
-    const float to_radians = float(kPi / 180.0);
-    g.cone[0] = std::cos(light.cutoff_deg * to_radians);
-    g.cone[1] = std::cos(std::max(0.f, light.cutoff_deg - light.falloff_deg) * to_radians);
+    const SpotCone cone = SpotCone::of(light);
+    g.cone[0] = cone.cos_cutoff;
+    g.cone[1] = cone.cos_inner;
     g.cone[2] = 1.f;
   }
   return g;

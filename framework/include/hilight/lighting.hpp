@@ -42,6 +42,24 @@ struct Light {
 
 using Lighting = std::vector<Light>;
 
+/// A spotlight's cone as cosines, so hot loops need no trigonometry; one
+/// definition of the soft edge for every renderer (docs/rendering-model.md).
+struct SpotCone {
+  float cos_cutoff = -1.f;  ///< dark below this cosine
+  float cos_inner = -1.f;   ///< full intensity at and above this cosine
+
+  static SpotCone of(const Light& light);
+  /// Angular factor for the cosine between the spot's direction and the unit
+  /// direction from the light to the point: smoothstep in the cosine between
+  /// the cone's edge and its full-intensity core.
+  float factor(float cos_alpha) const {
+    if (cos_alpha < cos_cutoff) return 0.f;
+    if (cos_alpha >= cos_inner) return 1.f;
+    const float t = (cos_alpha - cos_cutoff) / (cos_inner - cos_cutoff);
+    return t * t * (3.f - 2.f * t);
+  }
+};
+
 const char* to_string(LightType type);
 
 } // namespace hilight

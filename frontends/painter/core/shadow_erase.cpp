@@ -13,14 +13,7 @@ namespace {
 /// Spot factor S(α) of docs/rendering-model.md (1 for point lights).
 float spot_factor(const Light& light, const Vec3& to_point_unit) {
   if (light.type != LightType::Spot) return 1.f;
-  const double cos_alpha = glm::dot(DVec3(light.direction), DVec3(to_point_unit));
-  const double cutoff = double(light.cutoff_deg) * kPi / 180.0;
-  const double inner = double(std::max(0.f, light.cutoff_deg - light.falloff_deg)) * kPi / 180.0;
-  const double cos_cutoff = std::cos(cutoff), cos_inner = std::cos(inner);
-  if (cos_alpha < cos_cutoff) return 0.f;
-  if (cos_alpha >= cos_inner) return 1.f;
-  const double t = (cos_alpha - cos_cutoff) / (cos_inner - cos_cutoff);
-  return float(t * t * (3.0 - 2.0 * t));
+  return SpotCone::of(light).factor(glm::dot(light.direction, to_point_unit));
 }
 
 /// The object whose surface first blocks the way from a surface point to the
