@@ -1,6 +1,7 @@
 #include "hilight/target.hpp"
 
 #include "hilight/error.hpp"
+#include "hilight/vertex_binding.hpp"
 
 #include <cmath>
 #include <tbb/parallel_for.h>
@@ -11,6 +12,25 @@ double Target::norm() const {
   double sum = 0;
   for (size_t i = 0; i < value.size(); ++i) sum += weight[i] * glm::dot(DVec3(value[i]), DVec3(value[i]));
   return std::sqrt(sum);
+}
+
+std::vector<SurfaceBinding> vertex_triangles(const Scene& scene) {
+  // Per vertex, the triangle using it whose plane agrees best with its
+  // normal, with the barycentrics of that corner.
+  std::vector<SurfaceBinding> out(scene.positions.size());
+  std::vector<float> agreement(scene.positions.size(), -3.f);
+  for (uint32_t t = 0; t < scene.triangles.size(); ++t) {
+    const Vec3 face = scene.face_normal(t);
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = scene.triangles[t][k];
+      const float a = glm::dot(face, scene.normals[v]);
+      if (a > agreement[v]) {
+        agreement[v] = a;
+        out[v] = {t, k == 1 ? 1.f : 0.f, k == 2 ? 1.f : 0.f};
+      }
+    }
+  }
+  return out;
 }
 
 void surface_point_at(const Scene& scene, const SurfaceBinding& b, Vec3& position, Vec3& normal, Rgb& albedo) {
@@ -41,29 +61,42 @@ Target bind_target(const std::string& source, const std::vector<Vec3>& positions
   if (negative) throw InputError(source, count_of(negative) + " have negative colours");
   if (bad_weight) throw InputError(source, count_of(bad_weight) + " have a negative or non-finite weight");
 
+  const std::vector<int32_t> vertex = match_vertices(scene, positions, normals);
   const float tolerance = kTargetSurfaceTolerance * scene.diagonal();
   std::vector<Hit> hits(n);
-  tbb::parallel_for(size_t(0), n, [&](size_t i) { 
-    hits[i] = rays.closest_point(positions[i], tolerance, normals.empty() ? Vec3(0.f) : normals[i]);
+  tbb::parallel_for(size_t(0), n, [&](size_t i) {
+    if (vertex[i] < 0) hits[i] = rays.closest_point(positions[i], tolerance, normals.empty() ? Vec3(0.f) : normals[i]);
   });
   size_t off = 0;
-  for (const auto& h : hits) off += !h.valid();
+  for (size_t i = 0; i < n; ++i) off += vertex[i] < 0 && !hits[i].valid();
   if (off)
     throw InputError(source, count_of(off) + " are farther than " + std::to_string(tolerance) +
                                  " (diagonal x " + std::to_string(kTargetSurfaceTolerance) + ") from the scene's surface");
 
+  const std::vector<SurfaceBinding> corner = vertex_triangles(scene);
+  const std::vector<Rgb> vertex_albedo = scene.vertex_albedo();
   Target t;
   t.source = source;
   for (size_t i = 0; i < n; ++i) {
     if (weights[i] == 0.f) continue;  // "don't care"
-    SurfaceBinding b{hits[i].triangle, hits[i].u, hits[i].v};
-    Vec3 p, nrm;
-    Rgb albedo;
-    surface_point_at(scene, b, p, nrm, albedo);
-    t.points.positions.push_back(p);
-    t.points.normals.push_back(nrm);
-    t.points.albedo.push_back(albedo);
-    t.binding.push_back(b);
+    if (const int32_t v = vertex[i]; v >= 0) {
+      // Exactly what `render` shades for this vertex, bit for bit: the same
+      // position and normal also key the renderers' random streams.
+      t.points.positions.push_back(scene.positions[size_t(v)]);
+      t.points.normals.push_back(scene.normals[size_t(v)]);
+      t.points.albedo.push_back(vertex_albedo[size_t(v)]);
+      t.binding.push_back(corner[size_t(v)]);
+    } else {
+      SurfaceBinding b{hits[i].triangle, hits[i].u, hits[i].v};
+      Vec3 p, nrm;
+      Rgb albedo;
+      surface_point_at(scene, b, p, nrm, albedo);
+      t.points.positions.push_back(p);
+      t.points.normals.push_back(nrm);
+      t.points.albedo.push_back(albedo);
+      t.binding.push_back(b);
+    }
+    t.vertex.push_back(vertex[i]);
     t.value.push_back(values[i]);
     t.weight.push_back(weights[i]);
   }

@@ -32,7 +32,11 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
   return {{"mode", mode},
           {"lights", r.chosen},
           {"dbar", r.dbar},
+          {"dbar_points", r.dbar_points},
+          {"dbar_measured", r.dbar_points == r.target_points ? "every target point, by the reference renderer (as hilight render)"
+                                                             : "evenly spaced target points, by the reference renderer"},
           {"dbar_samples", r.dbar_samples},
+          {"residual_samples", r.residual_samples},
           {"cuts", cuts},
           {"improvement_ratios", r.improvement},
           {"seconds", r.seconds},
@@ -74,6 +78,10 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--spot-hints", hints_path, "lights JSON of spotlights wanted (position, direction, cutoff; intensity ignored)");
   app.add_option("--seed", seed, "seed of sampling and of the renderer's sample streams")->capture_default_str();
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
+  app.add_option("--evaluation-points", s.evaluation_points, "target points D̄ is measured on (0: all; fewer: an estimate)")
+      ->capture_default_str();
+  app.add_flag("--no-residual-samples", [&](int64_t) { s.residual_samples = false; },
+               "no second polish with the worst-explained target points added as samples");
   app.add_option("--samples", s.samples, "surface samples used by the solve")->check(CLI::Range(10, 10000000))->capture_default_str();
   app.add_option("--n-cut", s.n_cut, "N_cut: cuts refined")->check(CLI::Range(1, 1000))->capture_default_str();
   app.add_option("--eps-opt", s.eps_opt, "ε_opt: refine only cuts with D̄ below")->check(CLI::Range(0.0, 10.0))->capture_default_str();
@@ -137,8 +145,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     });
   }
   if (!quiet) {
-    std::fprintf(stderr, "hilight: %zu lights, D̄ %.2f%% on the target (%zu points, %zu samples), %.2f s -> %s\n", report.chosen,
-                 100.0 * report.dbar, report.target_points, report.samples, report.seconds["total"], output.c_str());
+    const std::string over = report.dbar_points == report.target_points
+                                 ? "all " + std::to_string(report.target_points) + " target points"
+                                 : std::to_string(report.dbar_points) + " of " + std::to_string(report.target_points) + " target points";
+    std::fprintf(stderr, "hilight: %zu light%s, D̄ %.2f%% over %s (%zu samples), %.2f s -> %s\n", report.chosen,
+                 report.chosen == 1 ? "" : "s", 100.0 * report.dbar, over.c_str(), report.samples, report.seconds["total"],
+                 output.c_str());
   }
   return 0;
 }

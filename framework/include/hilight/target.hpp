@@ -22,6 +22,9 @@ struct Target {
   std::string source;
   SurfacePoints points;                 ///< on the surface: position, shading normal, albedo
   std::vector<SurfaceBinding> binding;  ///< per point
+  /// Per point: the scene vertex it stands for (shaded exactly as `hilight
+  /// render` shades that vertex), or -1 for a point between vertices.
+  std::vector<int32_t> vertex;
   std::vector<Rgb> value;               ///< Ψ per point, linear radiance
   std::vector<float> weight;            ///< > 0
 
@@ -35,15 +38,21 @@ struct Target {
 constexpr float kTargetSurfaceTolerance = 1e-3f;
 
 /// Reads a target PLY (red green blue as float = linear, or uchar = sRGB;
-/// optional float weight) and binds each point to the nearest surface point.
+/// optional float weight; optional nx ny nz) and binds each point: to the
+/// scene vertex it lies on (hilight/vertex_binding.hpp), else to the nearest
+/// surface point.
 /// Throws InputError naming the file and how many points are wrong.
 Target read_target(const std::filesystem::path& path, const Scene& scene, const RayScene& rays);
 
-/// Binds given positions to the surface (tests, painter): same rules.
-/// `normals` (optional, may be empty) pick the right side of creases.
+/// Binds given positions to the scene (tests, painter): same rules.
+/// `normals` (optional, may be empty) pick the right vertex or side at creases.
 Target bind_target(const std::string& source, const std::vector<Vec3>& positions, const std::vector<Rgb>& values,
                    const std::vector<float>& weights, const Scene& scene, const RayScene& rays,
                    const std::vector<Vec3>& normals = {});
+
+/// Per scene vertex: a triangle that uses it (the one whose plane agrees best
+/// with the vertex normal) and the barycentrics of that corner.
+std::vector<SurfaceBinding> vertex_triangles(const Scene& scene);
 
 /// A point on the surface from its binding: position, shading normal, albedo.
 void surface_point_at(const Scene& scene, const SurfaceBinding& b, Vec3& position, Vec3& normal, Rgb& albedo);

@@ -5,6 +5,7 @@
 #include "hilight/pipeline/refine_problem.hpp"
 
 #include <chrono>
+#include <numeric>
 #include <tbb/task_group.h>
 #include <cstdio>
 #include <sstream>
@@ -260,60 +261,121 @@ Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, con
 }
 
 std::vector<Rgb> Solver::illumination(const Target& target, const Lighting& lights) {
-  SampleSet all = all_samples(target);
-  ResponseModel model(m_renderer, all, nullptr);
-  std::vector<Rgb> intensities;
-  for (const auto& l : lights) intensities.push_back(l.intensity);
-  return combine(model.responses(lights), intensities, all.size());
+  return m_reference.illuminate(target.points, lights);
 }
 
-namespace {
-/// `count` evenly spaced target points (every point if there are fewer).
-SampleSet spaced_points(const Target& target, size_t count) {
-  const size_t n = target.size(), want = count == 0 ? n : std::min(n, count);
-  SampleSet s;
-  for (size_t k = 0; k < want; ++k) s.add(target, uint32_t(std::min(n - 1, k * n / want)));
-  return s;
-}
-} // namespace
-
-double Solver::measure_dbar(const Target& target, const Lighting& lights) {
+SampleSet Solver::evaluation_set(const Target& target) const {
+  const size_t want = m_settings.evaluation_points;
+  if (want == 0 || want >= target.size()) return all_samples(target);
   // Evenly spaced target points estimate the whole target's D̄ at a fixed
   // cost — unless the target's light is concentrated where the spacing does
-  // not look (a small painted patch): then the estimate would be blind, and
-  // every point is measured.
-  SampleSet measured = spaced_points(target, m_settings.evaluation_points);
-  const double share = double(measured.size()) / double(target.size());
+  // not look (a small painted patch): then every point is measured.
+  const size_t n = target.size();
+  SampleSet measured;
+  for (size_t k = 0; k < want; ++k) measured.add(target, uint32_t(std::min(n - 1, k * n / want)));
+  const double share = double(measured.size()) / double(n);
   const double energy = measured.target_norm() * measured.target_norm(), total = target.norm() * target.norm();
-  if (measured.size() < target.size() && !(energy > 0.5 * share * total && energy < 2.0 * share * total)) measured = all_samples(target);
+  if (!(energy > 0.5 * share * total && energy < 2.0 * share * total)) return all_samples(target);
+  return measured;
+}
+
+double Solver::measure_dbar(const Target& target, const Lighting& lights) {
+  SampleSet measured = evaluation_set(target);
   return normalized_difference(m_reference.illuminate(measured.points, lights), measured);
 }
 
-Lighting Solver::refit_with_reference(const SampleSet& samples, const Lighting& lights) {
-  // The positions came from the fast model; the intensities are re-fitted by
-  // NNLS with the reference renderer on the solve's samples (which cover
-  // the target's light by construction), removing the fast model's bias.
-  std::vector<Rgb> phi = m_reference.unit_responses(samples.points, lights);
-  std::vector<Rgb> l = fit_intensities(phi, lights.size(), samples);
-  Lighting out;
-  for (size_t j = 0; j < lights.size(); ++j) {
-    // A light the fit switched off does nothing: not part of the answer
-    // (unless the user fixed the count).
-    if (m_settings.fixed_count == 0 && l[j] == Rgb(0.f) && lights[j].type == LightType::Point) continue;
-    out.push_back(lights[j]);
-    out.back().intensity = l[j];
+Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, double& dbar) {
+  // The fast model (fast twin, light cache) found the positions; the
+  // reference decides. Anchoring makes the model equal to the reference at
+  // the lights it is anchored at, so every value compared below is exact.
+  std::optional<LightCacheView> view;
+  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
+  ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
+  ResponseModel reference(m_reference, samples, nullptr);
+  SampleRefineProblem problem(model, *m_rays, &reference);
+  const double norm = samples.target_norm();
+  problem.anchor(lights);
+  Lighting fitted = lights;
+  double best = problem.objective_with_best_intensities(fitted);
+  if (!keep_count && m_settings.fixed_count == 0) {
+    // A point light the fit switches off does nothing: not part of the answer.
+    Lighting kept;
+    for (const auto& l : fitted)
+      if (l.type == LightType::Spot || l.intensity != Rgb(0.f)) kept.push_back(l);
+    if (!kept.empty() && kept.size() < fitted.size()) {
+      fitted = std::move(kept);
+      problem.anchor(fitted);
+      best = problem.objective_with_best_intensities(fitted);
+    }
   }
-  if (out.empty()) {  // the reference sees none of them: keep the solve's answer as it was
-    out = lights;
+  if (best > 0.0) {
+    Lighting polished = m_optimizer.refine(problem, fitted, RefineEffort::Polish);
+    problem.anchor(polished);  // the reference's own value where the lights went
+    const double value = problem.objective(polished);
+    if (value < best) fitted = std::move(polished), best = value;
   }
-  return out;
+  dbar = norm > 0 ? std::sqrt(std::max(0.0, best)) / norm : 0.0;
+  return fitted;
+}
+
+Lighting Solver::polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
+                                  SolveReport& report) {
+  Stopwatch watch;
+  const SampleSet measured = evaluation_set(target);
+  std::vector<Rgb> lit = m_reference.illuminate(measured.points, lights);
+  report.dbar = normalized_difference(lit, measured);
+  report.dbar_points = measured.size();
+  report.seconds["evaluation"] += watch.seconds();
+  // Below 0.2% D̄ there is nothing a designer would see.
+  if (!m_settings.residual_samples || report.dbar <= 2e-3) return lights;
+  // The points that hold most of the remaining squared error — often a few
+  // hot spots under lamps that the samples barely touch — join the samples.
+  std::vector<double> residual(measured.size());
+  double total = 0;
+  for (size_t i = 0; i < measured.size(); ++i) {
+    const DVec3 d = DVec3(measured.target[i]) - DVec3(lit[i]);
+    residual[i] = double(measured.weight[i]) * glm::dot(d, d);
+    total += residual[i];
+  }
+  std::vector<uint32_t> order(measured.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return residual[a] > residual[b] || (residual[a] == residual[b] && a < b); });
+  std::vector<char> sampled(target.size(), 0);
+  for (uint32_t i : samples.target_index) sampled[i] = 1;
+  const size_t cap = std::max<size_t>(16, samples.size() / 2);
+  size_t added = 0;
+  double covered = 0;
+  for (uint32_t k : order) {
+    if (added >= cap || covered >= 0.5 * total) break;
+    covered += residual[k];
+    const uint32_t i = measured.target_index[k];
+    if (sampled[i]) continue;
+    samples.add(target, i);
+    ++added;
+  }
+  if (added == 0) return lights;
+  Stopwatch polish_watch;
+  double dbar_samples = 0;
+  Lighting polished = polish_with_reference(samples, lights, keep_count, dbar_samples);
+  report.seconds["residual polish"] += polish_watch.seconds();
+  Stopwatch again;
+  const double dbar = normalized_difference(m_reference.illuminate(measured.points, polished), measured);
+  report.seconds["evaluation"] += again.seconds();
+  if (!(dbar < report.dbar)) return lights;
+  report.dbar = dbar;
+  report.dbar_samples = dbar_samples;
+  report.residual_samples = added;
+  report.samples = samples.size();
+  return polished;
 }
 
 void Solver::finish_report(const Target& target, const Lighting& lights, SolveReport& report) {
-  Stopwatch watch;
-  report.dbar = measure_dbar(target, lights);
   report.chosen = lights.size();
   report.target_points = target.size();
+  if (report.dbar_points > 0) return;  // measured by polish_residuals
+  Stopwatch watch;
+  report.dbar = measure_dbar(target, lights);
+  report.dbar_points = evaluation_set(target).size();
   report.seconds["evaluation"] += watch.seconds();
 }
 
@@ -347,7 +409,11 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
   require_admissible(m_settings.spot_hints, "spot hints");
   ensure_cache(report);
   SampleSet samples = sample(target, report);
-  Lighting lights = refit_with_reference(samples, solve_samples(samples, report));
+  Lighting found = solve_samples(samples, report);
+  Stopwatch polish_watch;
+  Lighting lights = polish_with_reference(samples, found, false, report.dbar_samples);
+  report.seconds["reference polish"] += polish_watch.seconds();
+  lights = polish_residuals(target, std::move(samples), lights, false, report);
   finish_report(target, lights, report);
   report.seconds["total"] = total.seconds();
   return lights;
@@ -358,13 +424,12 @@ Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveRe
   require_admissible(lights, "lights to fine-tune");
   ensure_cache(report);
   SampleSet samples = sample(target, report);
-  std::optional<LightCacheView> view;
-  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
-  ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
-  ResponseModel exact(m_renderer, samples, nullptr);
+  // Anchored at the reference from the start: lights that already produce
+  // the target have a zero objective and stay exactly where they are.
   Stopwatch refine_watch;
-  Lighting refined = refine_anchored(model, exact, lights, report.dbar_samples, RefineEffort::Polish);
+  Lighting refined = polish_with_reference(samples, lights, true, report.dbar_samples);
   report.seconds["refinement"] += refine_watch.seconds();
+  refined = polish_residuals(target, std::move(samples), refined, true, report);
   finish_report(target, refined, report);
   report.seconds["total"] = total.seconds();
   return refined;
@@ -383,7 +448,7 @@ Lighting Solver::add_lights(const Target& target, const Lighting& lights, SolveR
     throw InputError(target.source, "the given lights already produce the target to within " +
                                         std::to_string(int(std::round(100 * m_settings.seeding.weak_threshold))) + "%: nothing to add");
   SampleSet samples = sample(missing, report);
-  Lighting added = solve_samples(samples, report);
+  Lighting added = polish_with_reference(samples, solve_samples(samples, report), false, report.dbar_samples);
   Lighting all = lights;
   all.insert(all.end(), added.begin(), added.end());
   finish_report(target, all, report);

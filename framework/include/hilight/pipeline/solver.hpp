@@ -30,7 +30,8 @@ struct SolveSettings {
   double eps_opt = 0.15;             ///< ε_opt: only cuts with D̄ below are refined
   double eps_impro = 1.6;            ///< ε_impro of eq. 9
   size_t fixed_count = 0;            ///< --lights N (0: automatic)
-  size_t evaluation_points = 1024;   ///< target points D̄ is measured on (evenly spaced; 0: all)
+  size_t evaluation_points = 0;      ///< target points D̄ is measured on (0: all; else evenly spaced, an estimate)
+  bool residual_samples = true;      ///< after the fit, add the worst-explained points as samples and polish
   Lighting spot_hints;               ///< spotlights the user asked for
 };
 
@@ -44,8 +45,10 @@ struct CutRecord {
 
 struct SolveReport {
   size_t chosen = 0;                 ///< lights in the result (point + spot)
-  double dbar = 0;                   ///< D̄ of the result over the whole target
-  double dbar_samples = 0;           ///< ...and over the samples
+  double dbar = 0;                   ///< D̄ of the result over the target, by the reference renderer
+  size_t dbar_points = 0;            ///< target points dbar was measured on (all unless evaluation_points)
+  double dbar_samples = 0;           ///< ...and over the samples (the solve's own objective)
+  size_t residual_samples = 0;       ///< samples added where the fit explained the target worst
   std::vector<CutRecord> cuts;       ///< in order of light count
   std::vector<double> improvement;   ///< eq. 9 between consecutive cuts
   size_t samples = 0, target_points = 0;
@@ -80,9 +83,12 @@ public:
   std::vector<Rgb> illumination(const Target& target, const Lighting& lights);
   /// D̄ of `lights` on the target, measured with the reference renderer.
   double measure_dbar(const Target& target, const Lighting& lights);
-  /// `lights` with intensities re-fitted against the reference renderer on
-  /// `samples`; lights switched off by the fit are dropped (automatic count).
-  Lighting refit_with_reference(const SampleSet& samples, const Lighting& lights);
+  /// The solve's last word on `lights`, against the reference renderer (what
+  /// `hilight render` uses): intensities re-fitted, lights the fit switches
+  /// off dropped (unless `keep_count` or --lights N), then a polish anchored
+  /// at the reference, kept only if the reference says it helps. So lights
+  /// that made the target are a fixed point. `dbar` gets D̄ at the samples.
+  Lighting polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, double& dbar);
   /// InputError unless every light may stand where it is (in bounds, out of solids).
   void require_admissible(const Lighting& lights, const std::string& what) const;
   /// The hierarchy of the last solve (for moving between cuts).
@@ -106,6 +112,11 @@ private:
   Lighting refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar,
                            RefineEffort effort = RefineEffort::Full);
   void finish_report(const Target& target, const Lighting& lights, SolveReport& report);
+  /// Polishes again with the worst-explained target points added to the samples.
+  Lighting polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
+                            SolveReport& report);
+  /// Points D̄ is measured on (all, or evenly spaced when evaluation_points is set).
+  SampleSet evaluation_set(const Target& target) const;
   float neighbourhood_radius() const;
 
   std::shared_ptr<const Scene> m_scene;
