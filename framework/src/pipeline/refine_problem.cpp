@@ -26,6 +26,12 @@ const std::vector<Rgb>& SampleRefineProblem::phi_of(const Light& light) {
 }
 
 std::vector<Rgb> SampleRefineProblem::responses(std::span<const Light> lights) {
+  std::vector<size_t> index(lights.size());
+  for (size_t j = 0; j < index.size(); ++j) index[j] = j;
+  return responses_as(lights, index);
+}
+
+std::vector<Rgb> SampleRefineProblem::responses_as(std::span<const Light> lights, std::span<const size_t> anchor_index) {
   const size_t m = m_model.samples().size();
   std::vector<Rgb> out(lights.size() * m);
   // Batch the lights not yet known: one renderer call for all of them.
@@ -41,8 +47,9 @@ std::vector<Rgb> SampleRefineProblem::responses(std::span<const Light> lights) {
   for (size_t j = 0; j < lights.size(); ++j) {
     const auto& p = phi_of(lights[j]);
     Rgb* dst = &out[j * m];
-    if (j < m_correction.size() && !m_correction[j].empty())
-      for (size_t i = 0; i < m; ++i) dst[i] = glm::max(p[i] + m_correction[j][i], Rgb(0.f));
+    const size_t a = anchor_index[j];
+    if (a < m_correction.size() && !m_correction[a].empty())
+      for (size_t i = 0; i < m; ++i) dst[i] = glm::max(p[i] + m_correction[a][i], Rgb(0.f));
     else
       std::copy(p.begin(), p.end(), dst);
   }

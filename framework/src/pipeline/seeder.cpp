@@ -44,12 +44,81 @@ std::vector<Cell> free_cells(const std::vector<Cell>& cells, const RayScene& ray
   return out;
 }
 
+
+/// NNLS over point lights `lights` (responses `phi`) plus the spots, eq. 6
+/// deletion, re-solve: the surviving point lights, then the spots. `kept`
+/// gets the indices of the surviving point lights.
+SeedResult fit_and_delete(const Lighting& lights, std::vector<Rgb> phi, const Lighting& spots, const std::vector<Rgb>& spot_phi,
+                          const SampleSet& samples, double weak_threshold, std::vector<size_t>& keep) {
+  const size_t m = samples.size(), n_points = lights.size();
+  const double target_norm = samples.target_norm();
+  phi.insert(phi.end(), spot_phi.begin(), spot_phi.end());
+  std::vector<Rgb> l = fit_intensities(phi, n_points + spots.size(), samples);
+  keep.clear();
+  for (size_t j = 0; j < n_points; ++j)
+    if (contribution(phi, j, l[j], samples) >= weak_threshold * target_norm) keep.push_back(j);
+  if (keep.empty()) {  // nothing is strong alone: keep the strongest rather than nothing
+    size_t best = 0;
+    double best_c = -1;
+    for (size_t j = 0; j < n_points; ++j)
+      if (double c = contribution(phi, j, l[j], samples); c > best_c) best_c = c, best = j;
+    if (best_c > 0) keep.push_back(best);
+  }
+  SeedResult result;
+  result.phi.reserve((keep.size() + spots.size()) * m);
+  for (size_t j : keep) {
+    result.phi.insert(result.phi.end(), phi.begin() + std::ptrdiff_t(j * m), phi.begin() + std::ptrdiff_t((j + 1) * m));
+    result.lights.push_back(lights[j]);
+  }
+  result.phi.insert(result.phi.end(), spot_phi.begin(), spot_phi.end());
+  for (const auto& s : spots) result.lights.push_back(s);
+  std::vector<Rgb> kept_l = fit_intensities(result.phi, result.lights.size(), samples);
+  for (size_t j = 0; j < result.lights.size(); ++j) result.lights[j].intensity = kept_l[j];
+  result.dbar = normalized_difference(combine(result.phi, kept_l, m), samples);
+  return result;
+}
+
+/// Candidates where the fit is worst: above the samples whose light is most
+/// unexplained, along their normals (a lamp near a surface paints a hot spot
+/// right in front of it), at a few distances; spaced so that one hot spot
+/// does not take every candidate.
+Lighting residual_candidates(const SeedResult& seed, const SampleSet& samples, const RayScene& rays, float cell_size,
+                             size_t count) {
+  const size_t m = samples.size();
+  std::vector<Rgb> intensities;
+  for (const auto& l : seed.lights) intensities.push_back(l.intensity);
+  const std::vector<Rgb> lit = combine(seed.phi, intensities, m);
+  std::vector<std::pair<double, size_t>> order;
+  for (size_t i = 0; i < m; ++i) {
+    const Rgb missing = glm::max(samples.target[i] - lit[i], Rgb(0.f));
+    const double score = double(samples.weight[i]) * glm::dot(DVec3(missing), DVec3(missing));
+    if (score > 0) order.emplace_back(-score, i);
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<Vec3> chosen;
+  Lighting out;
+  const Bounds space = rays.scene().light_bounds();
+  const float clearance = 1e-3f * rays.scene().diagonal();
+  for (const auto& [score, i] : order) {
+    if (chosen.size() >= count) break;
+    const Vec3& p = samples.points.positions[i];
+    bool apart = true;
+    for (const auto& q : chosen) apart &= glm::length(q - p) > 0.5f * cell_size;
+    if (!apart) continue;
+    chosen.push_back(p);
+    for (float d : {0.1f, 0.25f, 0.5f, 1.0f}) {
+      const Vec3 c = p + samples.points.normals[i] * (d * cell_size);
+      if (space.contains(c) && !rays.inside_solid(c) && !rays.closest_point(c, std::max(clearance, 0.5f * d * cell_size)).valid())
+        out.push_back(Light::point(c, Rgb(1.f)));
+    }
+  }
+  return out;
+}
 } // namespace
 
 SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lighting& spots, const SeedSettings& settings) {
   const SampleSet& samples = model.samples();
   const size_t m = samples.size();
-  const double target_norm = samples.target_norm();
   std::vector<Rgb> spot_phi = spots.empty() ? std::vector<Rgb>{} : model.responses(spots);
 
   SeedResult result;
@@ -57,39 +126,17 @@ SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lightin
   result.lights = spots;
   result.phi = spot_phi;
   std::vector<Cell> cells = free_cells(coarse_cells(rays.scene().light_bounds(), settings.coarse_cells), rays);
+  float cell_size = cells.empty() ? 0.f : cells.front().size;
   for (int level = 0; level < settings.iterations && !cells.empty(); ++level) {
     Lighting lights;
     for (const auto& c : cells) lights.push_back(Light::point(c.centre, Rgb(1.f)));
     result.lights_tried += lights.size();
     std::vector<Rgb> phi = model.responses(lights);
-    phi.insert(phi.end(), spot_phi.begin(), spot_phi.end());
-    const size_t n_points = lights.size();
-    std::vector<Rgb> l = fit_intensities(phi, n_points + spots.size(), samples);
-
-    // Eq. 6: drop point lights contributing less than ε_w of ‖Ψ‖, then re-solve.
     std::vector<size_t> keep;
-    for (size_t j = 0; j < n_points; ++j)
-      if (contribution(phi, j, l[j], samples) >= settings.weak_threshold * target_norm) keep.push_back(j);
-    if (keep.empty()) {  // nothing is strong alone: keep the strongest rather than nothing
-      size_t best = 0;
-      double best_c = -1;
-      for (size_t j = 0; j < n_points; ++j)
-        if (double c = contribution(phi, j, l[j], samples); c > best_c) best_c = c, best = j;
-      if (best_c > 0) keep.push_back(best);
-    }
-    std::vector<Rgb> kept_phi;
-    kept_phi.reserve((keep.size() + spots.size()) * m);
-    result.lights.clear();
-    for (size_t j : keep) {
-      kept_phi.insert(kept_phi.end(), phi.begin() + std::ptrdiff_t(j * m), phi.begin() + std::ptrdiff_t((j + 1) * m));
-      result.lights.push_back(lights[j]);
-    }
-    kept_phi.insert(kept_phi.end(), spot_phi.begin(), spot_phi.end());
-    for (const auto& s : spots) result.lights.push_back(s);
-    std::vector<Rgb> kept_l = fit_intensities(kept_phi, result.lights.size(), samples);
-    for (size_t j = 0; j < result.lights.size(); ++j) result.lights[j].intensity = kept_l[j];
-    result.phi = std::move(kept_phi);
-    result.dbar = normalized_difference(combine(result.phi, kept_l, m), samples);
+    const size_t tried = result.lights_tried;
+    result = fit_and_delete(lights, std::move(phi), spots, spot_phi, samples, settings.weak_threshold, keep);
+    result.lights_tried = tried;
+    cell_size = cells.front().size;
 
     if (level + 1 < settings.iterations) {
       std::vector<Cell> children;
@@ -102,6 +149,25 @@ SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lightin
       }
       cells = free_cells(children, rays);
     }
+  }
+  // Beyond the paper: where the target is still unexplained (a lamp between
+  // cell centres, a hot spot no cell centre can paint), add candidates that
+  // face those samples and solve again, while D̄ improves.
+  const size_t n_spots = spots.size();
+  for (int round = 0; round < settings.residual_rounds && result.dbar > settings.residual_dbar && cell_size > 0.f; ++round) {
+    Lighting candidates = residual_candidates(result, samples, rays, cell_size, settings.residual_candidates);
+    if (candidates.empty()) break;
+    result.lights_tried += candidates.size();
+    Lighting lights(result.lights.begin(), result.lights.end() - std::ptrdiff_t(n_spots));
+    std::vector<Rgb> phi(result.phi.begin(), result.phi.end() - std::ptrdiff_t(n_spots * m));
+    std::vector<Rgb> candidate_phi = model.responses(candidates);
+    lights.insert(lights.end(), candidates.begin(), candidates.end());
+    phi.insert(phi.end(), candidate_phi.begin(), candidate_phi.end());
+    std::vector<size_t> keep;
+    SeedResult next = fit_and_delete(lights, std::move(phi), spots, spot_phi, samples, settings.weak_threshold, keep);
+    if (!(next.dbar < 0.95 * result.dbar)) break;
+    next.lights_tried = result.lights_tried;
+    result = std::move(next);
   }
   result.spot_count = spots.size();
   return result;

@@ -2,9 +2,11 @@
 
 #include "hilight/error.hpp"
 #include "hilight/pipeline/fit.hpp"
+#include "hilight/pipeline/gauss_newton.hpp"
 #include "hilight/pipeline/refine_problem.hpp"
 
 #include <chrono>
+#include <limits>
 #include <numeric>
 #include <tbb/task_group.h>
 #include <cstdio>
@@ -237,6 +239,12 @@ Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, con
     if (problem.objective(polished) <= problem.objective(refined)) refined = polished;
   };
   if (m_cache && effort == RefineEffort::Full) polish();
+  // The simplex leaves lights near surfaces short of their valley's floor;
+  // a cut judged there would be judged too harshly by the count rule.
+  {
+    Lighting stepped = gauss_newton_polish(problem, refined);
+    if (problem.objective(stepped) < problem.objective(refined)) refined = std::move(stepped);
+  }
   // Eq. 6 once more on the refined lights: refinement often leaves a point
   // light with nothing to do (zero, or a few % of the target) once its
   // neighbours moved into place. Drop those, re-fit, polish again.
@@ -314,8 +322,48 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
     const double value = problem.objective(polished);
     if (value < best) fitted = std::move(polished), best = value;
   }
+  // Gauss–Newton to the bottom of the valley the simplex found, re-anchored
+  // after each round (the anchor's correction is exact only where it was taken).
+  for (int round = 0; round < 3 && best > 0.0; ++round) {
+    problem.anchor(fitted);
+    Lighting stepped = gauss_newton_polish(problem, fitted);
+    problem.anchor(stepped);
+    const double value = problem.objective(stepped);
+    if (!(value < best)) break;
+    const bool small_gain = value > 0.9 * best;
+    fitted = std::move(stepped), best = value;
+    if (small_gain) break;
+  }
   dbar = norm > 0 ? std::sqrt(std::max(0.0, best)) / norm : 0.0;
   return fitted;
+}
+
+Lighting Solver::merge_close_pairs(const SampleSet& samples, Lighting lights, double& dbar) {
+  if (m_settings.fixed_count != 0) return lights;
+  auto weight = [](const Light& l) { return double(l.intensity.r + l.intensity.g + l.intensity.b); };
+  for (;;) {
+    size_t a = 0, b = 0;
+    float nearest = std::numeric_limits<float>::max();
+    for (size_t i = 0; i < lights.size(); ++i)
+      for (size_t j = i + 1; j < lights.size(); ++j)
+        if (lights[i].type == LightType::Point && lights[j].type == LightType::Point &&
+            glm::length(lights[i].position - lights[j].position) < nearest)
+          nearest = glm::length(lights[i].position - lights[j].position), a = i, b = j;
+    if (nearest > 0.25f * m_scene->diagonal()) return lights;  // far apart: different lamps, not a split one
+    const double wa = weight(lights[a]), wb = weight(lights[b]);
+    if (!(wa + wb > 0)) return lights;
+    Lighting merged;
+    for (size_t i = 0; i < lights.size(); ++i)
+      if (i != a && i != b) merged.push_back(lights[i]);
+    const Vec3 position = Vec3((wa * DVec3(lights[a].position) + wb * DVec3(lights[b].position)) / (wa + wb));
+    if (!m_rays->scene().light_bounds().contains(position) || m_rays->inside_solid(position)) return lights;
+    merged.insert(merged.begin() + std::ptrdiff_t(std::min(a, merged.size())), Light::point(position, lights[a].intensity + lights[b].intensity));
+    double merged_dbar = 0;
+    merged = polish_with_reference(samples, merged, false, merged_dbar);
+    if (!(merged_dbar <= m_settings.eps_impro * dbar)) return lights;
+    lights = std::move(merged);
+    dbar = merged_dbar;
+  }
 }
 
 Lighting Solver::polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
@@ -412,6 +460,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
   Lighting found = solve_samples(samples, report);
   Stopwatch polish_watch;
   Lighting lights = polish_with_reference(samples, found, false, report.dbar_samples);
+  lights = merge_close_pairs(samples, std::move(lights), report.dbar_samples);
   report.seconds["reference polish"] += polish_watch.seconds();
   lights = polish_residuals(target, std::move(samples), lights, false, report);
   finish_report(target, lights, report);

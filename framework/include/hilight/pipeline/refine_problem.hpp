@@ -31,6 +31,10 @@ public:
 
   /// Unit responses of `lights` (light-major), from the per-light store.
   std::vector<Rgb> responses(std::span<const Light> lights);
+  /// The same, light q corrected as anchored light `anchor_index[q]` (moved
+  /// copies of the anchored lights: finite differences), in one batch.
+  std::vector<Rgb> responses_as(std::span<const Light> lights, std::span<const size_t> anchor_index);
+  const SampleSet& samples() const { return m_model.samples(); }
 
 private:
   const std::vector<Rgb>& phi_of(const Light& light);

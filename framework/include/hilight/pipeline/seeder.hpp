@@ -12,6 +12,9 @@ struct SeedSettings {
   int coarse_cells = 6;         ///< cells along the scene's longest axis at the first level
   int iterations = 2;           ///< levels of spreading (the paper: 2)
   double weak_threshold = 0.05; ///< ε_w of eq. 6
+  int residual_rounds = 3;      ///< rounds of candidates placed where the fit is worst (0: the paper's seeding)
+  double residual_dbar = 0.05;  ///< ...while the seeding's D̄ is above this
+  size_t residual_candidates = 12; ///< places per round (each tried at 4 distances)
 };
 
 struct SeedResult {

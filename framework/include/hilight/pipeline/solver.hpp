@@ -112,6 +112,10 @@ private:
   Lighting refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar,
                            RefineEffort effort = RefineEffort::Full);
   void finish_report(const Target& target, const Lighting& lights, SolveReport& report);
+  /// Eq. 9 once more on the final lights: the nearest two point lights merged
+  /// (eq. 7) and polished, kept while D̄ grows by less than ε_impro (a lamp
+  /// the hierarchy left split in two).
+  Lighting merge_close_pairs(const SampleSet& samples, Lighting lights, double& dbar);
   /// Polishes again with the worst-explained target points added to the samples.
   Lighting polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
                             SolveReport& report);

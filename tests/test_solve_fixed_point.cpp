@@ -1,0 +1,214 @@
+// Issue 18's invariants on real models (Debian's assimp-testmodels), with
+// seeded random lights — ceiling lamps 15–40 cm below the ceiling among them:
+// - the lights that made a target are a fixed point of the solve: fine-tune
+//   from them reports D̄ ≈ 0 and moves nothing, for every renderer, with and
+//   without the bounce and the light cache;
+// - the D̄ a solve reports is the D̄ an independent render-and-compare finds.
+#include "hilight/io/ply.hpp"
+#include "hilight/io/scene_io.hpp"
+#include "hilight/pipeline/solve_renderers.hpp"
+#include "hilight/pipeline/solver.hpp"
+#include "hilight/real_model_scenes.hpp"
+#include "random_lights.hpp"
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+
+using namespace hilight;
+
+namespace {
+
+struct RealCase {
+  std::string name;
+  std::shared_ptr<const Scene> scene;
+  std::shared_ptr<const RayScene> rays;
+  Lighting truth;
+};
+
+RealCase make_case(const std::string& name, Scene scene, uint64_t seed, size_t lamps, size_t free_lights) {
+  RealCase c{name, std::make_shared<const Scene>(std::move(scene)), nullptr, {}};
+  c.rays = std::make_shared<const RayScene>(*c.scene);
+  std::mt19937_64 rng(seed);
+  if (lamps) c.truth = test::random_ceiling_lamps(*c.rays, rng, lamps);
+  if (free_lights) {
+    Lighting more = test::random_free_lights(*c.rays, rng, free_lights);
+    c.truth.insert(c.truth.end(), more.begin(), more.end());
+  }
+  return c;
+}
+
+/// The IFC house: a real two-storey building, two ceiling lamps and a free light.
+RealCase house_case(uint64_t seed) {
+  return make_case("IFC house", load_scene(builders::testmodels_dir() / "IFC/AC14-FZK-Haus.ifc"), seed, 2, 1);
+}
+/// The Wuson and the spider on a floor (open: no ceiling), two free lights.
+RealCase curved_case(uint64_t seed) {
+  return make_case("curved models", finish_scene(builders::curved_models_on_floor(), {}), seed, 0, 2);
+}
+/// A room furnished with real models, two ceiling lamps and a free light.
+RealCase room_case(uint64_t seed) {
+  return make_case("real furnished room", finish_scene(builders::real_furnished_room(), {}), seed, 2, 1);
+}
+
+/// A solve set up as the CLI sets it up, on a target rendered and written as
+/// `hilight render` writes it, read back as `hilight solve` reads it.
+struct SolveRig {
+  std::unique_ptr<Renderer> reference, fast;
+  std::unique_ptr<Sampler> sampler;
+  std::unique_ptr<Optimizer> optimizer;
+  std::unique_ptr<Solver> solver;
+  Target target;
+};
+
+std::unique_ptr<SolveRig> rig(const RealCase& c, const std::string& renderer, int bounces, bool cache, size_t samples = 0) {
+  auto r = std::make_unique<SolveRig>();
+  const auto settings = reference_renderer_settings({"bounces=" + std::to_string(bounces)}, 1);
+  r->reference = test::make_renderer(renderer, c.scene, settings);
+  r->fast = test::make_renderer(renderer, c.scene, fast_renderer_settings(renderer, settings));
+  r->sampler = test::registry().create_sampler("importance", {});
+  r->optimizer = test::registry().create_optimizer("varpro", {});
+  const auto dir = test::output_dir("fixed_point_" + renderer);
+  write_illuminated_ply(dir / "target.ply", *c.scene, r->reference->illuminate(SurfacePoints::from_vertices(*c.scene), c.truth));
+  r->target = read_target(dir / "target.ply", *c.scene, *c.rays);
+  SolveSettings s;
+  s.use_cache = cache;
+  if (samples) s.samples = samples;
+  r->solver = std::make_unique<Solver>(c.scene, c.rays, *r->fast, *r->reference, *r->sampler, *r->optimizer, s);
+  return r;
+}
+
+/// `bound`: the largest D̄ the solve may report at the true lights.
+void check_fixed_point(const RealCase& c, const std::string& renderer, int bounces, bool cache, double bound,
+                       size_t samples = 0) {
+  INFO(c.name << ", " << renderer << ", bounces " << bounces << (cache ? ", light cache" : ", no cache"));
+  auto r = rig(c, renderer, bounces, cache, samples);
+  SolveReport report;
+  const Lighting tuned = r->solver->fine_tune(r->target, c.truth, report);
+  std::cout << "fixed point: " << c.name << ", " << renderer << ", bounces " << bounces << (cache ? ", cache" : ", no cache")
+            << ": reported D̄ " << 100 * report.dbar << "% over " << report.dbar_points << " points\n";
+  CHECK(report.dbar_points == r->target.size());
+  CHECK(report.dbar <= bound);
+  REQUIRE(tuned.size() == c.truth.size());
+  for (size_t j = 0; j < tuned.size(); ++j) {
+    CHECK(glm::length(tuned[j].position - c.truth[j].position) <= 1e-3f * c.scene->diagonal());
+    for (int k = 0; k < 3; ++k) CHECK(tuned[j].intensity[k] == Approx(c.truth[j].intensity[k]).epsilon(0.005));
+  }
+}
+
+void check_fixed_points(const RealCase& c, const std::string& renderer, std::initializer_list<bool> caches = {false, true},
+                        double bounce_bound = 0.001) {
+  for (int bounces : {0, 1})
+    for (bool cache : caches) check_fixed_point(c, renderer, bounces, cache, bounces ? bounce_bound : 0.001);
+}
+
+} // namespace
+
+TEST_CASE("fixed point: the IFC house's random ceiling lamps stay put under fine-tune (embree)", "[solve][fixed-point][real]") {
+  check_fixed_points(house_case(18), "embree");
+}
+
+TEST_CASE("fixed point: random lights on the curved models stay put under fine-tune (embree)", "[solve][fixed-point][real]") {
+  check_fixed_points(curved_case(7), "embree");
+}
+
+TEST_CASE("fixed point: the real furnished room's ceiling lamps stay put under fine-tune (embree)", "[solve][fixed-point][real]") {
+  check_fixed_points(room_case(3), "embree");
+}
+
+TEST_CASE("fixed point: the curved models under ism-vulkan", "[solve][fixed-point][real][ism]") {
+  if (test::skip_without_renderer("ism-vulkan")) return;
+  check_fixed_points(curved_case(7), "ism-vulkan");
+}
+
+// POV-Ray bakes the points of each call in a run of its own (about a
+// second each), so only its direct light is checked here, without the light
+// cache (building it takes hundreds of runs) and with 1000 samples: 0.02–0.2%
+// D̄ at the true lights were measured, from its output's precision, hence
+// the 0.5% bound. Its first bounce (radiosity) depends on the whole point set
+// baked at once: 0.2–0.3% measured at the true lights (not in ctest: 6 min).
+TEST_CASE("fixed point: the curved models under povray, direct light", "[solve][fixed-point][real][povray]") {
+  if (test::skip_without_renderer("povray")) return;
+  check_fixed_point(curved_case(7), "povray", 0, false, 0.005, 1000);
+}
+
+TEST_CASE("a solve's reported D̄ is what an independent render-and-compare finds", "[solve][fixed-point][real][report]") {
+  for (const RealCase& c : {curved_case(11), room_case(12)}) {
+    INFO(c.name);
+    auto r = rig(c, "embree", 1, true);
+    SolveReport report;
+    const Lighting found = r->solver->solve(r->target, report);
+    // Independent: a fresh renderer with the user's settings, every vertex.
+    auto fresh = test::make_renderer("embree", c.scene, reference_renderer_settings({"bounces=1"}, 1));
+    const auto target = fresh->illuminate(SurfacePoints::from_vertices(*c.scene), c.truth);
+    const double independent = test::dbar(fresh->illuminate(SurfacePoints::from_vertices(*c.scene), found), target);
+    std::cout << "reported vs independent: " << c.name << ": " << found.size() << " lights (true " << c.truth.size()
+              << "), reported " << 100 * report.dbar << "%, independent " << 100 * independent << "%\n";
+    CHECK(std::abs(report.dbar - independent) <= 0.001);
+  }
+}
+
+namespace {
+
+struct TrialOutcome {
+  size_t right = 0, trials = 0, good = 0;
+};
+
+/// Full solves with the defaults, each on its own seeded set of 1–4 ceiling
+/// lamps in the real furnished room.
+TrialOutcome ceiling_lamp_trials(uint64_t first_seed, size_t trials) {
+  TrialOutcome out;
+  const auto cache_dir = std::filesystem::path(HILIGHT_TEST_OUTPUT_DIR) / "ceiling_lamp_trials_cache";
+  std::filesystem::create_directories(cache_dir);
+  for (size_t t = 0; t < trials; ++t) {
+    const uint64_t seed = first_seed + t;
+    std::mt19937_64 pick(seed);
+    const size_t lamps = 1 + pick() % 4;
+    RealCase c = make_case("real furnished room", finish_scene(builders::real_furnished_room(), {}), seed, lamps, 0);
+    auto r = rig(c, "embree", 1, true);
+    SolveSettings s;
+    s.cache_dir = cache_dir;
+    r->solver = std::make_unique<Solver>(c.scene, c.rays, *r->fast, *r->reference, *r->sampler, *r->optimizer, s);
+    SolveReport report;
+    const Lighting found = r->solver->solve(r->target, report);
+    const bool right = found.size() == c.truth.size();
+    out.right += right;
+    out.good += right && report.dbar <= 0.015;
+    ++out.trials;
+    std::cout << "ceiling lamps, seed " << seed << ": " << found.size() << " lights (true " << c.truth.size() << "), D̄ "
+              << 100 * report.dbar << "%, samples " << 100 * report.dbar_samples << "%, " << report.seconds["total"] << " s\n";
+    if (std::getenv("HILIGHT_TRIALS")) {
+      std::cout << "  seeds " << report.seed_lights << ", cuts:";
+      for (const auto& k : report.cuts)
+        std::cout << " [" << k.lights << ": " << 100 * k.dbar_initial << (k.refined ? " -> " + std::to_string(100 * k.dbar_refined) : "") << "]";
+      std::cout << "\n";
+    }
+    for (const auto& l : found) {
+      float best = 1e30f;
+      Vec3 nearest(0.f);
+      for (const auto& truth : c.truth)
+        if (glm::length(truth.position - l.position) < best) best = glm::length(truth.position - l.position), nearest = truth.position;
+      const Vec3 d = l.position - nearest;
+      std::cout << "  found - true: (" << d.x << ", " << d.y << ", " << d.z << ")\n";
+    }
+  }
+  std::cout << "ceiling lamps: right count and D̄ <= 1.5% in " << out.good << " of " << out.trials << " trials\n";
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("ceiling lamps in a room of real models: right count and D̄ ≤ 1.5% with the defaults", "[solve][real][ceiling]") {
+  const TrialOutcome o = ceiling_lamp_trials(100, 6);
+  CHECK(o.good >= o.trials * 95 / 100);
+}
+
+TEST_CASE("ceiling lamps in a room of real models, the full sweep (bench)", "[.][sweep]") {
+  const char* env = std::getenv("HILIGHT_TRIALS");  // "first_seed,count" to rerun a few
+  const uint64_t first = env ? std::stoull(env) : 100;
+  const size_t count = env && std::strchr(env, ',') ? std::stoul(std::strchr(env, ',') + 1) : 40;
+  const TrialOutcome o = ceiling_lamp_trials(first, count);
+  CHECK(o.good * 100 >= o.trials * 95);
+}
