@@ -2,6 +2,7 @@
 
 #include "hilight/pipeline/fit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <tbb/parallel_for.h>
 
@@ -78,16 +79,11 @@ SeedResult fit_and_delete(const Lighting& lights, std::vector<Rgb> phi, const Li
   return result;
 }
 
-/// Candidates where the fit is worst: above the samples whose light is most
-/// unexplained, along their normals (a lamp near a surface paints a hot spot
-/// right in front of it), at a few distances; spaced so that one hot spot
-/// does not take every candidate.
-Lighting residual_candidates(const SeedResult& seed, const SampleSet& samples, const RayScene& rays, float cell_size,
+} // namespace
+
+Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& samples, const RayScene& rays, float cell_size,
                              size_t count) {
   const size_t m = samples.size();
-  std::vector<Rgb> intensities;
-  for (const auto& l : seed.lights) intensities.push_back(l.intensity);
-  const std::vector<Rgb> lit = combine(seed.phi, intensities, m);
   std::vector<std::pair<double, size_t>> order;
   for (size_t i = 0; i < m; ++i) {
     const Rgb missing = glm::max(samples.target[i] - lit[i], Rgb(0.f));
@@ -114,7 +110,6 @@ Lighting residual_candidates(const SeedResult& seed, const SampleSet& samples, c
   }
   return out;
 }
-} // namespace
 
 SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lighting& spots, const SeedSettings& settings) {
   const SampleSet& samples = model.samples();
@@ -155,7 +150,9 @@ SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lightin
   // face those samples and solve again, while D̄ improves.
   const size_t n_spots = spots.size();
   for (int round = 0; round < settings.residual_rounds && result.dbar > settings.residual_dbar && cell_size > 0.f; ++round) {
-    Lighting candidates = residual_candidates(result, samples, rays, cell_size, settings.residual_candidates);
+    std::vector<Rgb> intensities;
+    for (const auto& l : result.lights) intensities.push_back(l.intensity);
+    Lighting candidates = residual_candidates(combine(result.phi, intensities, m), samples, rays, cell_size, settings.residual_candidates);
     if (candidates.empty()) break;
     result.lights_tried += candidates.size();
     Lighting lights(result.lights.begin(), result.lights.end() - std::ptrdiff_t(n_spots));

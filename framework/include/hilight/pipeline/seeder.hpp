@@ -25,6 +25,13 @@ struct SeedResult {
   size_t lights_tried = 0;  ///< unit lights spread over all levels
 };
 
+/// Unit point lights where the fit `lit` (at the samples) leaves the most
+/// light unexplained: in front of the worst samples, along their normals, at
+/// 0.1–1 `cell_size` (a lamp near a surface paints a hot spot right in front
+/// of it); one place per `cell_size`/2, at most `count` places.
+Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& samples, const RayScene& rays, float cell_size,
+                             size_t count);
+
 /// `spots`: spotlights the target asked for (fixed positions/directions);
 /// they join every NNLS and are never deleted.
 SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lighting& spots, const SeedSettings& settings);
