@@ -201,8 +201,10 @@ TrialOutcome ceiling_lamp_trials(uint64_t first_seed, size_t trials) {
 } // namespace
 
 TEST_CASE("ceiling lamps in a room of real models: right count and D̄ ≤ 1.5% with the defaults", "[solve][real][ceiling]") {
+  // Six trials in CI (all must pass: 95% of 6 rounds up); the 40-trial sweep
+  // is the hidden [sweep] case below (docs/benchmarks.md).
   const TrialOutcome o = ceiling_lamp_trials(100, 6);
-  CHECK(o.good >= o.trials * 95 / 100);
+  CHECK(o.good * 100 >= o.trials * 95);
 }
 
 TEST_CASE("ceiling lamps in a room of real models, the full sweep (bench)", "[.][sweep]") {
