@@ -16,6 +16,10 @@ namespace hilight {
 
 namespace {
 
+/// D̄ below which a light more is noise-fitting, not a missing lamp: the same
+/// order as ε_w (a light worth keeping explains 5% of ‖Ψ‖), and invisible.
+constexpr double kVisibleDbar = 5e-3;
+
 class Stopwatch {
 public:
   double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count(); }
@@ -150,13 +154,16 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   } else {
     for (size_t k = 1; k <= n_points && chosen.size() < m_settings.n_cut; ++k)
       if (report.cuts[k - 1].dbar_initial < m_settings.eps_opt) chosen.push_back(k);
-    if (chosen.empty()) {  // nothing is good yet: refine the best few
-      std::vector<size_t> order(n_points);
-      for (size_t k = 0; k < n_points; ++k) order[k] = k + 1;
-      std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return report.cuts[a - 1].dbar_initial < report.cuts[b - 1].dbar_initial; });
-      order.resize(std::min(order.size(), m_settings.n_cut));
-      std::sort(order.begin(), order.end());
-      chosen = order;
+    if (chosen.empty()) {
+      // Nothing is good before refinement (seeds far from lamps near
+      // surfaces): start at the knee, the smallest cut within ε_impro of the
+      // best one — beyond it more lights explain little more (eq. 9's idea) —
+      // and refine N_cut cuts from there.
+      double least = std::numeric_limits<double>::max();
+      for (const auto& c : report.cuts) least = std::min(least, c.dbar_initial);
+      size_t knee = 1;
+      while (knee < n_points && report.cuts[knee - 1].dbar_initial > m_settings.eps_impro * least) ++knee;
+      for (size_t k = knee; k <= n_points && chosen.size() < m_settings.n_cut; ++k) chosen.push_back(k);
     }
   }
 
@@ -203,6 +210,9 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   }
   if (m_settings.fixed_count == 0 && !walked_down)
     for (size_t q = 1; q < chosen.size() && chosen[q] == count + 1; ++q) {
+      // Below kVisibleDbar nothing is left that a light more should explain
+      // (eq. 9's ratio of two tiny D̄s is noise).
+      if (dbar_of(count) < kVisibleDbar) break;
       refine_cut(count + 1);
       if (!(dbar_of(count + 1) > 0) || dbar_of(count) / dbar_of(count + 1) < m_settings.eps_impro) break;
       ++count;
@@ -321,10 +331,9 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
   // Gauss–Newton (not a simplex: it converges in a few steps where the
   // lights are already near), re-anchored after each round — the anchor's
   // correction is exact only where it was taken, so each round's value is
-  // the reference's own.
+  // the reference's own, and the next round starts anchored at `fitted`.
   // Below 0.01% D̄ at the samples nothing is left that anyone could see.
   for (int round = 0; round < 3 && norm > 0 && std::sqrt(best) > 1e-4 * norm; ++round) {
-    if (round > 0) problem.anchor(fitted);
     Lighting stepped = gauss_newton_polish(problem, fitted);
     problem.anchor(stepped);
     const double value = problem.objective(stepped);
@@ -345,30 +354,34 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
   ResponseModel model(m_renderer, samples, view ? &*view : nullptr), exact(m_renderer, samples, nullptr);
   const Vec3 extent = m_scene->light_bounds().extent();
   const float cell = std::max({extent.x, extent.y, extent.z}) / float(2 * std::max(1, m_settings.seeding.coarse_cells));
-  // Below 0.5% D̄ a light more is noise-fitting, not a missing lamp.
-  for (int round = 0; round < 3 && dbar > 5e-3; ++round) {
-    std::vector<Rgb> phi = model.responses(lights), intensities;
-    for (const auto& l : lights) intensities.push_back(l.intensity);
-    const Lighting candidates = residual_candidates(combine(phi, intensities, m), samples, *m_rays, cell, 8);
-    if (candidates.empty()) return lights;
-    // The candidate that explains most of what is missing, by NNLS with the rest.
+  // `base` plus the residual candidate that explains most of what `base`
+  // leaves unexplained (by NNLS with the rest), refined and polished.
+  auto with_best_candidate = [&](const Lighting& base, double& result_dbar) -> std::optional<Lighting> {
+    std::vector<Rgb> phi = model.responses(base);
+    const std::vector<Rgb> l0 = fit_intensities(phi, base.size(), samples);
+    const Lighting candidates = residual_candidates(combine(phi, l0, m), samples, *m_rays, cell, 8);
+    if (candidates.empty()) return std::nullopt;
     const std::vector<Rgb> candidate_phi = model.responses(candidates);
     size_t best = 0;
     double best_dbar = std::numeric_limits<double>::max();
     for (size_t c = 0; c < candidates.size(); ++c) {
       std::vector<Rgb> with = phi;
       with.insert(with.end(), candidate_phi.begin() + std::ptrdiff_t(c * m), candidate_phi.begin() + std::ptrdiff_t((c + 1) * m));
-      const std::vector<Rgb> l = fit_intensities(with, lights.size() + 1, samples);
+      const std::vector<Rgb> l = fit_intensities(with, base.size() + 1, samples);
       const double d = normalized_difference(combine(with, l, m), samples);
       if (d < best_dbar) best_dbar = d, best = c;
     }
-    Lighting more = lights;
+    Lighting more = base;
     more.push_back(candidates[best]);
+    more = refine_anchored(model, exact, more, result_dbar);
+    return polish_with_reference(samples, more, false, result_dbar);
+  };
+  for (int round = 0; round < 3 && dbar > kVisibleDbar; ++round) {
+    // One light more, kept by eq. 9.
     double more_dbar = 0;
-    more = refine_anchored(model, exact, more, more_dbar);
-    more = polish_with_reference(samples, more, false, more_dbar);
-    if (!(more.size() > lights.size() && dbar >= m_settings.eps_impro * more_dbar)) return lights;
-    lights = std::move(more);
+    auto more = with_best_candidate(lights, more_dbar);
+    if (!(more && more->size() > lights.size() && dbar >= m_settings.eps_impro * more_dbar)) return lights;
+    lights = std::move(*more);
     dbar = more_dbar;
   }
   return lights;
