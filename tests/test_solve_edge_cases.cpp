@@ -132,3 +132,22 @@ TEST_CASE("a solve where no seeding cell is free still returns the requested spo
   REQUIRE(found.size() >= 1);
   CHECK(found[0].type == LightType::Spot);
 }
+
+TEST_CASE("a poor fit is said plainly, and --max-dbar makes it exit 3 with the lights written", "[solve][edge][max-dbar]") {
+  auto dir = test::output_dir("edge_max_dbar");
+  auto target = render_target(dir);
+  // Four lights made the target; one cannot explain it.
+  auto r = test::run_hilight({"solve", kRoom, "--target", target.string(), "--lights", "1", "--max-dbar", "0.015", "-o",
+                              (dir / "one.json").string(), "--report", (dir / "report.json").string(), "--cache-dir", cache_dir()});
+  CHECK(r.exit_code == 3);
+  CHECK_THAT(r.err, Catch::Contains("warning: poor fit"));
+  CHECK_THAT(r.err, Catch::Contains("above --max-dbar"));
+  CHECK(read_lights_json(dir / "one.json").size() == 1);
+  std::ifstream report(dir / "report.json");
+  CHECK(nlohmann::json::parse(report)["poor_fit"] == true);
+  // The full solve meets the same bound: exit 0, no warning.
+  auto good = test::run_hilight({"solve", kRoom, "--target", target.string(), "--max-dbar", "0.015", "-o",
+                                 (dir / "all.json").string(), "--cache-dir", cache_dir()});
+  CHECK(good.exit_code == 0);
+  CHECK_THAT(good.err, !Catch::Contains("warning"));
+}

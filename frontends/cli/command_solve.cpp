@@ -18,6 +18,9 @@ namespace hilight::cli {
 
 namespace {
 
+/// D̄ above which the result is called a poor fit (the paper's solves end below 1.5%).
+constexpr double kPoorFit = 0.05;
+
 nlohmann::json report_json(const SolveReport& r, const std::string& renderer, const std::string& optimizer, const std::string& sampler,
                            const std::string& mode) {
   nlohmann::json cuts = nlohmann::json::array();
@@ -30,6 +33,7 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
     cuts.push_back(j);
   }
   return {{"mode", mode},
+          {"poor_fit", r.dbar > kPoorFit},
           {"lights", r.chosen},
           {"dbar", r.dbar},
           {"dbar_points", r.dbar_points},
@@ -60,6 +64,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   std::string sampler_name = "importance";
   float max_edge = 0.f;
   bool no_cache = false, quiet = false;
+  double max_dbar = -1;
   unsigned long long seed = 1;
   SolveSettings s;
   RendererOptions ropts;
@@ -92,6 +97,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--cache-cells", s.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")
       ->check(CLI::Range(1, 24))
       ->capture_default_str();
+  app.add_option("--max-dbar", max_dbar, "fail (exit 3, lights still written) when D̄ is above this, e.g. 0.015")
+      ->check(CLI::Range(0.0, 1e9));
   app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
   app.add_flag("-q,--quiet", quiet, "no progress or summary on stderr");
@@ -151,6 +158,18 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     std::fprintf(stderr, "hilight: %zu light%s, D̄ %.2f%% over %s (%zu samples), %.2f s -> %s\n", report.chosen,
                  report.chosen == 1 ? "" : "s", 100.0 * report.dbar, over.c_str(), report.samples, report.seconds["total"],
                  output.c_str());
+  }
+  // No silent failure: a poor fit says so, whatever --quiet says, and
+  // --max-dbar makes it an error (after the files are written).
+  if (report.dbar > kPoorFit)
+    std::fprintf(stderr,
+                 "hilight: warning: poor fit, D̄ %.1f%% with %zu light%s: parts of the target may be unreachable by any "
+                 "light, or need a spotlight (--spot-hints) or another light count (--lights N)\n",
+                 100.0 * report.dbar, report.chosen, report.chosen == 1 ? "" : "s");
+  if (max_dbar >= 0 && report.dbar > max_dbar) {
+    std::fprintf(stderr, "hilight: %s: D̄ %.2f%% is above --max-dbar %.2f%% (lights written to %s)\n", target_path.c_str(),
+                 100.0 * report.dbar, 100.0 * max_dbar, output.c_str());
+    return 3;
   }
   return 0;
 }

@@ -1,6 +1,7 @@
 #include "hilight/pipeline/solver.hpp"
 
 #include "hilight/error.hpp"
+#include "hilight/pipeline/cuts.hpp"
 #include "hilight/pipeline/fit.hpp"
 #include "hilight/pipeline/gauss_newton.hpp"
 #include "hilight/pipeline/refine_problem.hpp"
@@ -147,25 +148,11 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
     starts[k - 1] = std::move(lights);
   }
 
-  // Which cuts to refine: the fixed one, or the first N_cut below ε_opt.
-  std::vector<size_t> chosen;
-  if (m_settings.fixed_count > 0) {
-    chosen.push_back(m_settings.fixed_count);
-  } else {
-    for (size_t k = 1; k <= n_points && chosen.size() < m_settings.n_cut; ++k)
-      if (report.cuts[k - 1].dbar_initial < m_settings.eps_opt) chosen.push_back(k);
-    if (chosen.empty()) {
-      // Nothing is good before refinement (seeds far from lamps near
-      // surfaces): start at the knee, the smallest cut within ε_impro of the
-      // best one — beyond it more lights explain little more (eq. 9's idea) —
-      // and refine N_cut cuts from there.
-      double least = std::numeric_limits<double>::max();
-      for (const auto& c : report.cuts) least = std::min(least, c.dbar_initial);
-      size_t knee = 1;
-      while (knee < n_points && report.cuts[knee - 1].dbar_initial > m_settings.eps_impro * least) ++knee;
-      for (size_t k = knee; k <= n_points && chosen.size() < m_settings.n_cut; ++k) chosen.push_back(k);
-    }
-  }
+  // Which cuts to refine and how many lights (pipeline/cuts.cpp).
+  const CountRule rule{m_settings.fixed_count, m_settings.n_cut, m_settings.eps_opt, m_settings.eps_impro, kVisibleDbar};
+  std::vector<double> initial;
+  for (const auto& c : report.cuts) initial.push_back(c.dbar_initial);
+  const std::vector<size_t> chosen = choose_cuts(initial, rule);
 
   Stopwatch refine_watch;
   ResponseModel exact(m_renderer, samples, nullptr);
@@ -177,46 +164,22 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
     rec.refined = true;
   };
   auto dbar_of = [&](size_t k) { return report.cuts[k - 1].refined ? report.cuts[k - 1].dbar_refined : report.cuts[k - 1].dbar_initial; };
-  // Count (eq. 9): from the first chosen cut, take the next while it improves
-  // D̄ by at least ε_impro. Cuts are refined lazily, only as the walk needs
-  // them: the same choice upward as refining all N_cut first, at less cost.
-  size_t count = chosen.front();
   {
     // The walk always needs a neighbour of the first cut: refine both at
     // once (each refinement has serial stretches; two fill both cores).
-    const bool automatic = m_settings.fixed_count == 0;
-    const bool down = automatic && count > 1 && report.cuts[count - 2].dbar_initial < m_settings.eps_impro * m_settings.eps_opt;
-    const bool up = automatic && chosen.size() > 1 && chosen[1] == count + 1;
+    const size_t first = chosen.front();
+    const FirstNeighbour neighbour = first_neighbour(initial, chosen, rule);
     tbb::task_group group;
-    group.run([&] { refine_cut(count); });
-    if (down) group.run([&] { refine_cut(count - 1); });
-    else if (up) group.run([&] { refine_cut(count + 1); });
+    group.run([&] { refine_cut(first); });
+    if (neighbour == FirstNeighbour::Below) group.run([&] { refine_cut(first - 1); });
+    if (neighbour == FirstNeighbour::Above) group.run([&] { refine_cut(first + 1); });
     group.wait();
   }
-  bool walked_down = false;
-  if (m_settings.fixed_count == 0) {
-    // Beyond the paper: a cut's D̄ before refinement is pessimistic (its
-    // lights sit where merging left them), so the cuts just below the first
-    // one under ε_opt may still be enough once refined. Walk down while the
-    // smaller cut is within ε_impro of the larger.
-    // A cut whose unrefined D̄ is ε_impro·ε_opt or more is not tried: it
-    // would need refinement to gain more than ε_impro to get within reach.
-    while (count > 1 && report.cuts[count - 2].dbar_initial < m_settings.eps_impro * m_settings.eps_opt) {
-      refine_cut(count - 1);
-      if (!(dbar_of(count) > 0) || dbar_of(count - 1) / dbar_of(count) >= m_settings.eps_impro) break;
-      --count;
-      walked_down = true;
-    }
-  }
-  if (m_settings.fixed_count == 0 && !walked_down)
-    for (size_t q = 1; q < chosen.size() && chosen[q] == count + 1; ++q) {
-      // Below kVisibleDbar nothing is left that a light more should explain
-      // (eq. 9's ratio of two tiny D̄s is noise).
-      if (dbar_of(count) < kVisibleDbar) break;
-      refine_cut(count + 1);
-      if (!(dbar_of(count + 1) > 0) || dbar_of(count) / dbar_of(count + 1) < m_settings.eps_impro) break;
-      ++count;
-    }
+  // Cuts are refined lazily, only as the walk needs them.
+  const size_t count = walk_count(initial, chosen, rule, [&](size_t k) {
+    refine_cut(k);
+    return report.cuts[k - 1].dbar_refined;
+  });
   report.seconds["refinement"] += refine_watch.seconds();
   for (size_t k = 1; k < n_points; ++k) {
     double next = dbar_of(k + 1);
