@@ -15,7 +15,8 @@ public:
             {"solve", "find the lights that produce a target illumination"},
             {"export", "write a POV-Ray scene that renders what hilight shows"},
             {"plugins", "list plugin modules, their versions and availability"},
-            {"bench", "measure renderer throughput (machine-readable JSON lines)"}};
+            {"bench", "measure renderer throughput (machine-readable JSON lines)"},
+            {"cache", "list or clear the light caches kept between solves"}};
   }
   int run(const std::string& command, const std::vector<std::string>& args, Registry& registry) override {
     if (command == "info") return run_info(args);
@@ -24,6 +25,7 @@ public:
     if (command == "export") return run_export(args, registry);
     if (command == "plugins") return run_plugins(args, registry);
     if (command == "bench") return run_bench(args, registry);
+    if (command == "cache") return run_cache(args);
     return 2;
   }
 };
@@ -35,5 +37,5 @@ void register_cli(PluginRegistrar& registrar) {
 } // namespace
 } // namespace hilight::cli
 
-HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, "0.1.0", "command-line interface: info, render, solve, export, plugins, bench",
+HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, "0.1.0", "command-line interface: info, render, solve, export, plugins, bench, cache",
                hilight::cli::register_cli)

@@ -4,6 +4,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/lights_json.hpp"
+#include "hilight/light_cache_store.hpp"
 #include "hilight/pipeline/solve_renderers.hpp"
 #include "hilight/pipeline/solver.hpp"
 #include "hilight/threads.hpp"
@@ -135,6 +136,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   s.seed = seed;
   s.use_cache = !no_cache;
   s.cache_dir = no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
+  s.cache_cap_bytes = default_cache_cap_bytes();
 
   Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, s, [&](const std::string& stage) {
     if (progress) std::fprintf(stderr, "hilight: %s...\n", stage.c_str());

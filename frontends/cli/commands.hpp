@@ -7,6 +7,7 @@
 
 namespace hilight::cli {
 int run_info(const std::vector<std::string>& args);
+int run_cache(const std::vector<std::string>& args);
 int run_render(const std::vector<std::string>& args, Registry& registry);
 int run_plugins(const std::vector<std::string>& args, Registry& registry);
 int run_solve(const std::vector<std::string>& args, Registry& registry);

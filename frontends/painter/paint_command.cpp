@@ -5,6 +5,7 @@
 #include "cli_arguments.hpp"
 
 #include "hilight/error.hpp"
+#include "hilight/light_cache_store.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/light_cache.hpp"
@@ -100,6 +101,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   if (bounce_samples > 0) o.job.renderer_settings.push_back("bounce_samples=" + std::to_string(bounce_samples));
   o.job.solve.use_cache = !no_cache;
   o.job.solve.cache_dir = no_cache ? std::filesystem::path() : cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir);
+  o.job.solve.cache_cap_bytes = default_cache_cap_bytes();
   if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty() && window_screenshot.empty())
     throw InputError("paint: --exit without --script, --screenshot or --bench would do nothing");
   set_thread_limit(threads);

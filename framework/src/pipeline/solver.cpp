@@ -1,6 +1,7 @@
 #include "hilight/pipeline/solver.hpp"
 
 #include "hilight/error.hpp"
+#include "hilight/light_cache_store.hpp"
 #include "hilight/pipeline/cuts.hpp"
 #include "hilight/pipeline/fit.hpp"
 #include "hilight/pipeline/gauss_newton.hpp"
@@ -81,6 +82,7 @@ void Solver::ensure_cache(SolveReport& report) {
   }
   if (m_cache) {
     report.cache_state = "loaded";
+    touch_cache_file(file);  // recently used: evicted last
   } else {
     if (m_progress) m_progress("building the light cache");
     m_cache = LightCache::build(*m_scene, *m_rays, m_renderer, m_settings.cache);
@@ -88,6 +90,7 @@ void Solver::ensure_cache(SolveReport& report) {
     if (!file.empty()) {
       try {
         m_cache->save(file);
+        evict_cache(m_settings.cache_dir, m_settings.cache_cap_bytes, file);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "hilight: warning: light cache not saved to %s: %s\n", file.c_str(), e.what());
       }

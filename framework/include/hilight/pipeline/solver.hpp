@@ -26,6 +26,7 @@ struct SolveSettings {
   LightCacheSettings cache;
   bool use_cache = true;             ///< false: every φ from the renderer
   std::filesystem::path cache_dir;   ///< empty: keep the cache in memory only
+  uint64_t cache_cap_bytes = 1024ull << 20;  ///< the folder's size cap (least recently used files go first)
   size_t n_cut = 4;                  ///< N_cut: cuts refined
   double eps_opt = 0.15;             ///< ε_opt: only cuts with D̄ below are refined
   double eps_impro = 1.6;            ///< ε_impro of eq. 9
