@@ -14,6 +14,7 @@
 
 #include <catch2/catch.hpp>
 #include <cstdlib>
+#include <functional>
 #include <cstring>
 #include <iostream>
 
@@ -157,19 +158,23 @@ struct TrialOutcome {
 };
 
 /// Full solves with the defaults, each on its own seeded set of 1–4 ceiling
-/// lamps in the real furnished room.
-TrialOutcome ceiling_lamp_trials(uint64_t first_seed, size_t trials) {
+/// lamps in the real furnished room (or in `scene_of()`).
+TrialOutcome ceiling_lamp_trials(uint64_t first_seed, size_t trials,
+                                 const std::function<Scene()>& scene_of = [] { return finish_scene(builders::real_furnished_room(), {}); },
+                                 const std::string& name = "real furnished room") {
   TrialOutcome out;
   const auto cache_dir = std::filesystem::path(HILIGHT_TEST_OUTPUT_DIR) / "ceiling_lamp_trials_cache";
+  const std::string label = name == "real furnished room" ? "ceiling lamps" : "ceiling lamps (" + name + ")";
   std::filesystem::create_directories(cache_dir);
   for (size_t t = 0; t < trials; ++t) {
     const uint64_t seed = first_seed + t;
     std::mt19937_64 pick(seed);
     const size_t lamps = 1 + pick() % 4;
-    RealCase c = make_case("real furnished room", finish_scene(builders::real_furnished_room(), {}), seed, lamps, 0);
+    RealCase c = make_case(name, scene_of(), seed, lamps, 0);
     auto r = rig(c, "embree", 1, true);
     SolveSettings s;
     s.cache_dir = cache_dir;
+    if (const char* n = std::getenv("HILIGHT_SAMPLES")) s.samples = std::stoul(n);
     r->solver = std::make_unique<Solver>(c.scene, c.rays, *r->fast, *r->reference, *r->sampler, *r->optimizer, s);
     SolveReport report;
     const Lighting found = r->solver->solve(r->target, report);
@@ -177,7 +182,7 @@ TrialOutcome ceiling_lamp_trials(uint64_t first_seed, size_t trials) {
     out.right += right;
     out.good += right && report.dbar <= 0.015;
     ++out.trials;
-    std::cout << "ceiling lamps, seed " << seed << ": " << found.size() << " lights (true " << c.truth.size() << "), D̄ "
+    std::cout << label << ", seed " << seed << ": " << found.size() << " lights (true " << c.truth.size() << "), D̄ "
               << 100 * report.dbar << "%, samples " << 100 * report.dbar_samples << "%, " << report.seconds["total"] << " s\n";
     if (std::getenv("HILIGHT_TRIALS")) {
       std::cout << "  seeds " << report.seed_lights << ", cuts:";
@@ -194,7 +199,7 @@ TrialOutcome ceiling_lamp_trials(uint64_t first_seed, size_t trials) {
       std::cout << "  found - true: (" << d.x << ", " << d.y << ", " << d.z << ")\n";
     }
   }
-  std::cout << "ceiling lamps: right count and D̄ <= 1.5% in " << out.good << " of " << out.trials << " trials\n";
+  std::cout << label << ": right count and D̄ <= 1.5% in " << out.good << " of " << out.trials << " trials\n";
   return out;
 }
 
@@ -212,5 +217,14 @@ TEST_CASE("ceiling lamps in a room of real models, the full sweep (bench)", "[.]
   const uint64_t first = env ? std::stoull(env) : 100;
   const size_t count = env && std::strchr(env, ',') ? std::stoul(std::strchr(env, ',') + 1) : 40;
   const TrialOutcome o = ceiling_lamp_trials(first, count);
+  CHECK(o.good * 100 >= o.trials * 95);
+}
+
+TEST_CASE("ceiling lamps in the IFC house, the full sweep (bench, issue 10)", "[.][house-sweep]") {
+  const char* env = std::getenv("HILIGHT_TRIALS");
+  const uint64_t first = env ? std::stoull(env) : 200;
+  const size_t count = env && std::strchr(env, ',') ? std::stoul(std::strchr(env, ',') + 1) : 20;
+  const TrialOutcome o = ceiling_lamp_trials(
+      first, count, [] { return load_scene(builders::testmodels_dir() / "IFC/AC14-FZK-Haus.ifc"); }, "IFC house");
   CHECK(o.good * 100 >= o.trials * 95);
 }

@@ -88,7 +88,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       ->capture_default_str();
   app.add_flag("--no-residual-samples", [&](int64_t) { s.residual_samples = false; },
                "no second polish with the worst-explained target points added as samples");
-  app.add_option("--samples", s.samples, "surface samples used by the solve")->check(CLI::Range(10, 10000000))->capture_default_str();
+  app.add_option("--samples", s.samples, "surface samples used by the solve (default: target points / 14, within 3000-10000)")
+      ->check(CLI::Range(10, 10000000));
   app.add_option("--n-cut", s.n_cut, "N_cut: cuts refined")->check(CLI::Range(1, 1000))->capture_default_str();
   app.add_option("--eps-opt", s.eps_opt, "ε_opt: refine only cuts with D̄ below")->check(CLI::Range(0.0, 10.0))->capture_default_str();
   app.add_option("--eps-impro", s.eps_impro, "ε_impro: improvement ratio that justifies one more light")->check(CLI::Range(1.0, 1000.0))->capture_default_str();

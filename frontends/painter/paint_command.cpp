@@ -60,7 +60,8 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--optimizer", o.job.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
   app.add_option("--opt", o.job.optimizer_settings, "optimizer setting key=value (repeatable)");
   app.add_option("--sampler", o.job.sampler, "surface sampling plugin")->capture_default_str();
-  app.add_option("--samples", o.job.solve.samples, "surface samples used by the solve")->check(CLI::Range(10, 10000000))->capture_default_str();
+  app.add_option("--samples", o.job.solve.samples, "surface samples used by the solve (default: target points / 14, within 3000-10000)")
+      ->check(CLI::Range(10, 10000000));
   // D̄ is only reported after a fine-tune; on fewer points it costs less of the stroke's latency.
   o.job.solve.evaluation_points = 256;
   app.add_option("--evaluation-points", o.job.solve.evaluation_points, "target points D-bar is reported on (0: all)")

@@ -51,6 +51,8 @@ Lighting lights_of_cut(const LightHierarchy& h, size_t k, const Lighting& spots,
 
 } // namespace
 
+size_t sample_count_for(size_t target_points) { return std::clamp<size_t>((target_points + 7) / 14, 3000, 10000); }
+
 Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
                Renderer& reference, Sampler& sampler, Optimizer& optimizer, SolveSettings settings, ProgressFn progress)
     : m_scene(std::move(scene)), m_rays(std::move(rays)), m_renderer(renderer), m_reference(reference), m_sampler(sampler),
@@ -460,7 +462,8 @@ void Solver::require_admissible(const Lighting& lights, const std::string& what)
 SampleSet Solver::sample(const Target& target, SolveReport& report) {
   if (m_progress) m_progress("sampling");
   Stopwatch watch;
-  SampleSet samples = m_sampler.draw(target, {m_settings.samples, neighbourhood_radius(), m_settings.seed});
+  const size_t count = m_settings.samples ? m_settings.samples : sample_count_for(target.size());
+  SampleSet samples = m_sampler.draw(target, {count, neighbourhood_radius(), m_settings.seed});
   // Samples that miss every lit point cannot constrain anything (a tiny lit
   // patch in a huge target, too few samples): take every point instead.
   if (!(samples.target_norm() > 0.0)) samples = all_samples(target);
