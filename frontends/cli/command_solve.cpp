@@ -61,7 +61,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Find the lights that produce a target illumination", "solve");
   std::string scene_path, target_path, output, report_path, optimizer_name = "varpro", initial_path, mode = "solve",
                                                                       hints_path, cache_dir;
-  std::vector<std::string> optimizer_settings;
+  std::vector<std::string> optimizer_settings, place_rules;
   std::string sampler_name = "importance";
   float max_edge = 0.f;
   bool no_cache = false, quiet = false;
@@ -99,6 +99,9 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--cache-cells", s.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")
       ->check(CLI::Range(1, 24))
       ->capture_default_str();
+  app.add_option("--place", place_rules,
+                 "where lights may stand (repeatable): ceiling[:OFFSET] (mounted OFFSET below the ceiling, default 0.2), "
+                 "height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1 (inside one of the boxes), exclude:X0,Y0,Z0,X1,Y1,Z1");
   app.add_option("--max-dbar", max_dbar, "fail (exit 3, lights still written) when D̄ is above this, e.g. 0.015")
       ->check(CLI::Range(0.0, 1e9));
   app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
@@ -107,6 +110,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   ropts.add_to(app);
   if (auto code = parse_arguments(app, args)) return *code;
 
+  for (const auto& rule : place_rules) s.placement.add(rule);
   if (mode != "solve" && initial_path.empty()) throw InputError("--mode " + mode + " needs --initial LIGHTS.json");
   if (mode == "solve" && !initial_path.empty()) throw InputError("--initial needs --mode fine-tune or add");
   check_writable(output);

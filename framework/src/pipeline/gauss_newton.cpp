@@ -50,6 +50,7 @@ Lighting gauss_newton_polish(SampleRefineProblem& problem, const Lighting& start
       for (int k = 0; k < 3; ++k) {
         Light l = current[movable[q]];
         l.position[k] += float(h);
+        if (auto placed = problem.space().place(l.position)) l.position = *placed;  // along the mount, if there is one
         moved.push_back(l);
         anchor.push_back(movable[q]);
       }
@@ -79,10 +80,9 @@ Lighting gauss_newton_polish(SampleRefineProblem& problem, const Lighting& start
       const Eigen::VectorXd delta = damped.ldlt().solve(-g);
       Lighting trial = current;
       bool admissible = delta.allFinite();
-      for (size_t q = 0; q < movable.size() && admissible; ++q) {
+      for (size_t q = 0; q < movable.size(); ++q)
         for (int k = 0; k < 3; ++k) trial[movable[q]].position[k] += float(h * delta[Eigen::Index(3 * q + size_t(k))]);
-        admissible = problem.admissible(trial[movable[q]].position);
-      }
+      admissible = admissible && problem.place(trial);
       for (size_t j = 0; j < n && admissible; ++j)
         for (int c = 0; c < 3; ++c)
           trial[j].intensity[c] = float(std::max(0.0, double(trial[j].intensity[c]) + delta[Eigen::Index(np + 3 * j + size_t(c))]));

@@ -69,9 +69,18 @@ void SampleRefineProblem::anchor(const Lighting& lights) {
   }
 }
 
-double SampleRefineProblem::objective(std::span<const Light> lights) {
-  for (const auto& l : lights)
-    if (!admissible(l.position)) return 1e300;
+bool SampleRefineProblem::place(std::vector<Light>& lights) const {
+  for (auto& l : lights) {
+    const auto p = m_space.place(l.position);
+    if (!p || !m_space.admissible(*p)) return false;
+    l.position = *p;
+  }
+  return true;
+}
+
+double SampleRefineProblem::objective(std::span<const Light> given) {
+  std::vector<Light> lights(given.begin(), given.end());
+  if (!place(lights)) return 1e300;
   const SampleSet& s = m_model.samples();
   std::vector<Rgb> intensities;
   for (const auto& l : lights) intensities.push_back(l.intensity);
@@ -80,8 +89,7 @@ double SampleRefineProblem::objective(std::span<const Light> lights) {
 }
 
 double SampleRefineProblem::objective_with_best_intensities(std::vector<Light>& lights) {
-  for (const auto& l : lights)
-    if (!admissible(l.position)) return 1e300;
+  if (!place(lights)) return 1e300;
   const SampleSet& s = m_model.samples();
   std::vector<Rgb> phi = responses(lights);
   std::vector<Rgb> l = fit_intensities(phi, lights.size(), s);
@@ -91,7 +99,8 @@ double SampleRefineProblem::objective_with_best_intensities(std::vector<Light>& 
 }
 
 bool SampleRefineProblem::admissible(const Vec3& p) const {
-  return is_finite(p) && m_light_bounds.contains(p) && !m_rays.inside_solid(p);
+  const auto placed = m_space.place(p);
+  return placed && m_space.admissible(*placed);
 }
 
 } // namespace hilight

@@ -29,22 +29,29 @@ std::vector<Cell> coarse_cells(const Bounds& b, int along_longest) {
   return cells;
 }
 
-/// Cells whose centre is a valid place for a light: in the bounds, out of
-/// solid geometry, not touching a surface.
-std::vector<Cell> free_cells(const std::vector<Cell>& cells, const RayScene& rays) {
-  const Bounds b = rays.scene().light_bounds();
+/// Cells whose centre is a valid place for a light (LightSpace: free, the
+/// designer's rules; on the ceiling mount if that is the rule), not touching
+/// a surface; cells whose places coincide are kept once.
+std::vector<Cell> free_cells(const std::vector<Cell>& cells, const LightSpace& space) {
+  const RayScene& rays = space.rays();
   std::vector<char> ok(cells.size());
+  std::vector<Vec3> placed(cells.size());
   const float clearance = 1e-3f * rays.scene().diagonal();
   tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-    const Vec3& p = cells[i].centre;
-    ok[i] = b.contains(p) && !rays.inside_solid(p) && !rays.closest_point(p, std::max(clearance, 0.05f * cells[i].size)).valid();
+    const auto p = space.place(cells[i].centre);
+    ok[i] = p && space.admissible(*p) &&
+            !rays.closest_point(*p, space.clearance(std::max(clearance, 0.05f * cells[i].size))).valid();
+    if (p) placed[i] = *p;
   });
   std::vector<Cell> out;
-  for (size_t i = 0; i < cells.size(); ++i)
-    if (ok[i]) out.push_back(cells[i]);
+  for (size_t i = 0; i < cells.size(); ++i) {
+    if (!ok[i]) continue;
+    bool duplicate = false;
+    for (const auto& c : out) duplicate |= glm::length(c.centre - placed[i]) < clearance;
+    if (!duplicate) out.push_back({placed[i], cells[i].size});
+  }
   return out;
 }
-
 
 /// NNLS over point lights `lights` (responses `phi`) plus the spots, eq. 6
 /// deletion, re-solve: the surviving point lights, then the spots. `kept`
@@ -81,8 +88,9 @@ SeedResult fit_and_delete(const Lighting& lights, std::vector<Rgb> phi, const Li
 
 } // namespace
 
-Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& samples, const RayScene& rays, float cell_size,
+Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& samples, const LightSpace& space, float cell_size,
                              size_t count) {
+  const RayScene& rays = space.rays();
   const size_t m = samples.size();
   std::vector<std::pair<double, size_t>> order;
   for (size_t i = 0; i < m; ++i) {
@@ -93,7 +101,6 @@ Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& sampl
   std::sort(order.begin(), order.end());
   std::vector<Vec3> chosen;
   Lighting out;
-  const Bounds space = rays.scene().light_bounds();
   const float clearance = 1e-3f * rays.scene().diagonal();
   for (const auto& [score, i] : order) {
     if (chosen.size() >= count) break;
@@ -103,15 +110,15 @@ Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& sampl
     if (!apart) continue;
     chosen.push_back(p);
     for (float d : {0.1f, 0.25f, 0.5f, 1.0f}) {
-      const Vec3 c = p + samples.points.normals[i] * (d * cell_size);
-      if (space.contains(c) && !rays.inside_solid(c) && !rays.closest_point(c, std::max(clearance, 0.5f * d * cell_size)).valid())
-        out.push_back(Light::point(c, Rgb(1.f)));
+      const auto c = space.place(p + samples.points.normals[i] * (d * cell_size));
+      if (c && space.admissible(*c) && !rays.closest_point(*c, space.clearance(std::max(clearance, 0.5f * d * cell_size))).valid())
+        out.push_back(Light::point(*c, Rgb(1.f)));
     }
   }
   return out;
 }
 
-SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lighting& spots, const SeedSettings& settings) {
+SeedResult seed_lights(ResponseModel& model, const LightSpace& space, const Lighting& spots, const SeedSettings& settings) {
   const SampleSet& samples = model.samples();
   const size_t m = samples.size();
   std::vector<Rgb> spot_phi = spots.empty() ? std::vector<Rgb>{} : model.responses(spots);
@@ -120,7 +127,7 @@ SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lightin
   // The spots are part of the answer even if no cell is free for a point light.
   result.lights = spots;
   result.phi = spot_phi;
-  std::vector<Cell> cells = free_cells(coarse_cells(rays.scene().light_bounds(), settings.coarse_cells), rays);
+  std::vector<Cell> cells = free_cells(coarse_cells(space.bounds(), settings.coarse_cells), space);
   float cell_size = cells.empty() ? 0.f : cells.front().size;
   for (int level = 0; level < settings.iterations && !cells.empty(); ++level) {
     Lighting lights;
@@ -142,7 +149,7 @@ SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lightin
           children.push_back({c.centre + offset * c.size, 0.5f * c.size});
         }
       }
-      cells = free_cells(children, rays);
+      cells = free_cells(children, space);
     }
   }
   // Beyond the paper: where the target is still unexplained (a lamp between
@@ -152,7 +159,7 @@ SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lightin
   for (int round = 0; round < settings.residual_rounds && result.dbar > settings.residual_dbar && cell_size > 0.f; ++round) {
     std::vector<Rgb> intensities;
     for (const auto& l : result.lights) intensities.push_back(l.intensity);
-    Lighting candidates = residual_candidates(combine(result.phi, intensities, m), samples, rays, cell_size, settings.residual_candidates);
+    Lighting candidates = residual_candidates(combine(result.phi, intensities, m), samples, space, cell_size, settings.residual_candidates);
     if (candidates.empty()) break;
     result.lights_tried += candidates.size();
     Lighting lights(result.lights.begin(), result.lights.end() - std::ptrdiff_t(n_spots));

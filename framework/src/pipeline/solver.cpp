@@ -55,7 +55,7 @@ size_t sample_count_for(size_t target_points) { return std::clamp<size_t>((targe
 
 Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
                Renderer& reference, Sampler& sampler, Optimizer& optimizer, SolveSettings settings, ProgressFn progress)
-    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_renderer(renderer), m_reference(reference), m_sampler(sampler),
+    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_space(*m_rays, settings.placement), m_renderer(renderer), m_reference(reference), m_sampler(sampler),
       m_optimizer(optimizer),
       m_settings(std::move(settings)), m_progress(std::move(progress)) {}
 
@@ -111,12 +111,15 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
 
   if (m_progress) m_progress("seeding");
   Stopwatch seed_watch;
-  SeedResult seed = seed_lights(model, *m_rays, m_settings.spot_hints, m_settings.seeding);
+  SeedResult seed = seed_lights(model, m_space, m_settings.spot_hints, m_settings.seeding);
   report.seconds["seeding"] += seed_watch.seconds();
   const size_t n_points = seed.lights.size() - seed.spot_count;
   report.seed_lights = n_points;
   report.seeds_tried = seed.lights_tried;
-  if (n_points == 0 && seed.spot_count == 0) throw InputError("the seeding found no light that brightens the target");
+  if (n_points == 0 && seed.spot_count == 0)
+    throw InputError(m_space.rules().any() ? "--place " + m_space.rules().describe() +
+                                                 ": no light allowed there brightens the target (the rules exclude the lit region, or no place satisfies them)"
+                                           : std::string("the seeding found no light that brightens the target"));
   if (m_settings.fixed_count > n_points)
     throw InputError("--lights " + std::to_string(m_settings.fixed_count) + ": the seeding found only " +
                      std::to_string(n_points) + " candidate lights (lower --lights, or --weak-threshold)");
@@ -205,7 +208,7 @@ Lighting Solver::cut_lights(size_t k) const {
 
 Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar,
                                  RefineEffort effort) {
-  SampleRefineProblem problem(model, *m_rays, m_cache ? &exact : nullptr);
+  SampleRefineProblem problem(model, m_space, m_cache ? &exact : nullptr);
   const SampleSet& samples = model.samples();
   const double norm = samples.target_norm();
   problem.anchor(start);
@@ -280,7 +283,7 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
   if (m_cache) view.emplace(*m_cache, *m_scene, samples);
   ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
   ResponseModel reference(m_reference, samples, nullptr);
-  SampleRefineProblem problem(model, *m_rays, &reference);
+  SampleRefineProblem problem(model, m_space, &reference);
   const double norm = samples.target_norm();
   problem.anchor(lights);
   Lighting fitted = lights;
@@ -320,14 +323,14 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
   std::optional<LightCacheView> view;
   if (m_cache) view.emplace(*m_cache, *m_scene, samples);
   ResponseModel model(m_renderer, samples, view ? &*view : nullptr), exact(m_renderer, samples, nullptr);
-  const Vec3 extent = m_scene->light_bounds().extent();
+  const Vec3 extent = m_space.bounds().extent();
   const float cell = std::max({extent.x, extent.y, extent.z}) / float(2 * std::max(1, m_settings.seeding.coarse_cells));
   // `base` plus the residual candidate that explains most of what `base`
   // leaves unexplained (by NNLS with the rest), refined and polished.
   auto with_best_candidate = [&](const Lighting& base, double& result_dbar) -> std::optional<Lighting> {
     std::vector<Rgb> phi = model.responses(base);
     const std::vector<Rgb> l0 = fit_intensities(phi, base.size(), samples);
-    const Lighting candidates = residual_candidates(combine(phi, l0, m), samples, *m_rays, cell, 8);
+    const Lighting candidates = residual_candidates(combine(phi, l0, m), samples, m_space, cell, 8);
     if (candidates.empty()) return std::nullopt;
     const std::vector<Rgb> candidate_phi = model.responses(candidates);
     size_t best = 0;
@@ -373,7 +376,7 @@ Lighting Solver::merge_close_pairs(const SampleSet& samples, Lighting lights, do
     for (size_t i = 0; i < lights.size(); ++i)
       if (i != a && i != b) merged.push_back(lights[i]);
     const Vec3 position = Vec3((wa * DVec3(lights[a].position) + wb * DVec3(lights[b].position)) / (wa + wb));
-    if (!m_rays->scene().light_bounds().contains(position) || m_rays->inside_solid(position)) return lights;
+    if (!m_space.admissible(position)) return lights;
     merged.insert(merged.begin() + std::ptrdiff_t(std::min(a, merged.size())), Light::point(position, lights[a].intensity + lights[b].intensity));
     double merged_dbar = 0;
     merged = polish_with_reference(samples, merged, false, merged_dbar);

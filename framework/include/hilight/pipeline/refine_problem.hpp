@@ -4,7 +4,7 @@
 /// admissibility rule for light positions.
 #include "hilight/optimizer.hpp"
 #include "hilight/pipeline/responses.hpp"
-#include "hilight/ray_scene.hpp"
+#include "hilight/light_space.hpp"
 
 #include <string>
 #include <unordered_map>
@@ -15,8 +15,8 @@ class SampleRefineProblem final : public RefineProblem {
 public:
   /// `exact`: the same samples without the light cache, used to anchor lights
   /// (may be null: no anchoring).
-  SampleRefineProblem(ResponseModel& model, const RayScene& rays, ResponseModel* exact = nullptr)
-      : m_model(model), m_rays(rays), m_exact(exact), m_light_bounds(rays.scene().light_bounds()) {}
+  SampleRefineProblem(ResponseModel& model, const LightSpace& space, ResponseModel* exact = nullptr)
+      : m_model(model), m_space(space), m_exact(exact) {}
 
   /// Anchors light j of every later call at `lights[j]`: its response gets
   /// the correction exact(anchor) − model(anchor), which removes the light
@@ -27,7 +27,11 @@ public:
   double objective(std::span<const Light> lights) override;
   double objective_with_best_intensities(std::vector<Light>& lights) override;
   bool admissible(const Vec3& p) const override;
-  float scale() const override { return m_rays.scene().diagonal(); }
+  float scale() const override { return m_space.rays().scene().diagonal(); }
+  /// Moves every light where the light space puts it (the ceiling mount);
+  /// false if one cannot stand anywhere near. Objectives evaluate placed lights.
+  bool place(std::vector<Light>& lights) const;
+  const LightSpace& space() const { return m_space; }
 
   /// Unit responses of `lights` (light-major), from the per-light store.
   std::vector<Rgb> responses(std::span<const Light> lights);
@@ -39,9 +43,8 @@ public:
 private:
   const std::vector<Rgb>& phi_of(const Light& light);
   ResponseModel& m_model;
-  const RayScene& m_rays;
+  const LightSpace& m_space;
   ResponseModel* m_exact;
-  Bounds m_light_bounds;
   std::vector<std::vector<Rgb>> m_correction;  ///< per light index (empty: none)
   std::unordered_map<std::string, std::vector<Rgb>> m_phi;  ///< keyed by the light's geometry bytes
 };

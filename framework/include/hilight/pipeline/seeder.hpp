@@ -4,7 +4,7 @@
 /// deleted (eq. 6) and the rest re-solved; cells that kept a light are split
 /// into 8 and the spread–solve–delete step repeats.
 #include "hilight/pipeline/responses.hpp"
-#include "hilight/ray_scene.hpp"
+#include "hilight/light_space.hpp"
 
 namespace hilight {
 
@@ -29,11 +29,11 @@ struct SeedResult {
 /// light unexplained: in front of the worst samples, along their normals, at
 /// 0.1–1 `cell_size` (a lamp near a surface paints a hot spot right in front
 /// of it); one place per `cell_size`/2, at most `count` places.
-Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& samples, const RayScene& rays, float cell_size,
+Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& samples, const LightSpace& space, float cell_size,
                              size_t count);
 
 /// `spots`: spotlights the target asked for (fixed positions/directions);
 /// they join every NNLS and are never deleted.
-SeedResult seed_lights(ResponseModel& model, const RayScene& rays, const Lighting& spots, const SeedSettings& settings);
+SeedResult seed_lights(ResponseModel& model, const LightSpace& space, const Lighting& spots, const SeedSettings& settings);
 
 } // namespace hilight

@@ -3,6 +3,7 @@
 /// hierarchy → cuts → refinement → light count; plus the editing modes of
 /// §4.2 (fine-tune, add lights). The CLI and the painter both call this.
 #include "hilight/light_cache.hpp"
+#include "hilight/light_space.hpp"
 #include "hilight/optimizer.hpp"
 #include "hilight/sampler.hpp"
 #include "hilight/pipeline/hierarchy.hpp"
@@ -34,6 +35,7 @@ struct SolveSettings {
   size_t evaluation_points = 0;      ///< target points D̄ is measured on (0: all; else evenly spaced, an estimate)
   bool residual_samples = true;      ///< after the fit, add the worst-explained points as samples and polish
   Lighting spot_hints;               ///< spotlights the user asked for
+  PlacementRules placement;          ///< where lights may stand (--place)
 };
 
 /// The automatic sample count: one sample per 14 target points, within
@@ -136,6 +138,7 @@ private:
 
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
+  LightSpace m_space;
   Renderer& m_renderer;
   Renderer& m_reference;
   Sampler& m_sampler;

@@ -1,0 +1,57 @@
+#pragma once
+/// Where a light may stand (issue 10): free space — inside the scene's light
+/// bounds, out of solids — narrowed by the designer's placement rules. The
+/// seeder, the refinement, the final polish and the solver's checks all ask
+/// this one object. Scenes are +Y up.
+#include "hilight/ray_scene.hpp"
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hilight {
+
+struct PlacementRules {
+  /// Mounted this far below a ceiling: the first surface straight above,
+  /// facing down. Lights are moved there (vertically) wherever they go.
+  std::optional<float> ceiling_offset;
+  float min_height = -std::numeric_limits<float>::infinity();  ///< y range
+  float max_height = std::numeric_limits<float>::infinity();
+  std::vector<Bounds> boxes;     ///< if any: inside one of them
+  std::vector<Bounds> excluded;  ///< never inside these
+
+  bool any() const;
+  /// As the CLI spells them, for messages ("ceiling:0.2 height:1:2.5").
+  std::string describe() const;
+  /// Parses one `--place` rule: ceiling[:OFFSET], height:MIN:MAX,
+  /// box:X0,Y0,Z0,X1,Y1,Z1, exclude:X0,Y0,Z0,X1,Y1,Z1. Throws InputError.
+  void add(const std::string& rule);
+};
+
+class LightSpace {
+public:
+  LightSpace(const RayScene& rays, PlacementRules rules = {});
+
+  const PlacementRules& rules() const { return m_rules; }
+  const RayScene& rays() const { return m_rays; }
+  /// Clearance from surfaces a candidate needs (so it lights more than the
+  /// patch under it): `wanted`, but never more than half the ceiling offset.
+  float clearance(float wanted) const;
+  /// The box the seeding spreads candidates over: the light bounds narrowed
+  /// by the height range and the allowed boxes.
+  const Bounds& bounds() const { return m_bounds; }
+  /// Where a light aimed at `p` stands: on the ceiling mount if that rule is
+  /// set (moved vertically), else `p`; nothing if it cannot stand there.
+  std::optional<Vec3> place(const Vec3& p) const;
+  /// `p` satisfies every rule and is free (in the light bounds, out of solids).
+  bool admissible(const Vec3& p) const;
+
+private:
+  bool satisfies_boxes_and_height(const Vec3& p) const;
+  const RayScene& m_rays;
+  PlacementRules m_rules;
+  Bounds m_light_bounds, m_bounds;
+};
+
+} // namespace hilight

@@ -1,0 +1,119 @@
+#include "hilight/light_space.hpp"
+
+#include "hilight/error.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace hilight {
+
+namespace {
+
+std::vector<float> numbers(const std::string& text, const std::string& rule, char separator) {
+  std::vector<float> out;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, separator)) {
+    char* end = nullptr;
+    const float v = std::strtof(part.c_str(), &end);
+    if (part.empty() || !end || *end != '\0' || !std::isfinite(v)) throw InputError("--place " + rule + ": '" + part + "' is not a number");
+    out.push_back(v);
+  }
+  return out;
+}
+
+Bounds box_of(const std::string& text, const std::string& rule) {
+  const auto v = numbers(text, rule, ',');
+  if (v.size() != 6) throw InputError("--place " + rule + ": a box is X0,Y0,Z0,X1,Y1,Z1 (6 numbers)");
+  Bounds b;
+  b.extend(Vec3(v[0], v[1], v[2]));
+  b.extend(Vec3(v[3], v[4], v[5]));
+  return b;
+}
+
+std::string box_text(const Bounds& b) {
+  std::ostringstream s;
+  s << b.lo.x << ',' << b.lo.y << ',' << b.lo.z << ',' << b.hi.x << ',' << b.hi.y << ',' << b.hi.z;
+  return s.str();
+}
+
+} // namespace
+
+bool PlacementRules::any() const {
+  return ceiling_offset || std::isfinite(min_height) || std::isfinite(max_height) || !boxes.empty() || !excluded.empty();
+}
+
+std::string PlacementRules::describe() const {
+  std::ostringstream s;
+  if (ceiling_offset) s << "ceiling:" << *ceiling_offset << ' ';
+  if (std::isfinite(min_height) || std::isfinite(max_height)) s << "height:" << min_height << ':' << max_height << ' ';
+  for (const auto& b : boxes) s << "box:" << box_text(b) << ' ';
+  for (const auto& b : excluded) s << "exclude:" << box_text(b) << ' ';
+  std::string out = s.str();
+  if (!out.empty()) out.pop_back();
+  return out;
+}
+
+void PlacementRules::add(const std::string& rule) {
+  const auto colon = rule.find(':');
+  const std::string kind = rule.substr(0, colon), rest = colon == std::string::npos ? "" : rule.substr(colon + 1);
+  if (kind == "ceiling") {
+    const float offset = rest.empty() ? 0.2f : numbers(rest, rule, ':').at(0);
+    if (!(offset > 0.f)) throw InputError("--place " + rule + ": the offset below the ceiling must be > 0");
+    ceiling_offset = offset;
+  } else if (kind == "height") {
+    const auto v = numbers(rest, rule, ':');
+    if (v.size() != 2 || !(v[0] <= v[1])) throw InputError("--place " + rule + ": write height:MIN:MAX with MIN <= MAX");
+    min_height = v[0], max_height = v[1];
+  } else if (kind == "box") {
+    boxes.push_back(box_of(rest, rule));
+  } else if (kind == "exclude") {
+    excluded.push_back(box_of(rest, rule));
+  } else {
+    throw InputError("--place " + rule + ": unknown rule (ceiling[:OFFSET], height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1, exclude:...)");
+  }
+}
+
+LightSpace::LightSpace(const RayScene& rays, PlacementRules rules)
+    : m_rays(rays), m_rules(std::move(rules)), m_light_bounds(rays.scene().light_bounds()), m_bounds(m_light_bounds) {
+  m_bounds.lo.y = std::max(m_bounds.lo.y, m_rules.min_height);
+  m_bounds.hi.y = std::min(m_bounds.hi.y, m_rules.max_height);
+  if (!m_rules.boxes.empty()) {
+    Bounds allowed;
+    for (const auto& b : m_rules.boxes) allowed.extend(b.lo), allowed.extend(b.hi);
+    m_bounds.lo = glm::max(m_bounds.lo, allowed.lo);
+    m_bounds.hi = glm::min(m_bounds.hi, allowed.hi);
+  }
+  if (m_rules.ceiling_offset) {  // lights move up to the ceilings: spread candidates over the whole height
+    m_bounds.lo.y = m_light_bounds.lo.y;
+    m_bounds.hi.y = m_light_bounds.hi.y;
+  }
+}
+
+bool LightSpace::satisfies_boxes_and_height(const Vec3& p) const {
+  if (p.y < m_rules.min_height || p.y > m_rules.max_height) return false;
+  for (const auto& b : m_rules.excluded)
+    if (b.contains(p)) return false;
+  if (m_rules.boxes.empty()) return true;
+  for (const auto& b : m_rules.boxes)
+    if (b.contains(p)) return true;
+  return false;
+}
+
+std::optional<Vec3> LightSpace::place(const Vec3& p) const {
+  if (!is_finite(p)) return std::nullopt;
+  if (!m_rules.ceiling_offset) return p;
+  const Hit up = m_rays.intersect(p, Vec3(0.f, 1.f, 0.f));
+  if (!up.valid() || m_rays.face_normals()[up.triangle].y > -0.5f) return std::nullopt;  // no ceiling above
+  return Vec3(p.x, p.y + up.t - *m_rules.ceiling_offset, p.z);
+}
+
+float LightSpace::clearance(float wanted) const {
+  return m_rules.ceiling_offset ? std::min(wanted, 0.5f * *m_rules.ceiling_offset) : wanted;
+}
+
+bool LightSpace::admissible(const Vec3& p) const {
+  return is_finite(p) && m_light_bounds.contains(p) && satisfies_boxes_and_height(p) && !m_rays.inside_solid(p);
+}
+
+} // namespace hilight
