@@ -55,9 +55,7 @@ Scene real_furnished_room() {
   Scene scene;
   scene.source = "builtin:real_furnished_room";
   add_box(scene, {0.f, 0.f, 0.f}, {6.f, 3.f, 5.f}, Rgb(0.75f, 0.73f, 0.70f), true, "walls");
-  add_box(scene, {1.2f, 0.72f, 1.4f}, {2.8f, 0.78f, 2.4f}, Rgb(0.55f, 0.35f, 0.2f), false, "table_top");
-  for (float x : {1.3f, 2.6f})
-    for (float z : {1.5f, 2.2f}) add_box(scene, {x, 0.f, z}, {x + 0.1f, 0.72f, z + 0.1f}, Rgb(0.45f, 0.3f, 0.18f), false, "table_leg");
+  add_table(scene);
   add_box(scene, {4.6f, 0.f, 0.3f}, {5.7f, 1.2f, 0.9f}, Rgb(0.3f, 0.45f, 0.6f), false, "cabinet");
   add_model(scene, test_model("OBJ/WusonOBJ.obj"), 2.f, 0.78f, 1.9f, 0.6f);
   add_model(scene, test_model("OBJ/spider.obj"), 4.2f, 0.f, 3.3f, 0.9f);

@@ -100,14 +100,17 @@ Scene sphere(float radius, int subdivisions, bool inward, const Rgb& albedo) {
   return scene;
 }
 
+void add_table(Scene& scene) {
+  add_box(scene, {1.2f, 0.72f, 1.4f}, {2.8f, 0.78f, 2.4f}, Rgb(0.55f, 0.35f, 0.2f), false, "table_top");
+  for (float x : {1.3f, 2.6f})
+    for (float z : {1.5f, 2.2f}) add_box(scene, {x, 0.f, z}, {x + 0.1f, 0.72f, z + 0.1f}, Rgb(0.45f, 0.3f, 0.18f), false, "table_leg");
+}
+
 Scene furnished_room() {
   Scene scene;
   scene.source = "builtin:furnished_room";
   add_box(scene, {0.f, 0.f, 0.f}, {6.f, 3.f, 5.f}, Rgb(0.75f, 0.73f, 0.70f), true, "walls");
-  // Table: top and four legs.
-  add_box(scene, {1.2f, 0.72f, 1.4f}, {2.8f, 0.78f, 2.4f}, Rgb(0.55f, 0.35f, 0.2f), false, "table_top");
-  for (float x : {1.3f, 2.6f})
-    for (float z : {1.5f, 2.2f}) add_box(scene, {x, 0.f, z}, {x + 0.1f, 0.72f, z + 0.1f}, Rgb(0.45f, 0.3f, 0.18f), false, "table_leg");
+  add_table(scene);
   add_box(scene, {4.6f, 0.f, 0.3f}, {5.7f, 1.9f, 0.9f}, Rgb(0.3f, 0.45f, 0.6f), false, "cabinet");
   add_box(scene, {3.4f, 0.f, 3.6f}, {5.2f, 0.45f, 4.3f}, Rgb(0.6f, 0.2f, 0.2f), false, "bench");
   add_box(scene, {0.8f, 0.f, 3.8f}, {1.2f, 3.f, 4.2f}, Rgb(0.8f, 0.8f, 0.78f), false, "pillar");

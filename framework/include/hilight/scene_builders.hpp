@@ -21,6 +21,8 @@ Scene box_room(const Vec3& size, const Rgb& albedo = Rgb(0.8f));
 /// A sphere (subdivided icosahedron) of `radius` at the origin with smooth
 /// radial normals; `inward` winds it as a closed room seen from inside.
 Scene sphere(float radius, int subdivisions, bool inward, const Rgb& albedo = Rgb(0.8f));
+/// The furnished room's table (top 1.2–2.8 × 1.4–2.4 at 0.72–0.78, four legs).
+void add_table(Scene& scene);
 /// A 6 x 3 x 5 room with a table, a cabinet, a bench and a pillar: the
 /// interior test scene (cf. the paper's Table 1), and the bundled demo.
 Scene furnished_room();
