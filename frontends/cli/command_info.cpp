@@ -39,6 +39,8 @@ int run_info(const std::vector<std::string>& args) {
   std::printf("materials  %zu\n", scene.materials.size());
   std::printf("bounds     [%g, %g, %g] .. [%g, %g, %g]\n", b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z);
   std::printf("diagonal   %g\n", scene.diagonal());
+  const Bounds lb = scene.light_bounds();
+  std::printf("lights in  [%g, %g, %g] .. [%g, %g, %g]\n", lb.lo.x, lb.lo.y, lb.lo.z, lb.hi.x, lb.hi.y, lb.hi.z);
   std::printf("max edge   %g\n", scene.max_edge);
   return 0;
 }
