@@ -277,7 +277,8 @@ double Solver::measure_dbar(const Target& target, const Lighting& lights) {
   return normalized_difference(m_reference.illuminate(measured.points, lights), measured);
 }
 
-Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, double& dbar) {
+Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, double& dbar,
+                                       int rounds) {
   // The fast model (fast twin, light cache) found the positions; the
   // reference decides. Anchoring makes the model equal to the reference at
   // the lights it is anchored at, so every value compared below is exact.
@@ -306,9 +307,12 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
   // correction is exact only where it was taken, so each round's value is
   // the reference's own, and the next round starts anchored at `fitted`.
   // Below 0.01% D̄ at the samples nothing is left that anyone could see.
-  for (int round = 0; round < 3 && norm > 0 && std::sqrt(best) > 1e-4 * norm; ++round) {
+  for (int round = 0; round < rounds && norm > 0 && std::sqrt(best) > 1e-4 * norm; ++round) {
     Lighting stepped = gauss_newton_polish(problem, fitted);
-    problem.anchor(stepped);
+    // A single round (fine-tune, interactive) takes the anchored model's word
+    // for the step — Gauss–Newton only takes steps that lower it — and saves
+    // the reference's φ at the new place.
+    if (rounds > 1) problem.anchor(stepped);
     const double value = problem.objective(stepped);
     if (!(value < best)) break;
     const bool small_gain = value > 0.9 * best;
@@ -500,11 +504,11 @@ Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveRe
   ensure_cache(report);
   SampleSet samples = sample(target, report);
   // Anchored at the reference from the start: lights that already produce
-  // the target have a zero objective and stay exactly where they are.
+  // the target have a zero objective and stay exactly where they are. One
+  // round, and no residual polish: fine-tune follows the painter's strokes.
   Stopwatch refine_watch;
-  Lighting refined = polish_with_reference(samples, lights, true, report.dbar_samples);
+  Lighting refined = polish_with_reference(samples, lights, true, report.dbar_samples, 1);
   report.seconds["refinement"] += refine_watch.seconds();
-  refined = polish_residuals(target, std::move(samples), refined, true, report);
   finish_report(target, refined, report);
   report.seconds["total"] = total.seconds();
   return refined;

@@ -96,8 +96,10 @@ public:
   /// `hilight render` uses): intensities re-fitted, lights the fit switches
   /// off dropped (unless `keep_count` or --lights N), then a polish anchored
   /// at the reference, kept only if the reference says it helps. So lights
-  /// that made the target are a fixed point. `dbar` gets D̄ at the samples.
-  Lighting polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, double& dbar);
+  /// that made the target are a fixed point. `dbar` gets D̄ at the samples;
+  /// `rounds`: Gauss–Newton rounds, each re-anchored (one reference φ each).
+  Lighting polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, double& dbar,
+                                 int rounds = 3);
   /// InputError unless every light may stand where it is (in bounds, out of solids).
   void require_admissible(const Lighting& lights, const std::string& what) const;
   /// The hierarchy of the last solve (for moving between cuts).
