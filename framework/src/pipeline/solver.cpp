@@ -288,8 +288,9 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
   ResponseModel reference(m_reference, samples, nullptr);
   SampleRefineProblem problem(model, m_space, &reference);
   const double norm = samples.target_norm();
-  problem.anchor(lights);
   Lighting fitted = lights;
+  if (!problem.place(fitted)) fitted = lights;  // (the objective says so below)
+  problem.anchor(fitted);  // where the placement rules put them: the anchor must be where they stand
   double best = problem.objective_with_best_intensities(fitted);
   if (!keep_count && m_settings.fixed_count == 0) {
     // A point light the fit switches off does nothing: not part of the answer.
