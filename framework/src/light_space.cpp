@@ -103,9 +103,23 @@ bool LightSpace::satisfies_boxes_and_height(const Vec3& p) const {
 std::optional<Vec3> LightSpace::place(const Vec3& p) const {
   if (!is_finite(p)) return std::nullopt;
   if (!m_rules.ceiling_offset) return p;
-  const Hit up = m_rays.intersect(p, Vec3(0.f, 1.f, 0.f));
-  if (!up.valid() || m_rays.face_normals()[up.triangle].y > -0.5f) return std::nullopt;  // no ceiling above
-  return Vec3(p.x, p.y + up.t - *m_rules.ceiling_offset, p.z);
+  // The ceiling: the first surface straight above that faces down and stands
+  // a room's height above the floor under `p` (the underside of a table or a
+  // shelf does not count: the walk goes on through it).
+  const Vec3 up(0.f, 1.f, 0.f);
+  const Hit down = m_rays.intersect(p, -up);
+  const float floor_y = down.valid() ? p.y - down.t : m_light_bounds.lo.y;
+  const float room_height = 0.25f * m_rays.scene().bounds.extent().y;
+  Vec3 from = p;
+  for (int crossing = 0; crossing < 16; ++crossing) {
+    const Hit hit = m_rays.intersect(from, up);
+    if (!hit.valid()) return std::nullopt;  // open above: no ceiling
+    const float y = from.y + hit.t;
+    if (m_rays.face_normals()[hit.triangle].y < -0.5f && y - floor_y >= room_height)
+      return Vec3(p.x, y - *m_rules.ceiling_offset, p.z);
+    from = Vec3(p.x, y + m_rays.epsilon(), p.z);
+  }
+  return std::nullopt;
 }
 
 float LightSpace::clearance(float wanted) const {

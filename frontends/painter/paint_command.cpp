@@ -67,6 +67,10 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--evaluation-points", o.job.solve.evaluation_points, "target points D-bar is reported on (0: all)")
       ->check(CLI::Range(0, 100000000))
       ->capture_default_str();
+  std::vector<std::string> place_rules;
+  app.add_option("--place", place_rules,
+                 "where lights may stand (repeatable): ceiling[:OFFSET], height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1, "
+                 "exclude:X0,Y0,Z0,X1,Y1,Z1 (as hilight solve)");
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
   app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
   app.add_option("--cache-cells", o.job.solve.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")
@@ -100,6 +104,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   o.auto_fine_tune = !no_auto;
   o.job.renderer_settings.push_back("bounces=" + std::to_string(bounces));
   if (bounce_samples > 0) o.job.renderer_settings.push_back("bounce_samples=" + std::to_string(bounce_samples));
+  for (const auto& rule : place_rules) o.job.solve.placement.add(rule);
   o.job.solve.use_cache = !no_cache;
   o.job.solve.cache_dir = no_cache ? std::filesystem::path() : cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir);
   o.job.solve.cache_cap_bytes = default_cache_cap_bytes();

@@ -13,8 +13,9 @@
 namespace hilight {
 
 struct PlacementRules {
-  /// Mounted this far below a ceiling: the first surface straight above,
-  /// facing down. Lights are moved there (vertically) wherever they go.
+  /// Mounted this far below a ceiling: the first surface straight above that
+  /// faces down and stands at least a quarter of the scene's height above the
+  /// floor below (so not under a table). Lights are moved there (vertically).
   std::optional<float> ceiling_offset;
   float min_height = -std::numeric_limits<float>::infinity();  ///< y range
   float max_height = std::numeric_limits<float>::infinity();

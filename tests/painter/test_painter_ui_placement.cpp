@@ -1,0 +1,46 @@
+// The painter with a placement rule (`hilight paint --place`): a replayed
+// session paints a bright patch on the floor of the bundled room and solves
+// with "ceiling lights only"; every light it saves hangs from the ceiling
+// (tests/test_placement.cpp checks that they light the patch).
+#include "../support.hpp"
+#include "hilight/io/lights_json.hpp"
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+using namespace hilight;
+
+TEST_CASE("painter ui: a replayed session with --place ceiling gives ceiling lights over the painted patch", "[painter-ui][placement]") {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) {
+    std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;
+    return;
+  }
+  const fs::path dir = test::output_dir("painter_ui_placement");
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  const nlohmann::json actions = {
+      {{"type", "camera"}, {"eye", {3.0, 6.0, 9.0}}, {"target", {3.0, 0.0, 2.5}}, {"fov", 60}},
+      {{"type", "brush"}, {"radius", 0.6}, {"colour", 1.0}, {"brightness", 0.6}, {"hardness", 0.7}},
+      {{"type", "stroke"}, {"world", {{2.2, 0, 3.0}}}},
+      {{"type", "solve"}},
+      {{"type", "save_lights"}, {"path", (dir / "lights.json").string()}}};
+  test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+  const test::RunResult run = test::run_hilight({"paint", room, "--size", "480x360", "--set", "bounce_samples=16", "--samples", "800",
+                                                 "--no-cache", "--no-record", "--exit", "--place", "ceiling:0.1", "--script",
+                                                 (dir / "session.json").string()});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const Lighting lights = read_lights_json(dir / "lights.json");
+  REQUIRE_FALSE(lights.empty());
+  for (const auto& l : lights) {
+    INFO("light at " << l.position.x << ", " << l.position.y << ", " << l.position.z);
+    CHECK(l.position.y == Approx(2.9f).margin(1e-3));  // the room's ceiling is at 3, the table's underside does not count
+  }
+  // A malformed rule is refused before any window opens.
+  const test::RunResult bad = test::run_hilight({"paint", room, "--place", "ceiling:-2", "--exit", "--screenshot", (dir / "x.png").string()});
+  CHECK(bad.exit_code == 2);
+  CHECK(test::line_count(bad.err) == 1);
+}
