@@ -354,11 +354,15 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
     more = refine_anchored(model, exact, more, result_dbar);
     return polish_with_reference(samples, more, false, result_dbar);
   };
-  for (int round = 0; round < 3 && dbar > kVisibleDbar; ++round) {
-    // One light more, kept by eq. 9.
+  for (int round = 0; round < 8 && dbar > kVisibleDbar; ++round) {
+    // One light more, kept by eq. 9 — or, when several lamps are missing and
+    // each explains only its share, by eq. 6's measure: it takes away at
+    // least ε_w of ‖Ψ‖ from the residual.
     double more_dbar = 0;
     auto more = with_best_candidate(lights, more_dbar);
-    if (!(more && more->size() > lights.size() && dbar >= m_settings.eps_impro * more_dbar)) return lights;
+    const bool pays = more && more->size() > lights.size() &&
+                      (dbar >= m_settings.eps_impro * more_dbar || dbar - more_dbar >= m_settings.seeding.weak_threshold);
+    if (!pays) return lights;
     lights = std::move(*more);
     dbar = more_dbar;
   }

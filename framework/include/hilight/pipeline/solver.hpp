@@ -124,8 +124,8 @@ private:
                            RefineEffort effort = RefineEffort::Full);
   void finish_report(const Target& target, const Lighting& lights, SolveReport& report);
   /// Eq. 9 upward on the final lights: one light more where the target is
-  /// least explained, polished, kept while it improves D̄ by ε_impro (a lamp
-  /// the hierarchy merged away).
+  /// least explained, polished, kept while it improves D̄ by ε_impro or
+  /// lowers it by ε_w (lamps the hierarchy merged away).
   Lighting add_missing_lights(const SampleSet& samples, Lighting lights, double& dbar);
   /// Eq. 9 once more on the final lights: the nearest two point lights merged
   /// (eq. 7) and polished, kept while D̄ grows by less than ε_impro (a lamp
