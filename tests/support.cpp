@@ -1,5 +1,7 @@
 #include "support.hpp"
 
+#include <cstdlib>
+
 #include <cmath>
 #include <iostream>
 
@@ -30,6 +32,13 @@ bool skip_without_renderer(const std::string& name) {
   std::string why = registry().renderer_unavailable_reason(name);
   if (!why.empty()) std::cout << "SKIPPED: " << name << " renderer unavailable: " << why << std::endl;
   return !why.empty();
+}
+
+bool skip_without_display() {
+  const char* display = std::getenv("DISPLAY");
+  if (display && *display) return false;
+  std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;
+  return true;
 }
 
 hilight::Registry& registry() {

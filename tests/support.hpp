@@ -19,6 +19,11 @@ hilight::Registry& registry();
 /// which ctest reports as a skip. Use: `if (test::skip_without_renderer("povray")) return;`
 bool skip_without_renderer(const std::string& name);
 
+/// True when no X display is set (the painter's window tests need one; CI
+/// runs them under xvfb-run); then prints "SKIPPED: <why>".
+/// Use: `if (test::skip_without_display()) return;`
+bool skip_without_display();
+
 /// A renderer from the registry, bound to `scene`. `settings`: "key=value".
 std::unique_ptr<hilight::Renderer> make_renderer(const std::string& name, std::shared_ptr<const hilight::Scene> scene,
                                                  const std::vector<std::string>& settings = {});

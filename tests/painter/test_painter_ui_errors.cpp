@@ -58,11 +58,7 @@ TEST_CASE("painter ui: no display gives one clear error line", "[painter-ui]") {
 }
 
 TEST_CASE("painter ui: no OpenGL 3.3 core context gives one clear error line", "[painter-ui]") {
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display) {
-    std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;
-    return;
-  }
+  if (test::skip_without_display()) return;
   // Mesa can be told to offer OpenGL 2.1 only: the 3.3 core context is then refused.
   ScopedEnv old_gl("MESA_GL_VERSION_OVERRIDE", std::string("2.1"));
   const fs::path dir = test::output_dir("painter_ui_no_gl");
@@ -98,11 +94,7 @@ TEST_CASE("painter ui: bad geometry and bad scripts give one clear error line", 
 }
 
 TEST_CASE("painter ui: a script action that fails names the action", "[painter-ui]") {
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display) {
-    std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;
-    return;
-  }
+  if (test::skip_without_display()) return;
   const fs::path dir = test::output_dir("painter_ui_failing_action");
   // Valid JSON, but fine-tune needs lights and there are none.
   test::write_text(dir / "fine_tune.json", R"({"actions": [{"type": "fine_tune"}]})");
@@ -117,11 +109,7 @@ TEST_CASE("painter ui: a script action that fails names the action", "[painter-u
 }
 
 TEST_CASE("painter ui: huge coordinates are input errors, never a crash in the ray tracer", "[painter-ui]") {
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display) {
-    std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;
-    return;
-  }
+  if (test::skip_without_display()) return;
   const fs::path dir = test::output_dir("painter_ui_huge_coordinates");
   auto run = [&](const std::string& name, const std::string& script) {
     test::write_text(dir / name, script);

@@ -14,11 +14,7 @@ namespace fs = std::filesystem;
 using namespace hilight;
 
 TEST_CASE("painter ui: a replayed session with --place ceiling gives ceiling lights over the painted patch", "[painter-ui][placement]") {
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display) {
-    std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;
-    return;
-  }
+  if (test::skip_without_display()) return;
   const fs::path dir = test::output_dir("painter_ui_placement");
   const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
   const nlohmann::json actions = {

@@ -17,11 +17,7 @@ const std::string kRoomLights = HILIGHT_SOURCE_DIR "/scenes/room-4lights.json";
 } // namespace
 
 TEST_CASE("painter ui: a recorded session replays to the same lights", "[painter-ui]") {
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display) {
-    std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;
-    return;
-  }
+  if (test::skip_without_display()) return;
   const fs::path dir = test::output_dir("painter_ui_record");
   const std::string lights_out = (dir / "tuned.json").string();
   const nlohmann::json session = {

@@ -25,15 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace hilight;
 
-#define REQUIRE_DISPLAY()                                                              \
-  do {                                                                                 \
-    const char* display = std::getenv("DISPLAY");                                      \
-    if (!display || !*display) {                                                       \
-      std::cout << "SKIPPED: no display (run the tests under xvfb-run)" << std::endl;  \
-      return;                                                                          \
-    }                                                                                  \
-  } while (0)
-
 /// Writes a builder scene as OBJ + MTL, one material per builder material
 /// (so each box stays its own object for the shadow tools).
 void write_obj(const fs::path& obj_path, const Scene& scene) {
@@ -97,7 +88,7 @@ std::vector<std::string> paint_args(const fs::path& dir, const fs::path& scene) 
 
 TEST_CASE("painter ui: a replayed patch-and-shadow session solves for the light the shadow implies and the CLI agrees",
           "[painter-ui]") {
-  REQUIRE_DISPLAY();
+  if (test::skip_without_display()) return;
   const fs::path dir = test::output_dir("painter_ui_replay");
   const fs::path scene_path = dir / "floor_box.obj";
   write_obj(scene_path, floor_and_box());
@@ -240,7 +231,7 @@ std::vector<Vec3> target_positions(const fs::path& path) {
 } // namespace
 
 TEST_CASE("painter ui: screen strokes paint the surface under the pixel", "[painter-ui]") {
-  REQUIRE_DISPLAY();
+  if (test::skip_without_display()) return;
   const fs::path dir = test::output_dir("painter_ui_screen_stroke");
   const fs::path scene_path = dir / "floor_box.obj";
   write_obj(scene_path, floor_and_box());

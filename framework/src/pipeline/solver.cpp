@@ -455,8 +455,9 @@ void Solver::finish_report(const Target& target, const Lighting& lights, SolveRe
   report.target_points = target.size();
   if (report.dbar_points > 0) return;  // measured by polish_residuals
   Stopwatch watch;
-  report.dbar = measure_dbar(target, lights);
-  report.dbar_points = evaluation_set(target).size();
+  const SampleSet measured = evaluation_set(target);
+  report.dbar = normalized_difference(m_reference.illuminate(measured.points, lights), measured);
+  report.dbar_points = measured.size();
   report.seconds["evaluation"] += watch.seconds();
 }
 
