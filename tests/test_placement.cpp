@@ -112,3 +112,40 @@ TEST_CASE("placement: rules that make the target impossible or that do not parse
   CHECK(test::line_count(r.err) == 1);
   CHECK_THAT(r.err, Catch::Contains("unknown rule"));
 }
+
+namespace {
+/// The bundled room lit by its four lamps, as `hilight render` writes it.
+PatchSolve four_lamp_room() {
+  PatchSolve p;
+  p.scene = std::make_shared<const Scene>(load_scene(kRoom));
+  p.rays = std::make_shared<const RayScene>(*p.scene);
+  auto reference = test::make_renderer("embree", p.scene, reference_renderer_settings({}, 1));
+  const Lighting truth = read_lights_json(std::string(HILIGHT_SOURCE_DIR) + "/scenes/room-4lights.json");
+  const std::vector<Rgb> values = reference->illuminate(SurfacePoints::from_vertices(*p.scene), truth);
+  p.target = bind_target("four lamps", p.scene->positions, values, std::vector<float>(values.size(), 1.f), *p.scene, *p.rays,
+                         p.scene->normals);
+  return p;
+}
+} // namespace
+
+TEST_CASE("placement: count bounds hold, and a count beyond the seeding's candidates still solves", "[placement]") {
+  const PatchSolve p = four_lamp_room();
+  struct Case {
+    const char* rule;
+    size_t least, most;
+  };
+  for (const Case& c : {Case{"count:2:3", 2, 3}, Case{"count:6", 6, 6}}) {
+    INFO(c.rule);
+    PlacementRules rules;
+    rules.add(c.rule);
+    SolveReport report;
+    const Lighting lights = solve(p, rules, report);
+    CHECK(lights.size() >= c.least);
+    CHECK(lights.size() <= c.most);
+    if (c.least > 4) CHECK(report.dbar < 0.01);  // more lights than lamps: still the target
+  }
+  PlacementRules rules;
+  CHECK_THROWS_WITH(rules.add("count:3:2"), Catch::Contains("MIN <= MAX"));
+  CHECK_THROWS_WITH(rules.add("count:0"), Catch::Contains("whole numbers"));
+  CHECK_THROWS_WITH(rules.add("count:1.5"), Catch::Contains("whole numbers"));
+}

@@ -2,6 +2,7 @@
 
 #include "hilight/hash.hpp"
 #include "hilight/io/atomic_file.hpp"
+#include "hilight/light_bounds.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -30,12 +31,13 @@ uint64_t LightCache::key(const Scene& scene, const std::string& renderer_key, co
   for (const auto& m : scene.materials) h = fnv1a(h, &m.albedo, sizeof(m.albedo));
   h = fnv1a(h, renderer_key.data(), renderer_key.size());
   h = fnv1a(h, &settings.cells_along_longest_axis, sizeof(int));
+  if (settings.open_space) h = fnv1a(h, "open", 4);
   return h;
 }
 
 LightCache LightCache::build(const Scene& scene, const RayScene& rays, Renderer& renderer, const LightCacheSettings& settings) {
   LightCache cache;
-  const Bounds b = scene.light_bounds();
+  const Bounds b = settings.open_space ? open_light_bounds(scene) : scene.light_bounds();
   Vec3 extent = b.extent();
   float longest = std::max(extent.x, std::max(extent.y, extent.z));
   float cell = longest / float(std::max(1, settings.cells_along_longest_axis));

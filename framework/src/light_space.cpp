@@ -2,6 +2,7 @@
 
 #include "hilight/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -40,7 +41,8 @@ std::string box_text(const Bounds& b) {
 } // namespace
 
 bool PlacementRules::any() const {
-  return ceiling_offset || std::isfinite(min_height) || std::isfinite(max_height) || !boxes.empty() || !excluded.empty();
+  return ceiling_offset || std::isfinite(min_height) || std::isfinite(max_height) || !boxes.empty() || !excluded.empty() ||
+         min_count || max_count;
 }
 
 std::string PlacementRules::describe() const {
@@ -49,6 +51,7 @@ std::string PlacementRules::describe() const {
   if (std::isfinite(min_height) || std::isfinite(max_height)) s << "height:" << min_height << ':' << max_height << ' ';
   for (const auto& b : boxes) s << "box:" << box_text(b) << ' ';
   for (const auto& b : excluded) s << "exclude:" << box_text(b) << ' ';
+  if (min_count || max_count) s << "count:" << min_count << ':' << max_count << ' ';
   std::string out = s.str();
   if (!out.empty()) out.pop_back();
   return out;
@@ -69,13 +72,19 @@ void PlacementRules::add(const std::string& rule) {
     boxes.push_back(box_of(rest, rule));
   } else if (kind == "exclude") {
     excluded.push_back(box_of(rest, rule));
+  } else if (kind == "count") {
+    const auto v = numbers(rest, rule, ':');
+    const bool whole = std::all_of(v.begin(), v.end(), [](float x) { return x >= 1.f && x <= 1e4f && x == std::floor(x); });
+    if (v.empty() || v.size() > 2 || !whole || v.front() > v.back())
+      throw InputError("--place " + rule + ": write count:MIN:MAX or count:N (whole numbers from 1, MIN <= MAX)");
+    min_count = size_t(v.front()), max_count = size_t(v.back());
   } else {
-    throw InputError("--place " + rule + ": unknown rule (ceiling[:OFFSET], height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1, exclude:...)");
+    throw InputError("--place " + rule + ": unknown rule (ceiling[:OFFSET], height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX)");
   }
 }
 
-LightSpace::LightSpace(const RayScene& rays, PlacementRules rules)
-    : m_rays(rays), m_rules(std::move(rules)), m_light_bounds(rays.scene().light_bounds()), m_bounds(m_light_bounds) {
+LightSpace::LightSpace(const RayScene& rays, PlacementRules rules, std::optional<Bounds> light_bounds)
+    : m_rays(rays), m_rules(std::move(rules)), m_light_bounds(light_bounds ? *light_bounds : rays.scene().light_bounds()), m_bounds(m_light_bounds) {
   m_bounds.lo.y = std::max(m_bounds.lo.y, m_rules.min_height);
   m_bounds.hi.y = std::min(m_bounds.hi.y, m_rules.max_height);
   if (!m_rules.boxes.empty()) {

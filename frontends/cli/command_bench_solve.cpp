@@ -4,7 +4,10 @@
 // medians over --repeat runs, all in one process so the figures compare.
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "hilight/built_scenes.hpp"
 #include "hilight/io/lights_json.hpp"
+#include "hilight/light_bounds.hpp"
+#include "hilight/light_cache_store.hpp"
 #include "hilight/pipeline/solver.hpp"
 #include "hilight/scene_builders.hpp"
 #include "hilight/threads.hpp"
@@ -33,6 +36,62 @@ double mean_position_error(const Lighting& truth, const Lighting& found) {
   return truth.empty() ? 0.0 : sum / double(truth.size());
 }
 
+/// A built scene (issue 10) with one seeded random configuration of `lights`
+/// lights: cold and warm solve, D̄, position error, the light cache's size.
+void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights, int repeat, const std::string& cache_root,
+                       Registry& registry) {
+  auto scene = std::make_shared<const Scene>(finish_scene(std::move(built.scene), {max_edge}));
+  auto rays = std::make_shared<const RayScene>(*scene);
+  const Bounds space = built.far_lights ? open_light_bounds(*scene) : scene->light_bounds();
+  std::mt19937_64 rng(7);
+  builders::RandomLightRules rules;
+  rules.min_count = rules.max_count = lights;
+  const Lighting truth = builders::random_lights(built, rng, rules, [&](const Vec3& p, float clearance) {
+    return space.contains(p) && !rays->inside_solid(p) && !rays->closest_point(p, clearance).valid();
+  });
+  auto reference = registry.create_renderer("embree", {});
+  reference->set_scene(scene);
+  const std::vector<Rgb> values = reference->illuminate(SurfacePoints::from_vertices(*scene), truth);
+  const Target target = bind_target("bench", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
+  Properties solve_props;
+  solve_props.set("bounce_direct", "vertex");
+  auto renderer = registry.create_renderer("embree", solve_props);
+  renderer->set_scene(scene);
+  auto sampler = registry.create_sampler("importance", {});
+  auto optimizer = registry.create_optimizer("varpro", {});
+  std::vector<double> cold, warm, dbar, pos_err;
+  size_t found_count = 0;
+  double cache_mb = 0;
+  for (int r = 0; r < repeat; ++r) {
+    std::filesystem::remove_all(cache_root);
+    SolveSettings settings;
+    settings.cache_dir = cache_root;
+    {
+      Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);
+      SolveReport report;
+      solver.solve(target, report);
+      cold.push_back(report.seconds["total"]);
+    }
+    uint64_t bytes = 0;
+    for (const auto& f : list_cache(cache_root)) bytes += f.bytes;
+    cache_mb = double(bytes) / (1024.0 * 1024.0);
+    Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);
+    SolveReport report;
+    const Lighting found = solver.solve(target, report);
+    warm.push_back(report.seconds["total"]);
+    dbar.push_back(report.dbar);
+    pos_err.push_back(mean_position_error(truth, found) / scene->diagonal());
+    found_count = found.size();
+  }
+  const nlohmann::json j = {{"figure", "solve_scene"}, {"scene", built.name}, {"vertices", scene->positions.size()},
+                            {"true_lights", truth.size()}, {"found_lights", found_count}, {"repeat", repeat},
+                            {"dbar_median", median(dbar)}, {"position_error_over_diagonal_median", median(pos_err)},
+                            {"cold_seconds_median", median(cold)}, {"warm_seconds_median", median(warm)},
+                            {"light_cache_mb", cache_mb}};
+  std::printf("%s\n", j.dump().c_str());
+  std::fflush(stdout);
+}
+
 } // namespace
 
 int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
@@ -47,9 +106,20 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--cache-dir", cache_root, "scratch folder for light caches (emptied first)")->capture_default_str();
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   bool no_cache_figure = false;
+  std::vector<std::string> scenes = {"room", "building", "product"};
+  float building_edge = 0.22f;
+  app.add_option("--scenes", scenes, "room (the furnished room, each optimizer), building (two storeys, 6 lights), product (3 lights outside it)")
+      ->capture_default_str();
+  app.add_option("--building-edge", building_edge, "tessellation of the building (0.22: about 100k vertices)")
+      ->check(FiniteNonNegative)
+      ->capture_default_str();
   app.add_flag("--skip-no-cache", no_cache_figure, "skip the comparison solve without the light cache");
   if (auto code = parse_arguments(app, args)) return *code;
   set_thread_limit(threads);
+  auto wants = [&](const char* s) { return std::find(scenes.begin(), scenes.end(), s) != scenes.end(); };
+  if (wants("building")) bench_built_scene(builders::two_storey_building(), building_edge, 6, repeat, cache_root, registry);
+  if (wants("product")) bench_built_scene(builders::product_on_turntable(), 0.f, 3, repeat, cache_root, registry);
+  if (!wants("room")) return 0;
 
   auto scene = std::make_shared<const Scene>(finish_scene(builders::furnished_room(), {max_edge}));
   auto rays = std::make_shared<const RayScene>(*scene);

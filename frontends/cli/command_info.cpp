@@ -1,6 +1,7 @@
 // hilight info SCENE: size, bounds and tessellation of a scene.
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "hilight/light_bounds.hpp"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -41,6 +42,11 @@ int run_info(const std::vector<std::string>& args) {
   std::printf("diagonal   %g\n", scene.diagonal());
   const Bounds lb = scene.light_bounds();
   std::printf("lights in  [%g, %g, %g] .. [%g, %g, %g]\n", lb.lo.x, lb.lo.y, lb.lo.z, lb.hi.x, lb.hi.y, lb.hi.z);
+  const auto open = side_openness(scene);
+  std::printf("open sides -x %.2f +x %.2f -y %.2f +y %.2f -z %.2f +z %.2f (lights may go beyond a side from %.2f)\n", open[0], open[1], open[2],
+              open[3], open[4], open[5], kOpenSide);
+  const Bounds ob = open_light_bounds(scene);
+  std::printf("open space [%g, %g, %g] .. [%g, %g, %g] (lit from outside)\n", ob.lo.x, ob.lo.y, ob.lo.z, ob.hi.x, ob.hi.y, ob.hi.z);
   std::printf("max edge   %g\n", scene.max_edge);
   return 0;
 }

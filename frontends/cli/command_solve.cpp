@@ -50,6 +50,8 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
           {"seed_lights", r.seed_lights},
           {"seed_lights_tried", r.seeds_tried},
           {"light_cache", r.cache_state},
+          {"open_space", r.open_space},
+          {"dbar_inside_bounds", r.dbar_closed >= 0 ? nlohmann::json(r.dbar_closed) : nlohmann::json(nullptr)},
           {"renderer", renderer},
           {"optimizer", optimizer},
           {"sampler", sampler}};
@@ -104,6 +106,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
                  "height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1 (inside one of the boxes), exclude:X0,Y0,Z0,X1,Y1,Z1");
   app.add_option("--max-dbar", max_dbar, "fail (exit 3, lights still written) when D̄ is above this, e.g. 0.015")
       ->check(CLI::Range(0.0, 1e9));
+  app.add_option("--open-space-dbar", s.open_space_dbar,
+                 "when lights inside the scene's bounds leave D̄ above this, look again beyond its open sides (0: never)")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
+  app.add_flag("--propose-spots", s.propose_spots,
+               "experimental: propose spotlights (no --spot-hints) for bright pools point lights leave under-lit");
   app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
   app.add_flag("-q,--quiet", quiet, "no progress or summary on stderr");
@@ -165,6 +173,9 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     std::fprintf(stderr, "hilight: %zu light%s, D̄ %.2f%% over %s (%zu samples), %.2f s -> %s\n", report.chosen,
                  report.chosen == 1 ? "" : "s", 100.0 * report.dbar, over.c_str(), report.samples, report.seconds["total"],
                  output.c_str());
+    if (report.open_space)
+      std::fprintf(stderr, "hilight: lit from outside: lights beyond the scene's bounds (inside them D̄ was %.1f%%)\n",
+                   100.0 * report.dbar_closed);
   }
   // No silent failure: a poor fit says so, whatever --quiet says, and
   // --max-dbar makes it an error (after the files are written).

@@ -63,6 +63,7 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_preview = preview_radiance(*m_scene, m_scene->vertex_albedo());
   m_document = std::make_unique<Document>(m_scene, m_rays);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
+  std::snprintf(m_place_text, sizeof(m_place_text), "%s", m_options.job.solve.placement.describe().c_str());
   auto renderers = display_renderers(registry, *m_job, m_scene);
   if (!m_options.no_record || !m_options.record.empty()) {
     const bool interactive = !m_options.exit_after_script;

@@ -95,6 +95,9 @@ private:
   void panel_tools();
   void panel_view();
   void panel_solve();
+  /// Where lights may stand: the --place rules as one line, applied by a
+  /// recorded "place" action.
+  void panel_placement();
   void panel_lights();
   void panel_files();
   void panel_help();
@@ -157,6 +160,7 @@ private:
   Rgb m_adjust_multiplier{1.2f};
   float m_spot_falloff = 2.f;
   int m_cut_k = 0;
+  char m_place_text[256] = {};  ///< the placement panel's rules being edited
   std::optional<SurfacePick> m_hover;
 
   // Solve timing (stroke release → fine-tuned lights → display).

@@ -60,6 +60,7 @@ void PainterApp::draw_panels() {
   panel_tools();
   panel_view();
   panel_solve();
+  panel_placement();
   panel_lights();
   panel_files();
   if (ImGui::Button("Help (H)")) m_show_help = !m_show_help;
@@ -211,6 +212,31 @@ void PainterApp::panel_solve() {
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::Text("%zu painted vertices", m_document->painted_count());
+}
+
+void PainterApp::panel_placement() {
+  if (!ImGui::CollapsingHeader("Placement")) return;
+  const std::string now = m_job->options().solve.placement.describe();
+  ImGui::SetNextItemWidth(300);
+  ImGui::InputTextWithHint("##place", "ceiling:0.2 height:1:2.5 count:1:4", m_place_text, sizeof(m_place_text));
+  tip("Where the next solves may put lights, as hilight solve --place: ceiling[:OFFSET], height:MIN:MAX, "
+      "box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX (space-separated; empty: anywhere free)");
+  ImGui::BeginDisabled(m_job->busy());
+  ImGui::SameLine();
+  if (ImGui::Button("Apply")) perform(Action{"place", {{"rules", std::string(m_place_text)}}});
+  ImGui::SameLine();
+  if (ImGui::Button("On the ceiling")) {
+    std::snprintf(m_place_text, sizeof(m_place_text), "ceiling:0.2");
+    perform(Action{"place", {{"rules", std::string(m_place_text)}}});
+  }
+  tip("Ceiling lights only: mounted 0.2 below the ceiling above each light");
+  ImGui::SameLine();
+  if (ImGui::Button("Anywhere")) {
+    m_place_text[0] = '\0';
+    perform(Action{"place", {{"rules", std::string()}}});
+  }
+  ImGui::EndDisabled();
+  ImGui::TextDisabled("lights may stand: %s", now.empty() ? "anywhere free" : now.c_str());
 }
 
 void PainterApp::panel_lights() {

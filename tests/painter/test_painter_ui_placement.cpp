@@ -40,3 +40,40 @@ TEST_CASE("painter ui: a replayed session with --place ceiling gives ceiling lig
   CHECK(bad.exit_code == 2);
   CHECK(test::line_count(bad.err) == 1);
 }
+
+TEST_CASE("painter ui: the placement panel's rules, recorded as a place action, replay", "[painter-ui][placement]") {
+  if (test::skip_without_display()) return;
+  const fs::path dir = test::output_dir("painter_ui_place_action");
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  const nlohmann::json actions = {
+      {{"type", "camera"}, {"eye", {3.0, 6.0, 9.0}}, {"target", {3.0, 0.0, 2.5}}, {"fov", 60}},
+      {{"type", "brush"}, {"radius", 0.6}, {"colour", 1.0}, {"brightness", 0.6}, {"hardness", 0.7}},
+      {{"type", "stroke"}, {"world", {{2.2, 0, 3.0}}}},
+      {{"type", "stroke"}, {"world", {{4.5, 0, 1.5}}}},
+      {{"type", "place"}, {"rules", "ceiling:0.15 count:1:1"}},
+      {{"type", "solve"}},
+      {{"type", "save_lights"}, {"path", (dir / "ceiling.json").string()}},
+      {{"type", "place"}, {"rules", ""}},
+      {{"type", "solve"}},
+      {{"type", "save_lights"}, {"path", (dir / "anywhere.json").string()}}};
+  test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+  const test::RunResult run = test::run_hilight({"paint", room, "--size", "480x360", "--set", "bounce_samples=16", "--samples", "800",
+                                                 "--no-cache", "--no-record", "--exit", "--script", (dir / "session.json").string()});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const Lighting ceiling = read_lights_json(dir / "ceiling.json");
+  REQUIRE(ceiling.size() == 1);  // count:1:1 for two patches
+  CHECK(ceiling[0].position.y == Approx(2.85f).margin(1e-3));
+  // Cleared: the lights may stand anywhere again (two patches, two lights near them).
+  const Lighting anywhere = read_lights_json(dir / "anywhere.json");
+  REQUIRE_FALSE(anywhere.empty());
+  bool below_mount = false;
+  for (const auto& l : anywhere) below_mount |= l.position.y < 2.8f;
+  CHECK(below_mount);
+  // A bad rule in a session is an input error naming the action: exit 2, one line.
+  test::write_text(dir / "bad.json", nlohmann::json{{"actions", {{{"type", "place"}, {"rules", "height:2:1"}}}}}.dump());
+  const test::RunResult bad = test::run_hilight({"paint", room, "--size", "320x240", "--no-record", "--exit", "--script", (dir / "bad.json").string()});
+  CHECK(bad.exit_code == 2);
+  CHECK(test::line_count(bad.err) == 1);
+  CHECK_THAT(bad.err, Catch::Contains("MIN <= MAX"));
+}

@@ -18,6 +18,7 @@ namespace hilight {
 
 struct LightCacheSettings {
   int cells_along_longest_axis = 8;
+  bool open_space = false;  ///< grid over open_light_bounds() (lights outside the scene), not light_bounds()
 };
 
 class LightCache {

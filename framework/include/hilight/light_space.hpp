@@ -21,21 +21,28 @@ struct PlacementRules {
   float max_height = std::numeric_limits<float>::infinity();
   std::vector<Bounds> boxes;     ///< if any: inside one of them
   std::vector<Bounds> excluded;  ///< never inside these
+  size_t min_count = 0, max_count = 0;  ///< point lights in the answer (0: no bound)
 
   bool any() const;
   /// As the CLI spells them, for messages ("ceiling:0.2 height:1:2.5").
   std::string describe() const;
   /// Parses one `--place` rule: ceiling[:OFFSET], height:MIN:MAX,
-  /// box:X0,Y0,Z0,X1,Y1,Z1, exclude:X0,Y0,Z0,X1,Y1,Z1. Throws InputError.
+  /// box:X0,Y0,Z0,X1,Y1,Z1, exclude:X0,Y0,Z0,X1,Y1,Z1, count:MIN:MAX (or
+  /// count:N). Throws InputError.
   void add(const std::string& rule);
 };
 
 class LightSpace {
 public:
-  LightSpace(const RayScene& rays, PlacementRules rules = {});
+  /// `light_bounds`: where lights may stand before the rules; the scene's
+  /// light_bounds() unless given (open_light_bounds() for a scene lit from
+  /// outside).
+  LightSpace(const RayScene& rays, PlacementRules rules = {}, std::optional<Bounds> light_bounds = {});
 
   const PlacementRules& rules() const { return m_rules; }
   const RayScene& rays() const { return m_rays; }
+  /// Where lights may stand before the rules (the box admissible() checks).
+  const Bounds& light_bounds() const { return m_light_bounds; }
   /// Clearance from surfaces a candidate needs (so it lights more than the
   /// patch under it): `wanted`, but never more than half the ceiling offset.
   float clearance(float wanted) const;

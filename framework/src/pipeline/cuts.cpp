@@ -5,9 +5,25 @@
 
 namespace hilight {
 
+size_t CountRule::clamp(size_t k) const {
+  if (min_count) k = std::max(k, min_count);
+  if (max_count) k = std::min(k, max_count);
+  return k;
+}
+
 std::vector<size_t> choose_cuts(const std::vector<double>& initial, const CountRule& rule) {
-  const size_t n = initial.size();
   if (rule.fixed_count > 0) return {rule.fixed_count};
+  // The count bounds (--place count:MIN:MAX): only cuts inside them; when
+  // none the automatic choice takes is inside, the nearest bound.
+  std::vector<size_t> chosen = choose_cuts_unbounded(initial, rule), bounded;
+  for (size_t k : chosen)
+    if (rule.clamp(k) == k) bounded.push_back(k);
+  if (bounded.empty() && !chosen.empty()) bounded.push_back(std::min(rule.clamp(chosen.front()), initial.size()));
+  return bounded;
+}
+
+std::vector<size_t> choose_cuts_unbounded(const std::vector<double>& initial, const CountRule& rule) {
+  const size_t n = initial.size();
   std::vector<size_t> chosen;
   for (size_t k = 1; k <= n && chosen.size() < rule.n_cut; ++k)
     if (initial[k - 1] < rule.eps_opt) chosen.push_back(k);
@@ -22,7 +38,7 @@ std::vector<size_t> choose_cuts(const std::vector<double>& initial, const CountR
 namespace {
 /// Cut k−1 is worth trying below cut k.
 bool may_walk_down(const std::vector<double>& initial, size_t k, const CountRule& rule) {
-  return k > 1 && initial[k - 2] < rule.eps_impro * rule.eps_opt;
+  return k > 1 && k - 1 >= rule.min_count && initial[k - 2] < rule.eps_impro * rule.eps_opt;
 }
 } // namespace
 
@@ -49,7 +65,7 @@ size_t walk_count(const std::vector<double>& initial, const std::vector<size_t>&
     walked_down = true;
   }
   if (walked_down) return count;
-  for (size_t q = 1; q < chosen.size() && chosen[q] == count + 1; ++q) {
+  for (size_t q = 1; q < chosen.size() && chosen[q] == count + 1 && rule.clamp(count + 1) == count + 1; ++q) {
     const double here = refined(count);
     if (here < rule.visible_dbar) break;
     const double above = refined(count + 1);

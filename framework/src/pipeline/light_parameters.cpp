@@ -15,7 +15,8 @@ void append_geometry(const Light& light, float scale, std::vector<double>& param
     params.push_back(std::acos(std::clamp(double(d.y), -1.0, 1.0)));  // polar angle from +Y
     params.push_back(std::atan2(double(d.z), double(d.x)));            // azimuth
     params.push_back(light.cutoff_deg * kPi / 180.0);
-    steps.insert(steps.end(), {0.1, 0.1, 0.05});
+    params.push_back(light.falloff_deg * kPi / 180.0);  // the soft edge: found with the cone
+    steps.insert(steps.end(), {0.1, 0.1, 0.05, 0.02});
   }
 }
 
@@ -27,8 +28,8 @@ size_t read_geometry(Light& light, float scale, const std::vector<double>& p, si
     light.direction = glm::normalize(Vec3(float(std::sin(polar) * std::cos(azimuth)), float(std::cos(polar)),
                                           float(std::sin(polar) * std::sin(azimuth))));
     light.cutoff_deg = float(std::clamp(p[o + 2] * 180.0 / kPi, 1.0, 89.0));
-    light.falloff_deg = std::min(light.falloff_deg, light.cutoff_deg);
-    o += 3;
+    light.falloff_deg = float(std::clamp(p[o + 3] * 180.0 / kPi, 0.0, double(light.cutoff_deg)));
+    o += 4;
   }
   return o;
 }

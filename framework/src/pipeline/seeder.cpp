@@ -118,6 +118,12 @@ Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& sampl
   return out;
 }
 
+std::vector<Vec3> free_grid_points(const LightSpace& space, int along_longest) {
+  std::vector<Vec3> out;
+  for (const auto& c : free_cells(coarse_cells(space.bounds(), along_longest), space)) out.push_back(c.centre);
+  return out;
+}
+
 SeedResult seed_lights(ResponseModel& model, const LightSpace& space, const Lighting& spots, const SeedSettings& settings) {
   const SampleSet& samples = model.samples();
   const size_t m = samples.size();

@@ -1,11 +1,13 @@
 #include "hilight/pipeline/solver.hpp"
 
 #include "hilight/error.hpp"
+#include "hilight/light_bounds.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/pipeline/cuts.hpp"
 #include "hilight/pipeline/fit.hpp"
 #include "hilight/pipeline/gauss_newton.hpp"
 #include "hilight/pipeline/refine_problem.hpp"
+#include "hilight/pipeline/spot_proposals.hpp"
 
 #include <chrono>
 #include <limits>
@@ -21,6 +23,10 @@ namespace {
 /// D̄ below which a light more is noise-fitting, not a missing lamp: the same
 /// order as ε_w (a light worth keeping explains 5% of ‖Ψ‖), and invisible.
 constexpr double kVisibleDbar = 5e-3;
+/// D̄ above which spotlights are proposed for under-lit pools (issue 10 §3),
+/// and how many at most.
+constexpr double kSpotDbar = 0.02;
+constexpr int kMaxSpots = 4;
 
 class Stopwatch {
 public:
@@ -55,7 +61,7 @@ size_t sample_count_for(size_t target_points) { return std::clamp<size_t>((targe
 
 Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
                Renderer& reference, Sampler& sampler, Optimizer& optimizer, SolveSettings settings, ProgressFn progress)
-    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_space(*m_rays, settings.placement), m_renderer(renderer), m_reference(reference), m_sampler(sampler),
+    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_space(std::in_place, *m_rays, settings.placement), m_renderer(renderer), m_reference(reference), m_sampler(sampler),
       m_optimizer(optimizer),
       m_settings(std::move(settings)), m_progress(std::move(progress)) {}
 
@@ -111,18 +117,15 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
 
   if (m_progress) m_progress("seeding");
   Stopwatch seed_watch;
-  SeedResult seed = seed_lights(model, m_space, m_settings.spot_hints, m_settings.seeding);
+  SeedResult seed = seed_lights(model, *m_space, m_settings.spot_hints, m_settings.seeding);
   report.seconds["seeding"] += seed_watch.seconds();
   const size_t n_points = seed.lights.size() - seed.spot_count;
   report.seed_lights = n_points;
   report.seeds_tried = seed.lights_tried;
   if (n_points == 0 && seed.spot_count == 0)
-    throw InputError(m_space.rules().any() ? "--place " + m_space.rules().describe() +
+    throw InputError(m_space->rules().any() ? "--place " + m_space->rules().describe() +
                                                  ": no light allowed there brightens the target (the rules exclude the lit region, or no place satisfies them)"
                                            : std::string("the seeding found no light that brightens the target"));
-  if (m_settings.fixed_count > n_points)
-    throw InputError("--lights " + std::to_string(m_settings.fixed_count) + ": the seeding found only " +
-                     std::to_string(n_points) + " candidate lights (lower --lights, or --weak-threshold)");
   if (n_points == 0) {  // only the requested spotlights: no hierarchy, refine them alone
     Stopwatch refine_watch;
     ResponseModel exact(m_renderer, samples, nullptr);
@@ -157,7 +160,11 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   }
 
   // Which cuts to refine and how many lights (pipeline/cuts.cpp).
-  const CountRule rule{m_settings.fixed_count, m_settings.n_cut, m_settings.eps_opt, m_settings.eps_impro, kVisibleDbar};
+  // A count the seeding cannot reach (--lights N, count:MIN) takes every
+  // seeded light here; add_missing_lights() adds the rest where the fit is worst.
+  CountRule rule{std::min(m_settings.fixed_count, n_points), m_settings.n_cut, m_settings.eps_opt, m_settings.eps_impro, kVisibleDbar};
+  rule.min_count = std::min(min_lights(), n_points);
+  rule.max_count = max_lights();
   std::vector<double> initial;
   for (const auto& c : report.cuts) initial.push_back(c.dbar_initial);
   const std::vector<size_t> chosen = choose_cuts(initial, rule);
@@ -208,7 +215,7 @@ Lighting Solver::cut_lights(size_t k) const {
 
 Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar,
                                  RefineEffort effort) {
-  SampleRefineProblem problem(model, m_space, m_cache ? &exact : nullptr);
+  SampleRefineProblem problem(model, *m_space, m_cache ? &exact : nullptr);
   const SampleSet& samples = model.samples();
   const double norm = samples.target_norm();
   problem.anchor(start);
@@ -240,7 +247,8 @@ Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, con
         contribution(phi, j, refined[j].intensity, samples) >= m_settings.seeding.weak_threshold * norm)
       kept.push_back(refined[j]);
   // With the count fixed by the user (--lights N) every light stays.
-  if (m_settings.fixed_count == 0 && effort == RefineEffort::Full && !kept.empty() && kept.size() < refined.size()) {
+  if (m_settings.fixed_count == 0 && effort == RefineEffort::Full && !kept.empty() && kept.size() < refined.size() &&
+      kept.size() >= min_lights()) {
     refined = kept;
     problem.anchor(refined);
     problem.objective_with_best_intensities(refined);
@@ -286,7 +294,7 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
   if (m_cache) view.emplace(*m_cache, *m_scene, samples);
   ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
   ResponseModel reference(m_reference, samples, nullptr);
-  SampleRefineProblem problem(model, m_space, &reference);
+  SampleRefineProblem problem(model, *m_space, &reference);
   const double norm = samples.target_norm();
   Lighting fitted = lights;
   if (!problem.place(fitted)) fitted = lights;  // (the objective says so below)
@@ -297,7 +305,7 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
     Lighting kept;
     for (const auto& l : fitted)
       if (l.type == LightType::Spot || l.intensity != Rgb(0.f)) kept.push_back(l);
-    if (!kept.empty() && kept.size() < fitted.size()) {
+    if (!kept.empty() && kept.size() < fitted.size() && kept.size() >= min_lights()) {
       fitted = std::move(kept);
       problem.anchor(fitted);
       best = problem.objective_with_best_intensities(fitted);
@@ -324,20 +332,26 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
   return fitted;
 }
 
+size_t Solver::min_lights() const { return m_settings.fixed_count ? m_settings.fixed_count : m_settings.placement.min_count; }
+size_t Solver::max_lights() const { return m_settings.fixed_count ? m_settings.fixed_count : m_settings.placement.max_count; }
+
 Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, double& dbar) {
-  if (m_settings.fixed_count != 0) return lights;
+  const size_t least = min_lights(), most = max_lights();
+  if (m_settings.fixed_count != 0 && lights.size() >= least) return lights;
   const size_t m = samples.size();
   std::optional<LightCacheView> view;
   if (m_cache) view.emplace(*m_cache, *m_scene, samples);
   ResponseModel model(m_renderer, samples, view ? &*view : nullptr), exact(m_renderer, samples, nullptr);
-  const Vec3 extent = m_space.bounds().extent();
+  const Vec3 extent = m_space->bounds().extent();
   const float cell = std::max({extent.x, extent.y, extent.z}) / float(2 * std::max(1, m_settings.seeding.coarse_cells));
   // `base` plus the residual candidate that explains most of what `base`
   // leaves unexplained (by NNLS with the rest), refined and polished.
-  auto with_best_candidate = [&](const Lighting& base, double& result_dbar) -> std::optional<Lighting> {
+  // `quick`: the light is only placed and fitted (below the count asked for,
+  // lights are added regardless; one polish follows).
+  auto with_best_candidate = [&](const Lighting& base, double& result_dbar, bool quick) -> std::optional<Lighting> {
     std::vector<Rgb> phi = model.responses(base);
     const std::vector<Rgb> l0 = fit_intensities(phi, base.size(), samples);
-    const Lighting candidates = residual_candidates(combine(phi, l0, m), samples, m_space, cell, 8);
+    const Lighting candidates = residual_candidates(combine(phi, l0, m), samples, *m_space, cell, 8);
     if (candidates.empty()) return std::nullopt;
     const std::vector<Rgb> candidate_phi = model.responses(candidates);
     size_t best = 0;
@@ -351,19 +365,62 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
     }
     Lighting more = base;
     more.push_back(candidates[best]);
+    if (quick) {
+      const std::vector<Rgb> l = fit_intensities(model.responses(more), more.size(), samples);
+      for (size_t j = 0; j < more.size(); ++j) more[j].intensity = l[j];
+      result_dbar = best_dbar;
+      return more;
+    }
     more = refine_anchored(model, exact, more, result_dbar);
     return polish_with_reference(samples, more, false, result_dbar);
   };
-  for (int round = 0; round < 8 && dbar > kVisibleDbar; ++round) {
+  for (int round = 0; round < 8 + int(least) && (dbar > kVisibleDbar || lights.size() < least) && (most == 0 || lights.size() < most);
+       ++round) {
     // One light more, kept by eq. 9 — or, when several lamps are missing and
     // each explains only its share, by eq. 6's measure: it takes away at
-    // least ε_w of ‖Ψ‖ from the residual.
+    // least ε_w of ‖Ψ‖ from the residual. Below the count asked for it is
+    // kept anyway.
     double more_dbar = 0;
-    auto more = with_best_candidate(lights, more_dbar);
+    const bool forced = lights.size() < least;
+    auto more = with_best_candidate(lights, more_dbar, forced && lights.size() + 1 < least);
     const bool pays = more && more->size() > lights.size() &&
-                      (dbar >= m_settings.eps_impro * more_dbar || dbar - more_dbar >= m_settings.seeding.weak_threshold);
+                      (lights.size() < least || dbar >= m_settings.eps_impro * more_dbar ||
+                       dbar - more_dbar >= m_settings.seeding.weak_threshold);
     if (!pays) return lights;
     lights = std::move(*more);
+    dbar = more_dbar;
+  }
+  return lights;
+}
+
+Lighting Solver::add_spots(const SampleSet& samples, Lighting lights, double& dbar) {
+  const size_t m = samples.size();
+  const double norm = samples.target_norm();
+  std::optional<LightCacheView> view;
+  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
+  ResponseModel model(m_renderer, samples, view ? &*view : nullptr), exact(m_renderer, samples, nullptr);
+  const float link = 0.03f * m_scene->diagonal();
+  for (int round = 0; round < kMaxSpots && dbar > kSpotDbar; ++round) {
+    if (m_progress) m_progress("trying a spotlight");
+    std::vector<Rgb> phi = model.responses(lights);
+    const std::vector<Rgb> l = fit_intensities(phi, lights.size(), samples);
+    const auto pool = underlit_pool(combine(phi, l, m), samples, link);
+    const auto spot = spot_for_pool(pool, samples, *m_space, m_renderer, phi, lights.size());
+    if (!spot) break;
+    Lighting more = lights;
+    more.push_back(*spot);
+    // Point lights that only imitated the pool go (eq. 6), then refine.
+    phi = model.responses(more);
+    const std::vector<Rgb> fitted = fit_intensities(phi, more.size(), samples);
+    Lighting kept;
+    for (size_t j = 0; j < more.size(); ++j)
+      if (more[j].type == LightType::Spot || contribution(phi, j, fitted[j], samples) >= m_settings.seeding.weak_threshold * norm)
+        kept.push_back(more[j]), kept.back().intensity = fitted[j];
+    double more_dbar = 0;
+    kept = refine_anchored(model, exact, kept, more_dbar);
+    kept = polish_with_reference(samples, kept, false, more_dbar);
+    if (!(dbar >= m_settings.eps_impro * more_dbar)) break;  // eq. 9: the spot must pay
+    lights = std::move(kept);
     dbar = more_dbar;
   }
   return lights;
@@ -372,7 +429,7 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
 Lighting Solver::merge_close_pairs(const SampleSet& samples, Lighting lights, double& dbar) {
   if (m_settings.fixed_count != 0) return lights;
   auto weight = [](const Light& l) { return double(l.intensity.r + l.intensity.g + l.intensity.b); };
-  for (;;) {
+  while (lights.size() > min_lights()) {
     size_t a = 0, b = 0;
     float nearest = std::numeric_limits<float>::max();
     for (size_t i = 0; i < lights.size(); ++i)
@@ -387,7 +444,7 @@ Lighting Solver::merge_close_pairs(const SampleSet& samples, Lighting lights, do
     for (size_t i = 0; i < lights.size(); ++i)
       if (i != a && i != b) merged.push_back(lights[i]);
     const Vec3 position = Vec3((wa * DVec3(lights[a].position) + wb * DVec3(lights[b].position)) / (wa + wb));
-    if (!m_space.admissible(position)) return lights;
+    if (!m_space->admissible(position)) return lights;
     merged.insert(merged.begin() + std::ptrdiff_t(std::min(a, merged.size())), Light::point(position, lights[a].intensity + lights[b].intensity));
     double merged_dbar = 0;
     merged = polish_with_reference(samples, merged, false, merged_dbar);
@@ -395,6 +452,7 @@ Lighting Solver::merge_close_pairs(const SampleSet& samples, Lighting lights, do
     lights = std::move(merged);
     dbar = merged_dbar;
   }
+  return lights;
 }
 
 Lighting Solver::polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
@@ -464,7 +522,7 @@ void Solver::finish_report(const Target& target, const Lighting& lights, SolveRe
 void Solver::require_admissible(const Lighting& lights, const std::string& what) const {
   for (size_t j = 0; j < lights.size(); ++j) {
     const Vec3& p = lights[j].position;
-    const char* problem = !m_scene->light_bounds().contains(p) ? "is outside the space lights may take (the scene's bounds)"
+    const char* problem = !m_space->light_bounds().contains(p) ? "is outside the space lights may take (the scene's bounds)"
                           : m_rays->inside_solid(p)    ? "is inside solid geometry"
                                                        : nullptr;
     if (!problem) continue;
@@ -489,23 +547,87 @@ SampleSet Solver::sample(const Target& target, SolveReport& report) {
 
 Lighting Solver::solve(const Target& target, SolveReport& report) {
   Stopwatch total;
+  open_space_for(m_settings.spot_hints);
   require_admissible(m_settings.spot_hints, "spot hints");
-  ensure_cache(report);
-  SampleSet samples = sample(target, report);
-  Lighting found = solve_samples(samples, report);
-  Stopwatch polish_watch;
-  Lighting lights = polish_with_reference(samples, found, false, report.dbar_samples);
-  lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
-  lights = merge_close_pairs(samples, std::move(lights), report.dbar_samples);
-  report.seconds["reference polish"] += polish_watch.seconds();
-  lights = polish_residuals(target, std::move(samples), lights, false, report);
+  Lighting lights = solve_in_space(target, report);
+  // Lights inside cannot explain the target: perhaps it is lit from outside
+  // (a product, a facade). Look again beyond the open sides; keep the better.
+  const Bounds open = open_light_bounds(*m_scene), closed = m_scene->light_bounds();
+  const bool can_open = !m_settings.cache.open_space && (open.lo != closed.lo || open.hi != closed.hi);
+  if (m_settings.open_space_dbar > 0 && report.dbar > m_settings.open_space_dbar && can_open &&
+      !m_settings.placement.ceiling_offset) {
+    if (m_progress) m_progress("looking beyond the scene's bounds");
+    SolveReport open_report;
+    open_report.seconds = report.seconds;
+    open_space(true);
+    Lighting open_lights = solve_in_space(target, open_report);
+    if (open_report.dbar < 0.8 * report.dbar) {
+      open_report.dbar_closed = report.dbar;
+      open_report.open_space = true;
+      report = std::move(open_report);
+      lights = std::move(open_lights);
+    } else {
+      report.seconds = open_report.seconds;
+      report.dbar_closed = report.dbar;
+      open_space(false);
+    }
+  }
   finish_report(target, lights, report);
   report.seconds["total"] = total.seconds();
   return lights;
 }
 
+void Solver::open_space(bool open) {
+  const bool is_open = m_settings.cache.open_space;
+  if (open == is_open) return;
+  m_space.emplace(*m_rays, m_settings.placement, open ? std::optional<Bounds>(open_light_bounds(*m_scene)) : std::nullopt);
+  m_settings.cache.open_space = open;
+  std::swap(m_cache, m_other_cache);
+  m_hierarchy.reset();
+  m_cuts.clear();
+}
+
+void Solver::open_space_for(const Lighting& lights) {
+  const Bounds closed = m_scene->light_bounds(), open = open_light_bounds(*m_scene);
+  for (const auto& l : lights)
+    if (!closed.contains(l.position) && open.contains(l.position)) return open_space(true);
+}
+
+Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {
+  ensure_cache(report);
+  SampleSet samples = sample(target, report);
+  Lighting found = solve_samples(samples, report);
+  Stopwatch polish_watch;
+  Lighting lights = polish_with_reference(samples, found, false, report.dbar_samples);
+  if (m_settings.propose_spots && report.dbar_samples > kSpotDbar && m_settings.spot_hints.empty() && m_settings.fixed_count == 0) {
+    // Poorly explained by point lights: spotlights for the under-lit pools
+    // compete with more point lights; the fewer lights win unless the others
+    // improve D̄ by ε_impro (eq. 9).
+    double spot_dbar = report.dbar_samples;
+    Lighting with_spots = add_spots(samples, lights, spot_dbar);
+    lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
+    if (std::any_of(with_spots.begin(), with_spots.end(), [](const Light& l) { return l.type == LightType::Spot; })) {
+      with_spots = add_missing_lights(samples, std::move(with_spots), spot_dbar);
+      const size_t n_spots = with_spots.size(), n_points = lights.size();
+      const double d_spots = spot_dbar, d_points = report.dbar_samples, eps = m_settings.eps_impro;
+      const bool spots_win = n_spots == n_points ? d_spots < d_points
+                             : n_spots < n_points ? d_spots < eps * d_points  // the extra point lights do not pay
+                                                  : d_points >= eps * d_spots;  // the extra lights pay
+      if (spots_win) lights = std::move(with_spots), report.dbar_samples = spot_dbar;
+    }
+  } else {
+    lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
+  }
+  lights = merge_close_pairs(samples, std::move(lights), report.dbar_samples);
+  report.seconds["reference polish"] += polish_watch.seconds();
+  lights = polish_residuals(target, std::move(samples), lights, false, report);
+  finish_report(target, lights, report);
+  return lights;
+}
+
 Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveReport& report) {
   Stopwatch total;
+  open_space_for(lights);
   require_admissible(lights, "lights to fine-tune");
   ensure_cache(report);
   SampleSet samples = sample(target, report);
@@ -522,6 +644,8 @@ Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveRe
 
 Lighting Solver::add_lights(const Target& target, const Lighting& lights, SolveReport& report) {
   Stopwatch total;
+  open_space_for(lights);
+  open_space_for(m_settings.spot_hints);
   require_admissible(m_settings.spot_hints, "spot hints");
   ensure_cache(report);
   // ΔΨ = max(Ψ − I(L), 0): what the current lights leave to be lit.

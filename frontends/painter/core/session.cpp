@@ -76,6 +76,7 @@ const std::map<std::string, Spec>& specs() {
       {"fine_tune", {}},
       {"add_lights", {}},
       {"cut", {{{"k", Kind::Count}}, {"k"}, {}, {}, false}},
+      {"place", {{{"rules", Kind::String}}, {"rules"}, {}, {}, false}},
       {"undo", {}},
       {"redo", {}},
       {"save_target", {{{"path", Kind::String}}, {"path"}, {}, {}, false}},
@@ -163,7 +164,7 @@ std::string join(const std::vector<const char*>& names) {
 const std::vector<std::string>& action_types() {
   static const std::vector<std::string> types = {"camera",      "tool",         "brush",       "stroke",      "erase",
                                                  "shadow",      "erase_shadow", "spot_region", "adjust_region", "solve",
-                                                 "fine_tune",   "add_lights",   "cut",         "undo",        "redo",
+                                                 "fine_tune",   "add_lights",   "cut",         "place",       "undo",        "redo",
                                                  "save_target", "save_lights",  "load_target", "load_lights", "screenshot"};
   return types;
 }

@@ -241,6 +241,20 @@ void SessionPlayer::apply(const Action& action, size_t index) {
       const size_t k = p["k"].get<size_t>();
       if (m_job.cut_count() == 0) throw InputError(where + ": no solve to take light counts from");
       m_document.set_lights(m_job.cut_lights(k), "cut with " + std::to_string(k) + " lights");
+    } else if (type == "place") {
+      // Space-separated --place rules ("" clears them); a bad rule is an
+      // input error naming the action, and the rules stay as they were.
+      if (m_job.busy()) finish_solve(where);
+      PlacementRules rules;
+      std::istringstream words(p["rules"].get<std::string>());
+      std::string rule;
+      try {
+        while (words >> rule) rules.add(rule);
+      } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what());
+      }
+      m_job.set_placement(std::move(rules));
+      log(where + ": lights may stand: " + (p["rules"].get<std::string>().empty() ? "anywhere free" : p["rules"].get<std::string>()));
     } else if (type == "undo") {
       m_document.undo();
     } else if (type == "redo") {

@@ -159,6 +159,13 @@ size_t SolveJob::cut_count() const {
   return m_solver->cut_count();
 }
 
+void SolveJob::set_placement(PlacementRules rules) {
+  if (m_busy) throw std::logic_error("SolveJob::set_placement while busy");
+  m_options.solve.placement = std::move(rules);
+  m_solver.reset();  // the next job makes a Solver with the new rules
+  m_cuts_valid = false;
+}
+
 size_t SolveJob::cut_base_count() const {
   std::lock_guard<std::mutex> lock(m_mutex);
   return m_cut_base.size();

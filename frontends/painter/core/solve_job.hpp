@@ -101,6 +101,9 @@ public:
   size_t cut_base_count() const;
   /// Forgets the last solve's cuts (its result was not used).
   void discard_cuts();
+  /// Where the next solves' lights may stand (--place rules; the panel's
+  /// "Placement"). Not while busy (std::logic_error).
+  void set_placement(PlacementRules rules);
 
   /// The reference renderer (the user's settings), for the painter's own
   /// evaluations (region adjustment, shadow erase, display). Only while not

@@ -15,13 +15,19 @@ struct CountRule {
   double eps_opt = 0.15;       ///< ε_opt: cuts below this are worth refining
   double eps_impro = 1.6;      ///< ε_impro of eq. 9
   double visible_dbar = 5e-3;  ///< no light more is taken below this D̄ (a ratio of tiny D̄s is noise)
+  size_t min_count = 0, max_count = 0;  ///< the designer's bounds on the count (0: none)
+
+  /// `k` within [min_count, max_count].
+  size_t clamp(size_t k) const;
 };
 
 /// The cuts to refine, in increasing count: the fixed one; else the first
 /// N_cut with initial D̄ below ε_opt; else, when none is, N_cut from the
 /// knee — the smallest cut within ε_impro of the best one (beyond it more
-/// lights explain little more).
+/// lights explain little more). Always within the count bounds.
 std::vector<size_t> choose_cuts(const std::vector<double>& initial, const CountRule& rule);
+/// The same without the count bounds.
+std::vector<size_t> choose_cuts_unbounded(const std::vector<double>& initial, const CountRule& rule);
 
 /// Whether the walk needs cut `count − 1` (true) or `count + 1` (false)
 /// first, or neither: so the caller can refine it beside the first chosen cut.

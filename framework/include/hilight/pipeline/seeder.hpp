@@ -32,6 +32,11 @@ struct SeedResult {
 Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& samples, const LightSpace& space, float cell_size,
                              size_t count);
 
+/// Centres of a grid (`along_longest` cells on the longest axis of the
+/// space's bounds) where a light may stand: placed, admissible, clear of
+/// surfaces. Candidate apexes for spotlights.
+std::vector<Vec3> free_grid_points(const LightSpace& space, int along_longest);
+
 /// `spots`: spotlights the target asked for (fixed positions/directions);
 /// they join every NNLS and are never deleted.
 SeedResult seed_lights(ResponseModel& model, const LightSpace& space, const Lighting& spots, const SeedSettings& settings);

@@ -36,6 +36,15 @@ struct SolveSettings {
   bool residual_samples = true;      ///< after the fit, add the worst-explained points as samples and polish
   Lighting spot_hints;               ///< spotlights the user asked for
   PlacementRules placement;          ///< where lights may stand (--place)
+  /// When the lights found inside the scene's light bounds leave D̄ above
+  /// this, the solve looks again with lights allowed beyond its open sides
+  /// (open_light_bounds(): a product lit from outside) and keeps the better
+  /// answer. 0: never.
+  double open_space_dbar = 0.05;
+  /// Propose spotlights (no hints) for bright pools point lights leave
+  /// under-lit (pipeline/spot_proposals.hpp). Off by default: on the stage
+  /// sweep it lowers D̄ but does not yet recover the spots (docs/solve.md).
+  bool propose_spots = false;
 };
 
 /// The automatic sample count: one sample per 14 target points, within
@@ -64,6 +73,8 @@ struct SolveReport {
   size_t seed_lights = 0, seeds_tried = 0;
   size_t light_evaluations = 0;      ///< lights whose φ was computed
   std::string cache_state;           ///< "loaded", "built", "off"
+  bool open_space = false;           ///< lights were sought beyond the scene's bounds (open_light_bounds())
+  double dbar_closed = -1;           ///< when that was tried: D̄ of the best answer inside the bounds
   std::map<std::string, double> seconds;
 };
 
@@ -116,7 +127,18 @@ public:
   Lighting cut_lights(size_t k) const;
 
 private:
+  /// The whole solve in the current light space: seeding to residual polish.
+  Lighting solve_in_space(const Target& target, SolveReport& report);
+  /// Lights may stand beyond the scene's open sides from now on (its own
+  /// light cache); `open_space(false)` goes back.
+  void open_space(bool open);
+  /// Opens the space if some of `lights` stand outside the scene's light
+  /// bounds but within the open ones (lights from an earlier open solve).
+  void open_space_for(const Lighting& lights);
   void ensure_cache(SolveReport& report);
+  /// The count bounds: --lights N, else the placement's count:MIN:MAX (0: none).
+  size_t min_lights() const;
+  size_t max_lights() const;
   SampleSet sample(const Target& target, SolveReport& report);
   Lighting solve_samples(const SampleSet& samples, SolveReport& report);
   /// Refines `start`, anchored at it, then re-anchored at the result and polished.
@@ -130,6 +152,9 @@ private:
   /// Eq. 9 once more on the final lights: the nearest two point lights merged
   /// (eq. 7) and polished, kept while D̄ grows by less than ε_impro (a lamp
   /// the hierarchy left split in two).
+  /// Spotlights for the pools the lights leave under-lit (pipeline/
+  /// spot_proposals.hpp), one at a time, each kept if D̄ improves by ε_impro.
+  Lighting add_spots(const SampleSet& samples, Lighting lights, double& dbar);
   Lighting merge_close_pairs(const SampleSet& samples, Lighting lights, double& dbar);
   /// Polishes again with the worst-explained target points added to the samples.
   Lighting polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
@@ -140,14 +165,14 @@ private:
 
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
-  LightSpace m_space;
+  std::optional<LightSpace> m_space;  ///< where lights may stand now (closed or open)
   Renderer& m_renderer;
   Renderer& m_reference;
   Sampler& m_sampler;
   Optimizer& m_optimizer;
   SolveSettings m_settings;
   ProgressFn m_progress;
-  std::optional<LightCache> m_cache;
+  std::optional<LightCache> m_cache, m_other_cache;  ///< the current space's light cache, the other's
   std::optional<LightHierarchy> m_hierarchy;
   std::vector<Lighting> m_cuts;  ///< index k-1: the cut with k point lights
 };

@@ -1,0 +1,103 @@
+#include "hilight/light_bounds.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hilight {
+
+namespace {
+
+constexpr int kGrid = 32;
+
+/// Nearest surface depth seen from both faces across axis k, per grid cell.
+struct DepthMaps {
+  int k, a, b;
+  std::vector<float> from_lo, from_hi;
+};
+
+} // namespace
+
+std::array<float, 6> side_openness(const Scene& scene) {
+  const Bounds box = scene.bounds;
+  const Vec3 extent = box.extent();
+  std::array<DepthMaps, 3> maps;
+  for (int k = 0; k < 3; ++k) {
+    const float inf = std::numeric_limits<float>::infinity();
+    maps[k] = {k, (k + 1) % 3, (k + 2) % 3, std::vector<float>(kGrid * kGrid, inf), std::vector<float>(kGrid * kGrid, inf)};
+  }
+  auto cell_of = [&](float v, int axis) {
+    return extent[axis] > 0.f ? std::clamp(int((v - box.lo[axis]) / extent[axis] * kGrid), 0, kGrid - 1) : 0;
+  };
+  const float cell = std::max(extent.x, std::max(extent.y, extent.z)) / kGrid;
+  // Points spread over each triangle, closer than half a cell, mark the maps.
+  for (const auto& tri : scene.triangles) {
+    const Vec3 &p0 = scene.positions[tri[0]], &p1 = scene.positions[tri[1]], &p2 = scene.positions[tri[2]];
+    const float longest = std::max(glm::length(p1 - p0), std::max(glm::length(p2 - p1), glm::length(p0 - p2)));
+    const int n = std::clamp(int(std::ceil(2.f * longest / std::max(cell, 1e-30f))), 1, 64);
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const Vec3 p = p0 + (float(i) / n) * (p1 - p0) + (float(j) / n) * (p2 - p0);
+        for (auto& m : maps) {
+          const int c = cell_of(p[m.a], m.a) * kGrid + cell_of(p[m.b], m.b);
+          m.from_lo[c] = std::min(m.from_lo[c], p[m.k] - box.lo[m.k]);
+          m.from_hi[c] = std::min(m.from_hi[c], box.hi[m.k] - p[m.k]);
+        }
+      }
+  }
+  std::array<float, 6> open{};
+  for (const auto& m : maps) {
+    // A flat face (no extent along a or b) is one row of cells.
+    const int rows = extent[m.a] > 0.f ? kGrid : 1, cols = extent[m.b] > 0.f ? kGrid : 1;
+    const float deep = 0.25f * extent[m.k];
+    int lo_open = 0, hi_open = 0;
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c) {
+        lo_open += !(m.from_lo[r * kGrid + c] <= deep);
+        hi_open += !(m.from_hi[r * kGrid + c] <= deep);
+      }
+    open[2 * m.k] = float(lo_open) / float(rows * cols);
+    open[2 * m.k + 1] = float(hi_open) / float(rows * cols);
+  }
+  return open;
+}
+
+Bounds Scene::light_bounds() const {
+  // A room or a house keeps its walls (a light outside would only light
+  // their outer sides; open_light_bounds() is for targets lit from outside).
+  // A flat axis grows to half the diagonal: a floor with low objects gets
+  // height, on the side its surfaces face when most of their area faces one
+  // way (a light under an open floor would only light its underside).
+  Bounds b = bounds;
+  const float flat = 0.25f * diagonal(), grown = 0.5f * diagonal();
+  Vec3 facing(0.f), area(0.f);
+  for (const auto& tri : triangles) {
+    const Vec3 n = glm::cross(positions[tri[1]] - positions[tri[0]], positions[tri[2]] - positions[tri[0]]);  // length: twice the area
+    facing += n;
+    area += glm::abs(n);
+  }
+  for (int k = 0; k < 3; ++k) {
+    const float extent = b.hi[k] - b.lo[k];
+    if (extent >= flat) continue;
+    const float lean = area[k] > 0.f ? facing[k] / area[k] : 0.f;  // +1: all face +k
+    if (lean > 0.5f) b.hi[k] += grown - extent;
+    else if (lean < -0.5f) b.lo[k] -= grown - extent;
+    else {
+      b.lo[k] -= 0.5f * (grown - extent);
+      b.hi[k] += 0.5f * (grown - extent);
+    }
+  }
+  return b;
+}
+
+Bounds open_light_bounds(const Scene& scene) {
+  Bounds b = scene.light_bounds();
+  const auto open = side_openness(scene);
+  const float margin = kOpenMargin * scene.diagonal();
+  for (int k = 0; k < 3; ++k) {
+    if (open[2 * k] >= kOpenSide) b.lo[k] = std::min(b.lo[k], scene.bounds.lo[k] - margin);
+    if (open[2 * k + 1] >= kOpenSide) b.hi[k] = std::max(b.hi[k], scene.bounds.hi[k] + margin);
+  }
+  return b;
+}
+
+} // namespace hilight

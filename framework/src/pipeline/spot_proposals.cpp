@@ -1,0 +1,119 @@
+#include "hilight/pipeline/spot_proposals.hpp"
+
+#include "hilight/pipeline/fit.hpp"
+#include "hilight/pipeline/seeder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tbb/parallel_for.h>
+
+namespace hilight {
+
+namespace {
+
+float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+constexpr float kDegrees = 180.f / 3.14159265f;
+/// The soft edge a proposal starts with (the refinement finds the real one).
+constexpr float kStartFalloffDeg = 3.f;
+/// Apexes tried: grid cells along the light space's longest axis.
+constexpr int kApexCells = 12;
+
+} // namespace
+
+std::vector<size_t> underlit_pool(const std::vector<Rgb>& lit, const SampleSet& samples, float link) {
+  const size_t m = samples.size();
+  size_t worst = m;
+  float worst_missing = 0.f;
+  for (size_t i = 0; i < m; ++i) {
+    const float missing = samples.weight[i] * luminance(glm::max(samples.target[i] - lit[i], Rgb(0.f)));
+    if (missing > worst_missing) worst_missing = missing, worst = i;
+  }
+  if (worst == m) return {};
+  const float floor = luminance(samples.target[worst]) / 2.f;
+  const auto& pos = samples.points.positions;
+  std::vector<char> in(m, 0);
+  std::vector<size_t> pool{worst};
+  in[worst] = 1;
+  // Breadth-first over bright samples, linked by distance.
+  for (size_t head = 0; head < pool.size(); ++head)
+    for (size_t i = 0; i < m; ++i)
+      if (!in[i] && luminance(samples.target[i]) >= floor && glm::length(pos[i] - pos[pool[head]]) <= link) {
+        in[i] = 1;
+        pool.push_back(i);
+      }
+  return pool;
+}
+
+namespace {
+
+/// Unit spots for `pool` from each apex that sees its centroid: aimed at
+/// it, cutoffs covering 60%, 80% and all of the pool's angular radius.
+std::vector<Light> aimed_spots(const std::vector<Vec3>& apexes, const std::vector<size_t>& pool, const Vec3& centroid,
+                               const SampleSet& samples, const LightSpace& space) {
+  const auto& pos = samples.points.positions;
+  const RayScene& rays = space.rays();
+  std::vector<Light> spots;
+  for (const Vec3& apex : apexes) {
+    const Vec3 to = centroid - apex;
+    const float distance = glm::length(to);
+    if (!(distance > 0.f) || !space.admissible(apex) || rays.occluded(apex, to / distance, distance * 0.999f)) continue;
+    const Vec3 axis = to / distance;
+    float widest = 0.f;
+    for (size_t i : pool) {
+      const Vec3 d = pos[i] - apex;
+      const float len = glm::length(d);
+      if (len > 0.f && !rays.occluded(apex, d / len, len * 0.999f))
+        widest = std::max(widest, std::acos(std::clamp(glm::dot(axis, d / len), -1.f, 1.f)) * kDegrees);
+    }
+    // The pool's far edge may be a neighbour's light: narrower cones too.
+    if (widest < 85.f)
+      for (float share : {0.6f, 0.8f, 1.f})
+        spots.push_back(Light::spot(apex, axis, std::clamp(share * widest + kStartFalloffDeg, 2.f, 80.f), Rgb(1.f), kStartFalloffDeg));
+  }
+  return spots;
+}
+
+/// The spot (direct light, NNLS beside the base lights) that explains the samples best.
+std::optional<Light> best_spot(const std::vector<Light>& spots, const SampleSet& samples, Renderer& renderer,
+                               const std::vector<Rgb>& base_phi, size_t base_count) {
+  if (spots.empty()) return std::nullopt;
+  const size_t m = samples.size();
+  const std::vector<Rgb> phi = renderer.unit_responses(samples.points, spots, Transport::DirectOnly);
+  std::vector<double> dbar(spots.size());
+  tbb::parallel_for(size_t(0), spots.size(), [&](size_t s) {
+    std::vector<Rgb> with = base_phi;
+    with.insert(with.end(), phi.begin() + std::ptrdiff_t(s * m), phi.begin() + std::ptrdiff_t((s + 1) * m));
+    const std::vector<Rgb> l = fit_intensities(with, base_count + 1, samples);
+    dbar[s] = normalized_difference(combine(with, l, m), samples);
+  });
+  return spots[size_t(std::min_element(dbar.begin(), dbar.end()) - dbar.begin())];
+}
+
+} // namespace
+
+std::optional<Light> spot_for_pool(const std::vector<size_t>& pool, const SampleSet& samples, const LightSpace& space,
+                                   Renderer& renderer, const std::vector<Rgb>& base_phi, size_t base_count) {
+  if (pool.size() < 3) return std::nullopt;
+  DVec3 sum(0.0);
+  double weight = 0.0;
+  for (size_t i : pool) {
+    const double w = luminance(samples.target[i]);
+    sum += w * DVec3(samples.points.positions[i]), weight += w;
+  }
+  if (!(weight > 0)) return std::nullopt;
+  const Vec3 centroid = Vec3(sum / weight);
+  auto spot = best_spot(aimed_spots(free_grid_points(space, kApexCells), pool, centroid, samples, space), samples, renderer,
+                        base_phi, base_count);
+  // Coarse to fine (as the seeding): apexes around the best, closer each level.
+  const Vec3 extent = space.bounds().extent();
+  float step = 0.5f * std::max({extent.x, extent.y, extent.z}) / float(kApexCells);
+  for (int level = 0; spot && level < 3; ++level, step *= 0.5f) {
+    std::vector<Vec3> apexes;
+    for (int k = 0; k < 27; ++k) apexes.push_back(spot->position + step * Vec3(float(k % 3 - 1), float(k / 3 % 3 - 1), float(k / 9 - 1)));
+    if (auto finer = best_spot(aimed_spots(apexes, pool, centroid, samples, space), samples, renderer, base_phi, base_count)) spot = finer;
+  }
+  return spot;
+}
+
+} // namespace hilight

@@ -1,0 +1,46 @@
+// Where lights may stand before the designer's rules (hilight/light_bounds.hpp):
+// a room is closed on every side and keeps its walls; a product, a real glTF
+// engine and a stage without a ceiling are open, and their open space
+// reaches half a diagonal beyond the open sides.
+#include "hilight/built_scenes.hpp"
+#include "hilight/io/scene_io.hpp"
+#include "hilight/light_bounds.hpp"
+#include "hilight/real_model_scenes.hpp"
+#include "hilight/scene_builders.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+using namespace hilight;
+
+namespace {
+bool same(const Bounds& a, const Bounds& b) { return a.lo == b.lo && a.hi == b.hi; }
+} // namespace
+
+TEST_CASE("light bounds: a closed room has no open side and no space outside", "[light-bounds]") {
+  const Scene room = finish_scene(builders::furnished_room(), {});
+  for (float open : side_openness(room)) CHECK(open < kOpenSide);
+  CHECK(same(open_light_bounds(room), room.light_bounds()));
+}
+
+TEST_CASE("light bounds: a product and a stage are open; their open space reaches beyond", "[light-bounds]") {
+  const Scene product = finish_scene(builders::product_on_turntable().scene, {});
+  for (float open : side_openness(product)) CHECK(open >= kOpenSide);
+  const Bounds b = open_light_bounds(product);
+  const float margin = kOpenMargin * product.diagonal();
+  for (int k = 0; k < 3; ++k) {
+    CHECK(b.lo[k] <= product.bounds.lo[k] - margin + 1e-4f);
+    CHECK(b.hi[k] >= product.bounds.hi[k] + margin - 1e-4f);
+  }
+  const Scene stage = finish_scene(builders::stage().scene, {});
+  CHECK(side_openness(stage)[size_t(Side::PlusY)] >= kOpenSide);  // no ceiling
+  CHECK(open_light_bounds(stage).hi.y > stage.bounds.hi.y);
+}
+
+TEST_CASE("light bounds: the real glTF engine (assimp-testmodels) is open on every side", "[light-bounds][real]") {
+  const auto path = builders::testmodels_dir() / "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+  REQUIRE(std::filesystem::exists(path));
+  const Scene engine = load_scene(path);
+  for (float open : side_openness(engine)) CHECK(open >= kOpenSide);
+  CHECK(open_light_bounds(engine).hi.y > engine.bounds.hi.y + 0.4f * engine.diagonal());
+}
