@@ -38,7 +38,9 @@ float mean_position_error(const Lighting& found, const Lighting& truth) {
   return sum / float(truth.size());
 }
 
-Outcome recovery_trials(builders::BuiltScene (*make)(), uint64_t first_seed, size_t trials, size_t max_lights) {
+/// `propose_spots`: the experimental spotlight proposals (the stage).
+Outcome recovery_trials(builders::BuiltScene (*make)(), uint64_t first_seed, size_t trials, size_t max_lights,
+                        bool propose_spots = false) {
   builders::BuiltScene built = make();
   auto scene = std::make_shared<const Scene>(finish_scene(std::move(built.scene), {}));
   auto rays = std::make_shared<const RayScene>(*scene);
@@ -64,6 +66,7 @@ Outcome recovery_trials(builders::BuiltScene (*make)(), uint64_t first_seed, siz
     const Target target = read_target(dir / "target.ply", *scene, *rays);
     SolveSettings s;
     s.cache_dir = dir / "cache";
+    s.propose_spots = propose_spots;
     Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, s);
     SolveReport report;
     const Lighting found = solver.solve(target, report);
@@ -132,6 +135,6 @@ TEST_CASE("recovery sweep: 20 configurations a built scene (bench)", "[.][built-
                         Kind{"product", builders::product_on_turntable, 500, 3}, Kind{"stage", builders::stage, 600, 3}}) {
     if (only && std::strcmp(only, k.name) != 0) continue;
     const auto [first, count] = trial_range(k.seed, 20);
-    check_rate(recovery_trials(k.make, first, count, k.max_lights));
+    check_rate(recovery_trials(k.make, first, count, k.max_lights, k.make == builders::stage));
   }
 }

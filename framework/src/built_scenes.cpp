@@ -82,13 +82,18 @@ void add_furniture(Scene& s, const Vec3& room_lo, const Vec3& room_hi, int index
   add_box(s, Vec3(x0, room_lo.y, c.z - 0.6f), Vec3(x0 + 0.5f, room_lo.y + 1.8f, c.z + 0.6f), Rgb(0.7f, 0.7f, 0.65f), false, "cabinet");
 }
 
+BuiltScene named(const std::string& name, const std::string& builder) {
+  BuiltScene b;
+  b.name = name;
+  b.scene.source = "builtin:" + builder;
+  return b;
+}
+
 } // namespace
 
 BuiltScene two_storey_building() {
-  BuiltScene b;
-  b.name = "building";
+  BuiltScene b = named("building", "two_storey_building");
   Scene& s = b.scene;
-  s.source = "builtin:two_storey_building";
   const float W = 12.f, D = 8.f, H = 3.f, slab = 0.2f, ext = 0.25f, inner = 0.12f;
   const Rgb wall(0.75f), floor(0.55f, 0.5f, 0.45f), ceiling(0.85f);
   const Bounds stair_hole{Vec3(0.3f, 0.f, 0.3f), Vec3(1.5f, 0.f, 3.0f)};
@@ -126,10 +131,8 @@ BuiltScene two_storey_building() {
 }
 
 BuiltScene l_corridor() {
-  BuiltScene b;
-  b.name = "corridor";
+  BuiltScene b = named("corridor", "l_corridor");
   Scene& s = b.scene;
-  s.source = "builtin:l_corridor";
   const float L = 10.f, w = 2.f, h = 2.6f, t = 0.2f;
   const Rgb wall(0.8f), floor(0.5f, 0.45f, 0.4f);
   // Floor and ceiling slabs of both legs (leg A along x, leg B along z).
@@ -152,10 +155,8 @@ BuiltScene l_corridor() {
 }
 
 BuiltScene product_on_turntable() {
-  BuiltScene b;
-  b.name = "product";
+  BuiltScene b = named("product", "product_on_turntable");
   Scene& s = b.scene;
-  s.source = "builtin:product_on_turntable";
   add_cylinder(s, Vec3(0.f), 0.5f, 0.06f, 32, Rgb(0.3f), "turntable");
   add_cylinder(s, Vec3(0.f, 0.06f, 0.f), 0.16f, 0.4f, 24, Rgb(0.8f, 0.25f, 0.2f), "body");
   add_cylinder(s, Vec3(0.f, 0.46f, 0.f), 0.05f, 0.14f, 16, Rgb(0.85f), "neck");
@@ -182,10 +183,8 @@ BuiltScene product_on_turntable() {
 }
 
 BuiltScene stage() {
-  BuiltScene b;
-  b.name = "stage";
+  BuiltScene b = named("stage", "stage");
   Scene& s = b.scene;
-  s.source = "builtin:stage";
   const Rgb boards(0.45f, 0.35f, 0.25f), black(0.15f), flat(0.7f);
   add_box(s, Vec3(-6.f, -0.01f, -4.f), Vec3(6.f, 0.f, 6.f), Rgb(0.3f), false, "auditorium floor");
   add_box(s, Vec3(-4.f, 0.f, -3.f), Vec3(4.f, 0.8f, 2.f), boards, false, "platform");

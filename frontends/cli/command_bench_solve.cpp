@@ -36,6 +36,19 @@ double mean_position_error(const Lighting& truth, const Lighting& found) {
   return truth.empty() ? 0.0 : sum / double(truth.size());
 }
 
+/// Seconds of a solve that builds the light cache (the folder emptied first).
+double cold_solve_seconds(const std::shared_ptr<const Scene>& scene, const std::shared_ptr<const RayScene>& rays, Renderer& renderer,
+                          Renderer& reference, Sampler& sampler, Optimizer& optimizer, const Target& target,
+                          const std::string& cache_root) {
+  std::filesystem::remove_all(cache_root);
+  SolveSettings settings;
+  settings.cache_dir = cache_root;
+  Solver solver(scene, rays, renderer, reference, sampler, optimizer, settings);
+  SolveReport report;
+  solver.solve(target, report);
+  return report.seconds["total"];
+}
+
 /// A built scene (issue 10) with one seeded random configuration of `lights`
 /// lights: cold and warm solve, D̄, position error, the light cache's size.
 void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights, int repeat, const std::string& cache_root,
@@ -60,18 +73,13 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
   auto sampler = registry.create_sampler("importance", {});
   auto optimizer = registry.create_optimizer("varpro", {});
   std::vector<double> cold, warm, dbar, pos_err;
+  std::map<std::string, std::vector<double>> stages;
   size_t found_count = 0;
   double cache_mb = 0;
   for (int r = 0; r < repeat; ++r) {
-    std::filesystem::remove_all(cache_root);
+    cold.push_back(cold_solve_seconds(scene, rays, *renderer, *reference, *sampler, *optimizer, target, cache_root));
     SolveSettings settings;
     settings.cache_dir = cache_root;
-    {
-      Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);
-      SolveReport report;
-      solver.solve(target, report);
-      cold.push_back(report.seconds["total"]);
-    }
     uint64_t bytes = 0;
     for (const auto& f : list_cache(cache_root)) bytes += f.bytes;
     cache_mb = double(bytes) / (1024.0 * 1024.0);
@@ -79,15 +87,17 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
     SolveReport report;
     const Lighting found = solver.solve(target, report);
     warm.push_back(report.seconds["total"]);
+    for (const auto& [stage, seconds] : report.seconds) stages[stage].push_back(seconds);
     dbar.push_back(report.dbar);
     pos_err.push_back(mean_position_error(truth, found) / scene->diagonal());
     found_count = found.size();
   }
-  const nlohmann::json j = {{"figure", "solve_scene"}, {"scene", built.name}, {"vertices", scene->positions.size()},
+  nlohmann::json j = {{"figure", "solve_scene"}, {"scene", built.name}, {"vertices", scene->positions.size()},
                             {"true_lights", truth.size()}, {"found_lights", found_count}, {"repeat", repeat},
                             {"dbar_median", median(dbar)}, {"position_error_over_diagonal_median", median(pos_err)},
                             {"cold_seconds_median", median(cold)}, {"warm_seconds_median", median(warm)},
                             {"light_cache_mb", cache_mb}};
+  for (const auto& [stage, v] : stages) j["warm_stage_seconds_median"][stage] = median(v);
   std::printf("%s\n", j.dump().c_str());
   std::fflush(stdout);
 }
@@ -149,15 +159,9 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
     std::map<std::string, std::vector<double>> stages;
     size_t count = 0;
     for (int r = 0; r < repeat; ++r) {
-      std::filesystem::remove_all(cache_root);
+      cold.push_back(cold_solve_seconds(scene, rays, *renderer, *reference, *sampler, *optimizer, target, cache_root));
       SolveSettings settings;
       settings.cache_dir = cache_root;
-      {
-        Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);
-        SolveReport report;
-        solver.solve(target, report);
-        cold.push_back(report.seconds["total"]);
-      }
       Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);  // new session: cache from disk
       SolveReport report;
       Lighting found = solver.solve(target, report);
