@@ -61,7 +61,8 @@ size_t sample_count_for(size_t target_points) { return std::clamp<size_t>((targe
 
 Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
                Renderer& reference, Sampler& sampler, Optimizer& optimizer, SolveSettings settings, ProgressFn progress)
-    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_space(std::in_place, *m_rays, settings.placement), m_renderer(renderer), m_reference(reference), m_sampler(sampler),
+    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_closed_bounds(m_scene->light_bounds()),
+      m_open_bounds(open_light_bounds(*m_scene)), m_space(std::in_place, *m_rays, settings.placement, m_closed_bounds), m_renderer(renderer), m_reference(reference), m_sampler(sampler),
       m_optimizer(optimizer),
       m_settings(std::move(settings)), m_progress(std::move(progress)) {}
 
@@ -552,8 +553,8 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
   Lighting lights = solve_in_space(target, report);
   // Lights inside cannot explain the target: perhaps it is lit from outside
   // (a product, a facade). Look again beyond the open sides; keep the better.
-  const Bounds open = open_light_bounds(*m_scene), closed = m_scene->light_bounds();
-  const bool can_open = !m_settings.cache.open_space && (open.lo != closed.lo || open.hi != closed.hi);
+  const bool can_open = !m_settings.cache.open_space &&
+                        (m_open_bounds.lo != m_closed_bounds.lo || m_open_bounds.hi != m_closed_bounds.hi);
   if (m_settings.open_space_dbar > 0 && report.dbar > m_settings.open_space_dbar && can_open &&
       !m_settings.placement.ceiling_offset) {
     if (m_progress) m_progress("looking beyond the scene's bounds");
@@ -580,7 +581,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
 void Solver::open_space(bool open) {
   const bool is_open = m_settings.cache.open_space;
   if (open == is_open) return;
-  m_space.emplace(*m_rays, m_settings.placement, open ? std::optional<Bounds>(open_light_bounds(*m_scene)) : std::nullopt);
+  m_space.emplace(*m_rays, m_settings.placement, open ? m_open_bounds : m_closed_bounds);
   m_settings.cache.open_space = open;
   std::swap(m_cache, m_other_cache);
   m_hierarchy.reset();
@@ -588,9 +589,8 @@ void Solver::open_space(bool open) {
 }
 
 void Solver::open_space_for(const Lighting& lights) {
-  const Bounds closed = m_scene->light_bounds(), open = open_light_bounds(*m_scene);
   for (const auto& l : lights)
-    if (!closed.contains(l.position) && open.contains(l.position)) return open_space(true);
+    if (!m_closed_bounds.contains(l.position) && m_open_bounds.contains(l.position)) return open_space(true);
 }
 
 Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {

@@ -165,6 +165,7 @@ private:
 
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
+  Bounds m_closed_bounds, m_open_bounds;  ///< light_bounds() and open_light_bounds(), computed once
   std::optional<LightSpace> m_space;  ///< where lights may stand now (closed or open)
   Renderer& m_renderer;
   Renderer& m_reference;
