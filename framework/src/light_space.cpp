@@ -42,7 +42,7 @@ std::string box_text(const Bounds& b) {
 
 bool PlacementRules::any() const {
   return ceiling_offset || std::isfinite(min_height) || std::isfinite(max_height) || !boxes.empty() || !excluded.empty() ||
-         min_count || max_count;
+         min_count || max_count || !regions.empty() || !not_regions.empty();
 }
 
 std::string PlacementRules::describe() const {
@@ -52,6 +52,8 @@ std::string PlacementRules::describe() const {
   for (const auto& b : boxes) s << "box:" << box_text(b) << ' ';
   for (const auto& b : excluded) s << "exclude:" << box_text(b) << ' ';
   if (min_count || max_count) s << "count:" << min_count << ':' << max_count << ' ';
+  for (int r : regions) s << "region:" << r << ' ';
+  for (int r : not_regions) s << "not-region:" << r << ' ';
   std::string out = s.str();
   if (!out.empty()) out.pop_back();
   return out;
@@ -72,6 +74,11 @@ void PlacementRules::add(const std::string& rule) {
     boxes.push_back(box_of(rest, rule));
   } else if (kind == "exclude") {
     excluded.push_back(box_of(rest, rule));
+  } else if (kind == "region" || kind == "not-region") {
+    const auto v = numbers(rest, rule, ':');
+    if (v.size() != 1 || v[0] < 0.f || v[0] > 1e6f || v[0] != std::floor(v[0]))
+      throw InputError("--place " + rule + ": write " + kind + ":K with K a region number from `hilight info`");
+    (kind == "region" ? regions : not_regions).push_back(int(v[0]));
   } else if (kind == "count") {
     const auto v = numbers(rest, rule, ':');
     const bool whole = std::all_of(v.begin(), v.end(), [](float x) { return x >= 1.f && x <= 1e4f && x == std::floor(x); });
@@ -79,12 +86,12 @@ void PlacementRules::add(const std::string& rule) {
       throw InputError("--place " + rule + ": write count:MIN:MAX or count:N (whole numbers from 1, MIN <= MAX)");
     min_count = size_t(v.front()), max_count = size_t(v.back());
   } else {
-    throw InputError("--place " + rule + ": unknown rule (ceiling[:OFFSET], height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX)");
+    throw InputError("--place " + rule + ": unknown rule (ceiling[:OFFSET], height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX, region:K, not-region:K)");
   }
 }
 
 LightSpace::LightSpace(const RayScene& rays, PlacementRules rules, std::optional<Bounds> light_bounds)
-    : m_rays(rays), m_rules(std::move(rules)), m_light_bounds(light_bounds ? *light_bounds : rays.scene().light_bounds()), m_bounds(m_light_bounds) {
+    : m_rays(rays), m_rules(std::move(rules)), m_regions(rays), m_light_bounds(light_bounds ? *light_bounds : rays.scene().light_bounds()), m_bounds(m_light_bounds) {
   m_bounds.lo.y = std::max(m_bounds.lo.y, m_rules.min_height);
   m_bounds.hi.y = std::min(m_bounds.hi.y, m_rules.max_height);
   if (!m_rules.boxes.empty()) {
@@ -92,6 +99,19 @@ LightSpace::LightSpace(const RayScene& rays, PlacementRules rules, std::optional
     for (const auto& b : m_rules.boxes) allowed.extend(b.lo), allowed.extend(b.hi);
     m_bounds.lo = glm::max(m_bounds.lo, allowed.lo);
     m_bounds.hi = glm::min(m_bounds.hi, allowed.hi);
+  }
+  {
+    const int count = int(m_regions.list().size());
+    for (int r : m_rules.regions)
+      if (r >= count) throw InputError("--place region:" + std::to_string(r) + ": the scene has " + std::to_string(count) + " regions (hilight info lists them)");
+    for (int r : m_rules.not_regions)
+      if (r >= count) throw InputError("--place not-region:" + std::to_string(r) + ": the scene has " + std::to_string(count) + " regions (hilight info lists them)");
+    if (!m_rules.regions.empty()) {  // spread candidates over the allowed regions only
+      Bounds allowed;
+      for (int r : m_rules.regions) allowed.extend(m_regions.list()[size_t(r)].box.lo), allowed.extend(m_regions.list()[size_t(r)].box.hi);
+      m_bounds.lo = glm::max(m_bounds.lo, allowed.lo);
+      m_bounds.hi = glm::min(m_bounds.hi, allowed.hi);
+    }
   }
   if (m_rules.ceiling_offset) {  // lights move up to the ceilings: spread candidates over the whole height
     m_bounds.lo.y = m_light_bounds.lo.y;
@@ -103,6 +123,12 @@ bool LightSpace::satisfies_boxes_and_height(const Vec3& p) const {
   if (p.y < m_rules.min_height || p.y > m_rules.max_height) return false;
   for (const auto& b : m_rules.excluded)
     if (b.contains(p)) return false;
+  if (!m_rules.regions.empty() || !m_rules.not_regions.empty()) {
+    const int region = m_regions.at(p);
+    for (int r : m_rules.not_regions)
+      if (region == r) return false;
+    if (!m_rules.regions.empty() && std::find(m_rules.regions.begin(), m_rules.regions.end(), region) == m_rules.regions.end()) return false;
+  }
   if (m_rules.boxes.empty()) return true;
   for (const auto& b : m_rules.boxes)
     if (b.contains(p)) return true;

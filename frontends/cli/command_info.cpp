@@ -2,6 +2,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "hilight/light_bounds.hpp"
+#include "hilight/regions.hpp"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -48,6 +49,18 @@ int run_info(const std::vector<std::string>& args) {
   const Bounds ob = open_light_bounds(scene);
   std::printf("open space [%g, %g, %g] .. [%g, %g, %g] (lit from outside)\n", ob.lo.x, ob.lo.y, ob.lo.z, ob.hi.x, ob.hi.y, ob.hi.z);
   std::printf("max edge   %g\n", scene.max_edge);
+  // The connected parts of free space: what --place region:K / not-region:K name.
+  const RayScene rays(scene);
+  const Regions regions(rays);
+  std::printf("regions    %zu (connected free space; --place region:K, not-region:K)\n", regions.list().size());
+  for (const auto& r : regions.list()) {
+    if (r.id >= 20) {
+      std::printf("  ... %zu more\n", regions.list().size() - 20);
+      break;
+    }
+    std::printf("  %-3d [%g, %g, %g] .. [%g, %g, %g], volume %g\n", r.id, r.box.lo.x, r.box.lo.y, r.box.lo.z, r.box.hi.x, r.box.hi.y,
+                r.box.hi.z, r.volume);
+  }
   return 0;
 }
 

@@ -4,6 +4,7 @@
 /// seeder, the refinement, the final polish and the solver's checks all ask
 /// this one object. Scenes are +Y up.
 #include "hilight/ray_scene.hpp"
+#include "hilight/regions.hpp"
 
 #include <limits>
 #include <optional>
@@ -22,13 +23,16 @@ struct PlacementRules {
   std::vector<Bounds> boxes;     ///< if any: inside one of them
   std::vector<Bounds> excluded;  ///< never inside these
   size_t min_count = 0, max_count = 0;  ///< point lights in the answer (0: no bound)
+  std::vector<int> regions;      ///< if any: in one of these regions (hilight/regions.hpp)
+  std::vector<int> not_regions;  ///< never in these regions
 
   bool any() const;
   /// As the CLI spells them, for messages ("ceiling:0.2 height:1:2.5").
   std::string describe() const;
   /// Parses one `--place` rule: ceiling[:OFFSET], height:MIN:MAX,
   /// box:X0,Y0,Z0,X1,Y1,Z1, exclude:X0,Y0,Z0,X1,Y1,Z1, count:MIN:MAX (or
-  /// count:N). Throws InputError.
+  /// count:N), region:K, not-region:K (K as `hilight info` lists them).
+  /// Throws InputError.
   void add(const std::string& rule);
 };
 
@@ -52,6 +56,8 @@ public:
   /// Where a light aimed at `p` stands: on the ceiling mount if that rule is
   /// set (moved vertically), else `p`; nothing if it cannot stand there.
   std::optional<Vec3> place(const Vec3& p) const;
+  /// The rooms: connected parts of free space in the scene's light bounds.
+  const Regions& regions() const { return m_regions; }
   /// `p` satisfies every rule and is free (in the light bounds, out of solids).
   bool admissible(const Vec3& p) const;
 
@@ -59,6 +65,7 @@ private:
   bool satisfies_boxes_and_height(const Vec3& p) const;
   const RayScene& m_rays;
   PlacementRules m_rules;
+  Regions m_regions;
   Bounds m_light_bounds, m_bounds;
 };
 

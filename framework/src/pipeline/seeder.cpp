@@ -86,6 +86,26 @@ SeedResult fit_and_delete(const Lighting& lights, std::vector<Rgb> phi, const Li
   return result;
 }
 
+/// Beyond the paper: a room the scene-wide grid barely reaches (a small
+/// closed room of a large building) gets cells of its own, at a density set
+/// by its own size (half the coarse count along its longest axis).
+void add_region_cells(std::vector<Cell>& cells, const LightSpace& space, int coarse) {
+  constexpr size_t kEnoughCells = 4;
+  const Regions& regions = space.regions();
+  std::vector<size_t> in_region(regions.list().size(), 0);
+  for (const auto& c : cells)
+    if (int r = regions.at(c.centre); r >= 0) ++in_region[size_t(r)];
+  for (const Region& r : regions.list()) {
+    if (in_region[size_t(r.id)] >= kEnoughCells) continue;
+    Bounds box;
+    box.lo = glm::max(r.box.lo, space.bounds().lo);
+    box.hi = glm::min(r.box.hi, space.bounds().hi);
+    if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z)) continue;
+    for (const auto& c : free_cells(coarse_cells(box, std::max(2, coarse / 2)), space))
+      if (regions.at(c.centre) == r.id) cells.push_back(c);
+  }
+}
+
 } // namespace
 
 Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& samples, const LightSpace& space, float cell_size,
@@ -135,6 +155,7 @@ SeedResult seed_lights(ResponseModel& model, const LightSpace& space, const Ligh
   result.phi = spot_phi;
   std::vector<Cell> cells = free_cells(coarse_cells(space.bounds(), settings.coarse_cells), space);
   float cell_size = cells.empty() ? 0.f : cells.front().size;
+  add_region_cells(cells, space, settings.coarse_cells);
   for (int level = 0; level < settings.iterations && !cells.empty(); ++level) {
     Lighting lights;
     for (const auto& c : cells) lights.push_back(Light::point(c.centre, Rgb(1.f)));

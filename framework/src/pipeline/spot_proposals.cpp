@@ -1,7 +1,9 @@
 #include "hilight/pipeline/spot_proposals.hpp"
 
 #include "hilight/pipeline/fit.hpp"
+#include "hilight/pipeline/light_parameters.hpp"
 #include "hilight/pipeline/seeder.hpp"
+#include "hilight/pipeline/simplex.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +32,7 @@ std::vector<size_t> underlit_pool(const std::vector<Rgb>& lit, const SampleSet& 
     if (missing > worst_missing) worst_missing = missing, worst = i;
   }
   if (worst == m) return {};
-  const float floor = luminance(samples.target[worst]) / 2.f;
+  const float floor = luminance(samples.target[worst]) / 10.f;
   const auto& pos = samples.points.positions;
   std::vector<char> in(m, 0);
   std::vector<size_t> pool{worst};
@@ -48,7 +50,7 @@ std::vector<size_t> underlit_pool(const std::vector<Rgb>& lit, const SampleSet& 
 namespace {
 
 /// Unit spots for `pool` from each apex that sees its centroid: aimed at
-/// it, cutoffs covering 60%, 80% and all of the pool's angular radius.
+/// it, cutoffs covering 50% to all of the pool's angular radius.
 std::vector<Light> aimed_spots(const std::vector<Vec3>& apexes, const std::vector<size_t>& pool, const Vec3& centroid,
                                const SampleSet& samples, const LightSpace& space) {
   const auto& pos = samples.points.positions;
@@ -68,7 +70,7 @@ std::vector<Light> aimed_spots(const std::vector<Vec3>& apexes, const std::vecto
     }
     // The pool's far edge may be a neighbour's light: narrower cones too.
     if (widest < 85.f)
-      for (float share : {0.6f, 0.8f, 1.f})
+      for (float share : {0.5f, 0.65f, 0.8f, 0.9f, 1.f})
         spots.push_back(Light::spot(apex, axis, std::clamp(share * widest + kStartFalloffDeg, 2.f, 80.f), Rgb(1.f), kStartFalloffDeg));
   }
   return spots;
@@ -113,7 +115,36 @@ std::optional<Light> spot_for_pool(const std::vector<size_t>& pool, const Sample
     for (int k = 0; k < 27; ++k) apexes.push_back(spot->position + step * Vec3(float(k % 3 - 1), float(k / 3 % 3 - 1), float(k / 9 - 1)));
     if (auto finer = best_spot(aimed_spots(apexes, pool, centroid, samples, space), samples, renderer, base_phi, base_count)) spot = finer;
   }
+  if (spot) spot = refine_spot(*spot, samples, space, renderer, base_phi, base_count);
   return spot;
+}
+
+Light refine_spot(const Light& start, const SampleSet& samples, const LightSpace& space, Renderer& renderer,
+                  const std::vector<Rgb>& base_phi, size_t base_count) {
+  const size_t m = samples.size();
+  const float scale = space.rays().scene().diagonal();
+  auto spot_of = [&](const std::vector<double>& x) {
+    Light l = start;
+    read_geometry(l, scale, x, 0);
+    return l;
+  };
+  auto objective = [&](const std::vector<double>& x) {
+    const Light l = spot_of(x);
+    if (!space.admissible(l.position)) return 1e30;
+    std::vector<Rgb> with = base_phi;
+    const std::vector<Rgb> phi = renderer.unit_responses(samples.points, std::span<const Light>(&l, 1), Transport::DirectOnly);
+    with.insert(with.end(), phi.begin(), phi.end());
+    const std::vector<Rgb> intensities = fit_intensities(with, base_count + 1, samples);
+    return normalized_difference(combine(with, intensities, m), samples);
+  };
+  std::vector<double> x, steps;
+  append_geometry(start, scale, x, steps);
+  for (auto& s : steps) s *= 0.5;  // the screening put it close
+  SimplexSettings settings;
+  settings.max_evaluations = 300;
+  // Restarted once: a fresh simplex escapes a collapsed one.
+  for (int restart = 0; restart < 2; ++restart) x = nelder_mead(objective, x, steps, settings).x;
+  return spot_of(x);
 }
 
 } // namespace hilight

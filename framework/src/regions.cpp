@@ -1,0 +1,108 @@
+#include "hilight/regions.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hilight {
+
+Regions::Regions(const RayScene& rays, int cells) {
+  const Scene& scene = rays.scene();
+  m_box = scene.light_bounds();
+  const Vec3 extent = m_box.extent();
+  m_voxel = std::max({extent.x, extent.y, extent.z}) / float(std::max(cells, 1));
+  if (!(m_voxel > 0.f)) return;
+  for (int k = 0; k < 3; ++k) m_dims[k] = std::max(1, int(std::ceil(extent[k] / m_voxel)));
+  const size_t n = size_t(m_dims.x) * m_dims.y * m_dims.z;
+  auto voxel_of = [&](const Vec3& p) {
+    glm::ivec3 v;
+    for (int k = 0; k < 3; ++k) v[k] = std::clamp(int((p[k] - m_box.lo[k]) / m_voxel), 0, m_dims[k] - 1);
+    return v;
+  };
+  // Walls: every voxel a surface passes through (points on each triangle
+  // closer than half a voxel apart).
+  std::vector<char> wall(n, 0);
+  for (const auto& tri : scene.triangles) {
+    const Vec3 &p0 = scene.positions[tri[0]], &p1 = scene.positions[tri[1]], &p2 = scene.positions[tri[2]];
+    const float longest = std::max({glm::length(p1 - p0), glm::length(p2 - p1), glm::length(p0 - p2)});
+    const int steps = std::clamp(int(std::ceil(2.f * longest / m_voxel)), 1, 256);
+    for (int i = 0; i <= steps; ++i)
+      for (int j = 0; i + j <= steps; ++j) {
+        const glm::ivec3 v = voxel_of(p0 + (float(i) / steps) * (p1 - p0) + (float(j) / steps) * (p2 - p0));
+        wall[index(v.x, v.y, v.z)] = 1;
+      }
+  }
+  // Flood fill the free voxels, 6-connected.
+  m_label.assign(n, -1);
+  std::vector<std::pair<size_t, size_t>> parts;  // (voxels, first voxel) per provisional label
+  std::vector<size_t> stack;
+  int next = 0;
+  for (size_t start = 0; start < n; ++start) {
+    if (wall[start] || m_label[start] >= 0) continue;
+    size_t count = 0;
+    m_label[start] = next;
+    stack.push_back(start);
+    while (!stack.empty()) {
+      const size_t i = stack.back();
+      stack.pop_back();
+      ++count;
+      const int x = int(i % size_t(m_dims.x)), y = int(i / size_t(m_dims.x) % size_t(m_dims.y)), z = int(i / (size_t(m_dims.x) * m_dims.y));
+      const int nb[6][3] = {{x - 1, y, z}, {x + 1, y, z}, {x, y - 1, z}, {x, y + 1, z}, {x, y, z - 1}, {x, y, z + 1}};
+      for (const auto& q : nb) {
+        if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= m_dims.x || q[1] >= m_dims.y || q[2] >= m_dims.z) continue;
+        const size_t j = index(q[0], q[1], q[2]);
+        if (!wall[j] && m_label[j] < 0) m_label[j] = next, stack.push_back(j);
+      }
+    }
+    parts.emplace_back(count, start);
+    ++next;
+  }
+  // Keep the parts that are not inside solids and hold a light with room to
+  // spare (pockets between furniture parts, under a stair: not regions),
+  // numbered by size.
+  constexpr size_t kMinVoxels = 32;
+  auto centre = [&](size_t i) {
+    const glm::ivec3 v(int(i % size_t(m_dims.x)), int(i / size_t(m_dims.x) % size_t(m_dims.y)), int(i / (size_t(m_dims.x) * m_dims.y)));
+    return m_box.lo + (Vec3(v) + 0.5f) * m_voxel;
+  };
+  std::vector<int> order(parts.size());
+  for (size_t p = 0; p < parts.size(); ++p) order[p] = int(p);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return parts[size_t(a)].first > parts[size_t(b)].first; });
+  std::vector<int> renamed(parts.size(), -1);
+  for (int p : order)
+    if (parts[size_t(p)].first >= kMinVoxels && !rays.inside_solid(centre(parts[size_t(p)].second))) {
+      renamed[size_t(p)] = int(m_regions.size());
+      m_regions.push_back({int(m_regions.size()), {}, 0.0});
+    }
+  const double cell_volume = double(m_voxel) * m_voxel * m_voxel;
+  for (size_t i = 0; i < n; ++i) {
+    if (m_label[i] < 0) continue;
+    m_label[i] = renamed[size_t(m_label[i])];
+    if (m_label[i] < 0) continue;
+    Region& r = m_regions[size_t(m_label[i])];
+    r.box.extend(centre(i) - 0.5f * m_voxel);
+    r.box.extend(centre(i) + 0.5f * m_voxel);
+    r.volume += cell_volume;
+  }
+}
+
+int Regions::at(const Vec3& p) const {
+  if (m_label.empty() || !m_box.contains(p)) return -1;
+  glm::ivec3 v;
+  for (int k = 0; k < 3; ++k) v[k] = std::clamp(int((p[k] - m_box.lo[k]) / m_voxel), 0, m_dims[k] - 1);
+  if (int label = m_label[index(v.x, v.y, v.z)]; label >= 0) return label;
+  // In a wall's voxel: the region of the nearest free voxel two or fewer away.
+  int best = -1;
+  float best_d = 1e30f;
+  for (int dz = -2; dz <= 2; ++dz)
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx) {
+        const glm::ivec3 q = v + glm::ivec3(dx, dy, dz);
+        if (q.x < 0 || q.y < 0 || q.z < 0 || q.x >= m_dims.x || q.y >= m_dims.y || q.z >= m_dims.z) continue;
+        const int label = m_label[index(q.x, q.y, q.z)];
+        const float d = glm::length(m_box.lo + (Vec3(q) + 0.5f) * m_voxel - p);
+        if (label >= 0 && d < best_d) best_d = d, best = label;
+      }
+  return best;
+}
+
+} // namespace hilight
