@@ -42,7 +42,7 @@ float mean_position_error(const Lighting& found, const Lighting& truth) {
 Outcome recovery_trials(builders::BuiltScene (*make)(), uint64_t first_seed, size_t trials, size_t max_lights,
                         bool propose_spots = false) {
   builders::BuiltScene built = make();
-  auto scene = std::make_shared<const Scene>(finish_scene(std::move(built.scene), {}));
+  auto scene = std::make_shared<const Scene>(finish_scene(built.scene, {}));
   auto rays = std::make_shared<const RayScene>(*scene);
   const Bounds space = built.far_lights ? open_light_bounds(*scene) : scene->light_bounds();
   auto free = [&](const Vec3& p, float clearance) {
@@ -110,6 +110,30 @@ std::pair<uint64_t, size_t> trial_range(uint64_t first, size_t count) {
 void check_rate(const Outcome& o) { CHECK(o.right * 100 >= o.trials * 95); }
 
 } // namespace
+
+TEST_CASE("built scenes: random lights stand apart, clear of surfaces, in their zones", "[built]") {
+  for (auto make : {builders::two_storey_building, builders::l_corridor, builders::product_on_turntable, builders::stage}) {
+    const builders::BuiltScene built = make();
+    INFO(built.name);
+    const Scene scene = finish_scene(built.scene, {});
+    const RayScene rays(scene);
+    const Bounds space = built.far_lights ? open_light_bounds(scene) : scene.light_bounds();
+    std::mt19937_64 rng(11);
+    const builders::RandomLightRules rules;
+    const Lighting lights = builders::random_lights(built, rng, rules, [&](const Vec3& p, float clearance) {
+      return space.contains(p) && !rays.inside_solid(p) && !rays.closest_point(p, clearance).valid();
+    });
+    REQUIRE(lights.size() >= rules.min_count);
+    for (size_t i = 0; i < lights.size(); ++i) {
+      CHECK_FALSE(rays.closest_point(lights[i].position, 0.99f * rules.clearance * scene.diagonal()).valid());
+      bool in_zone = false;
+      for (const auto& z : built.zones) in_zone |= z.contains(lights[i].position);
+      CHECK(in_zone);
+      for (size_t j = i + 1; j < lights.size(); ++j)
+        CHECK(glm::length(lights[i].position - lights[j].position) > rules.min_apart * scene.diagonal());
+    }
+  }
+}
 
 TEST_CASE("recovery: random lights in the rooms of a two-storey building", "[solve][built][recovery]") {
   check_rate(recovery_trials(builders::two_storey_building, 300, 2, 8));

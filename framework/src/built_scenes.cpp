@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace hilight::builders {
 
@@ -127,6 +128,7 @@ BuiltScene two_storey_building() {
     const float top = (step + 1) * (H / 15.f), z = 0.3f + step * (2.7f / 14.f);
     add_box(s, Vec3(stair_hole.lo.x, 0.f, z), Vec3(stair_hole.hi.x, top, z + 2.7f / 14.f), Rgb(0.6f, 0.5f, 0.4f), false, "stair");
   }
+  b.scene.update_bounds();  // random_lights() measures distances by it
   return b;
 }
 
@@ -151,6 +153,7 @@ BuiltScene l_corridor() {
   add_box(s, Vec3(L - 0.45f, 0.f, 6.f), Vec3(L, 0.45f, 7.5f), Rgb(0.5f, 0.35f, 0.25f), false, "bench");
   b.zones.push_back({Vec3(0.4f, 1.6f, 0.4f), Vec3(L - 0.4f, h - 0.15f, w - 0.4f)});
   b.zones.push_back({Vec3(L - w + 0.4f, 1.6f, w + 0.4f), Vec3(L - 0.4f, h - 0.15f, L - 0.4f)});
+  b.scene.update_bounds();  // random_lights() measures distances by it
   return b;
 }
 
@@ -179,6 +182,7 @@ BuiltScene product_on_turntable() {
     b.zones.push_back({c - Vec3(0.2f, 0.4f, 0.2f), c + Vec3(0.2f, 0.4f, 0.2f)});
   }
   b.far_lights = true;
+  b.scene.update_bounds();  // random_lights() measures distances by it
   return b;
 }
 
@@ -197,6 +201,7 @@ BuiltScene stage() {
   b.zones.push_back({Vec3(-3.5f, 4.2f, -2.f), Vec3(3.5f, 4.8f, 0.5f)});
   b.zones.push_back({Vec3(-3.5f, 3.5f, 2.5f), Vec3(3.5f, 4.5f, 4.5f)});
   b.aim = Bounds{Vec3(-3.f, 0.8f, -2.f), Vec3(3.f, 0.8f, 1.5f)};
+  b.scene.update_bounds();  // random_lights() measures distances by it
   return b;
 }
 
@@ -205,6 +210,7 @@ Lighting random_lights(const BuiltScene& built, std::mt19937_64& rng, const Rand
   std::uniform_real_distribution<float> u(0.f, 1.f);
   auto in = [&](const Bounds& b) { return b.lo + Vec3(u(rng), u(rng), u(rng)) * (b.hi - b.lo); };
   const float diagonal = built.scene.bounds.diagonal();
+  if (!(diagonal > 0.f)) throw std::invalid_argument("random_lights: the built scene has no bounds (" + built.name + ")");
   const Vec3 centre = built.scene.bounds.center();
   const size_t count = std::uniform_int_distribution<size_t>(rules.min_count, rules.max_count)(rng);
   Lighting lights;

@@ -53,7 +53,7 @@ double cold_solve_seconds(const std::shared_ptr<const Scene>& scene, const std::
 /// lights: cold and warm solve, D̄, position error, the light cache's size.
 void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights, int repeat, const std::string& cache_root,
                        Registry& registry) {
-  auto scene = std::make_shared<const Scene>(finish_scene(std::move(built.scene), {max_edge}));
+  auto scene = std::make_shared<const Scene>(finish_scene(built.scene, {max_edge}));
   auto rays = std::make_shared<const RayScene>(*scene);
   const Bounds space = built.far_lights ? open_light_bounds(*scene) : scene->light_bounds();
   std::mt19937_64 rng(7);
