@@ -5,6 +5,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/light_space.hpp"
+#include "hilight/pipeline/diagnosis.hpp"
 #include "hilight/pipeline/solve_renderers.hpp"
 #include "hilight/pipeline/solver.hpp"
 #include "hilight/real_model_scenes.hpp"
@@ -79,6 +80,7 @@ TEST_CASE("regions: region:K and not-region:K hold in every result", "[regions][
     REQUIRE_FALSE(lights.empty());
     for (const auto& l : lights) CHECK(regions.at(l.position) == left);
     CHECK(report.dbar > 0.2);  // the right room's light is excluded: its half of the target stays dark
+    CHECK(report.unreachable > 0.25);  // ...and the report says why: no allowed place sees it
   }
   // Unlimited, both lights are found.
   SolveSettings s;
@@ -87,6 +89,7 @@ TEST_CASE("regions: region:K and not-region:K hold in every result", "[regions][
   SolveReport report;
   CHECK(solver.solve(target, report).size() == 2);
   CHECK(report.dbar < 0.01);
+  CHECK(unreachable_share(target, LightSpace(*rays)) < 0.05);  // lit points are seen from somewhere (but corners a coarse grid misses)
   // A region that does not exist, or a malformed one, is an input error.
   PlacementRules missing;
   missing.add("region:9");

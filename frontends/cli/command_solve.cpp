@@ -51,6 +51,7 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
           {"seed_lights_tried", r.seeds_tried},
           {"light_cache", r.cache_state},
           {"open_space", r.open_space},
+          {"unreachable_share", r.unreachable},
           {"dbar_inside_bounds", r.dbar_closed >= 0 ? nlohmann::json(r.dbar_closed) : nlohmann::json(nullptr)},
           {"renderer", renderer},
           {"optimizer", optimizer},
@@ -179,7 +180,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   }
   // No silent failure: a poor fit says so, whatever --quiet says, and
   // --max-dbar makes it an error (after the files are written).
-  if (report.dbar > kPoorFit)
+  if (report.dbar > kPoorFit && report.unreachable >= 0.1)
+    std::fprintf(stderr,
+                 "hilight: warning: poor fit, D̄ %.1f%% with %zu light%s: %.0f%% of the target's light is on points that no "
+                 "place a light may stand can see (inside solids, or shut off by the --place rules)\n",
+                 100.0 * report.dbar, report.chosen, report.chosen == 1 ? "" : "s", 100.0 * report.unreachable);
+  else if (report.dbar > kPoorFit)
     std::fprintf(stderr,
                  "hilight: warning: poor fit, D̄ %.1f%% with %zu light%s: parts of the target may be unreachable by any "
                  "light, or need a spotlight (--spot-hints) or another light count (--lights N)\n",

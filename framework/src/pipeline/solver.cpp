@@ -4,6 +4,7 @@
 #include "hilight/light_bounds.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/pipeline/cuts.hpp"
+#include "hilight/pipeline/diagnosis.hpp"
 #include "hilight/pipeline/fit.hpp"
 #include "hilight/pipeline/gauss_newton.hpp"
 #include "hilight/pipeline/refine_problem.hpp"
@@ -27,6 +28,8 @@ constexpr double kVisibleDbar = 5e-3;
 /// and how many at most.
 constexpr double kSpotDbar = 0.02;
 constexpr int kMaxSpots = 4;
+/// D̄ above which a solve looks for the cause (unreachable painted light).
+constexpr double kPoorFitDbar = 0.05;
 
 class Stopwatch {
 public:
@@ -574,6 +577,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
     }
   }
   finish_report(target, lights, report);
+  if (report.dbar > kPoorFitDbar) report.unreachable = unreachable_share(target, *m_space);
   report.seconds["total"] = total.seconds();
   return lights;
 }

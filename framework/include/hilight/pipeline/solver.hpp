@@ -75,6 +75,7 @@ struct SolveReport {
   std::string cache_state;           ///< "loaded", "built", "off"
   bool open_space = false;           ///< lights were sought beyond the scene's bounds (open_light_bounds())
   double dbar_closed = -1;           ///< when that was tried: D̄ of the best answer inside the bounds
+  double unreachable = 0;            ///< poor fits: share of the target no allowed light position sees (diagnosis.hpp)
   std::map<std::string, double> seconds;
 };
 
