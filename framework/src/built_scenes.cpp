@@ -1,5 +1,6 @@
 #include "hilight/built_scenes.hpp"
 
+#include "hilight/light_bounds.hpp"
 #include "hilight/scene_builders.hpp"
 
 #include <algorithm>
@@ -128,7 +129,6 @@ BuiltScene two_storey_building() {
     const float top = (step + 1) * (H / 15.f), z = 0.3f + step * (2.7f / 14.f);
     add_box(s, Vec3(stair_hole.lo.x, 0.f, z), Vec3(stair_hole.hi.x, top, z + 2.7f / 14.f), Rgb(0.6f, 0.5f, 0.4f), false, "stair");
   }
-  b.scene.update_bounds();  // random_lights() measures distances by it
   return b;
 }
 
@@ -153,7 +153,6 @@ BuiltScene l_corridor() {
   add_box(s, Vec3(L - 0.45f, 0.f, 6.f), Vec3(L, 0.45f, 7.5f), Rgb(0.5f, 0.35f, 0.25f), false, "bench");
   b.zones.push_back({Vec3(0.4f, 1.6f, 0.4f), Vec3(L - 0.4f, h - 0.15f, w - 0.4f)});
   b.zones.push_back({Vec3(L - w + 0.4f, 1.6f, w + 0.4f), Vec3(L - 0.4f, h - 0.15f, L - 0.4f)});
-  b.scene.update_bounds();  // random_lights() measures distances by it
   return b;
 }
 
@@ -182,7 +181,6 @@ BuiltScene product_on_turntable() {
     b.zones.push_back({c - Vec3(0.2f, 0.4f, 0.2f), c + Vec3(0.2f, 0.4f, 0.2f)});
   }
   b.far_lights = true;
-  b.scene.update_bounds();  // random_lights() measures distances by it
   return b;
 }
 
@@ -201,17 +199,20 @@ BuiltScene stage() {
   b.zones.push_back({Vec3(-3.5f, 4.2f, -2.f), Vec3(3.5f, 4.8f, 0.5f)});
   b.zones.push_back({Vec3(-3.5f, 3.5f, 2.5f), Vec3(3.5f, 4.5f, 4.5f)});
   b.aim = Bounds{Vec3(-3.f, 0.8f, -2.f), Vec3(3.f, 0.8f, 1.5f)};
-  b.scene.update_bounds();  // random_lights() measures distances by it
   return b;
 }
 
-Lighting random_lights(const BuiltScene& built, std::mt19937_64& rng, const RandomLightRules& rules,
-                       const std::function<bool(const Vec3&, float)>& free) {
+Lighting random_lights(const BuiltScene& built, const RayScene& rays, std::mt19937_64& rng, const RandomLightRules& rules) {
   std::uniform_real_distribution<float> u(0.f, 1.f);
   auto in = [&](const Bounds& b) { return b.lo + Vec3(u(rng), u(rng), u(rng)) * (b.hi - b.lo); };
-  const float diagonal = built.scene.bounds.diagonal();
-  if (!(diagonal > 0.f)) throw std::invalid_argument("random_lights: the built scene has no bounds (" + built.name + ")");
-  const Vec3 centre = built.scene.bounds.center();
+  const Scene& scene = rays.scene();
+  const float diagonal = scene.diagonal();
+  if (!(diagonal > 0.f)) throw std::invalid_argument("random_lights: an empty scene (" + built.name + ")");
+  const Vec3 centre = scene.bounds.center();
+  const Bounds space = built.far_lights ? open_light_bounds(scene) : scene.light_bounds();
+  auto free = [&](const Vec3& p, float clearance) {
+    return space.contains(p) && !rays.inside_solid(p) && !rays.closest_point(p, clearance).valid();
+  };
   const size_t count = std::uniform_int_distribution<size_t>(rules.min_count, rules.max_count)(rng);
   Lighting lights;
   for (int attempt = 0; attempt < 20000 && lights.size() < count; ++attempt) {

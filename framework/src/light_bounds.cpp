@@ -29,21 +29,14 @@ std::array<float, 6> side_openness(const Scene& scene) {
     return extent[axis] > 0.f ? std::clamp(int((v - box.lo[axis]) / extent[axis] * kGrid), 0, kGrid - 1) : 0;
   };
   const float cell = std::max(extent.x, std::max(extent.y, extent.z)) / kGrid;
-  // Points spread over each triangle, closer than half a cell, mark the maps.
-  for (const auto& tri : scene.triangles) {
-    const Vec3 &p0 = scene.positions[tri[0]], &p1 = scene.positions[tri[1]], &p2 = scene.positions[tri[2]];
-    const float longest = std::max(glm::length(p1 - p0), std::max(glm::length(p2 - p1), glm::length(p0 - p2)));
-    const int n = std::clamp(int(std::ceil(2.f * longest / std::max(cell, 1e-30f))), 1, 64);
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; i + j <= n; ++j) {
-        const Vec3 p = p0 + (float(i) / n) * (p1 - p0) + (float(j) / n) * (p2 - p0);
-        for (auto& m : maps) {
-          const int c = cell_of(p[m.a], m.a) * kGrid + cell_of(p[m.b], m.b);
-          m.from_lo[c] = std::min(m.from_lo[c], p[m.k] - box.lo[m.k]);
-          m.from_hi[c] = std::min(m.from_hi[c], box.hi[m.k] - p[m.k]);
-        }
-      }
-  }
+  // Points on the surfaces, closer than half a cell, mark the maps.
+  scene.for_each_surface_point(0.5f * cell, [&](const Vec3& p) {
+    for (auto& m : maps) {
+      const int c = cell_of(p[m.a], m.a) * kGrid + cell_of(p[m.b], m.b);
+      m.from_lo[c] = std::min(m.from_lo[c], p[m.k] - box.lo[m.k]);
+      m.from_hi[c] = std::min(m.from_hi[c], box.hi[m.k] - p[m.k]);
+    }
+  });
   std::array<float, 6> open{};
   for (const auto& m : maps) {
     // A flat face (no extent along a or b) is one row of cells.

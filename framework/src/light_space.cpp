@@ -90,8 +90,9 @@ void PlacementRules::add(const std::string& rule) {
   }
 }
 
-LightSpace::LightSpace(const RayScene& rays, PlacementRules rules, std::optional<Bounds> light_bounds)
-    : m_rays(rays), m_rules(std::move(rules)), m_regions(rays), m_light_bounds(light_bounds ? *light_bounds : rays.scene().light_bounds()), m_bounds(m_light_bounds) {
+LightSpace::LightSpace(const RayScene& rays, PlacementRules rules, std::optional<Bounds> light_bounds,
+                       std::shared_ptr<const Regions> regions)
+    : m_rays(rays), m_rules(std::move(rules)), m_regions(regions ? std::move(regions) : std::make_shared<const Regions>(rays)), m_light_bounds(light_bounds ? *light_bounds : rays.scene().light_bounds()), m_bounds(m_light_bounds) {
   m_bounds.lo.y = std::max(m_bounds.lo.y, m_rules.min_height);
   m_bounds.hi.y = std::min(m_bounds.hi.y, m_rules.max_height);
   if (!m_rules.boxes.empty()) {
@@ -100,18 +101,17 @@ LightSpace::LightSpace(const RayScene& rays, PlacementRules rules, std::optional
     m_bounds.lo = glm::max(m_bounds.lo, allowed.lo);
     m_bounds.hi = glm::min(m_bounds.hi, allowed.hi);
   }
-  {
-    const int count = int(m_regions.list().size());
-    for (int r : m_rules.regions)
-      if (r >= count) throw InputError("--place region:" + std::to_string(r) + ": the scene has " + std::to_string(count) + " regions (hilight info lists them)");
-    for (int r : m_rules.not_regions)
-      if (r >= count) throw InputError("--place not-region:" + std::to_string(r) + ": the scene has " + std::to_string(count) + " regions (hilight info lists them)");
-    if (!m_rules.regions.empty()) {  // spread candidates over the allowed regions only
-      Bounds allowed;
-      for (int r : m_rules.regions) allowed.extend(m_regions.list()[size_t(r)].box.lo), allowed.extend(m_regions.list()[size_t(r)].box.hi);
-      m_bounds.lo = glm::max(m_bounds.lo, allowed.lo);
-      m_bounds.hi = glm::min(m_bounds.hi, allowed.hi);
-    }
+  const auto& rooms = m_regions->list();
+  for (const auto& [kind, ids] : {std::pair{"region", &m_rules.regions}, std::pair{"not-region", &m_rules.not_regions}})
+    for (int r : *ids)
+      if (size_t(r) >= rooms.size())
+        throw InputError(std::string("--place ") + kind + ":" + std::to_string(r) + ": the scene has " + std::to_string(rooms.size()) +
+                         " regions (hilight info lists them)");
+  if (!m_rules.regions.empty()) {  // spread candidates over the allowed regions only
+    Bounds allowed;
+    for (int r : m_rules.regions) allowed.extend(rooms[size_t(r)].box.lo), allowed.extend(rooms[size_t(r)].box.hi);
+    m_bounds.lo = glm::max(m_bounds.lo, allowed.lo);
+    m_bounds.hi = glm::min(m_bounds.hi, allowed.hi);
   }
   if (m_rules.ceiling_offset) {  // lights move up to the ceilings: spread candidates over the whole height
     m_bounds.lo.y = m_light_bounds.lo.y;
@@ -124,7 +124,7 @@ bool LightSpace::satisfies_boxes_and_height(const Vec3& p) const {
   for (const auto& b : m_rules.excluded)
     if (b.contains(p)) return false;
   if (!m_rules.regions.empty() || !m_rules.not_regions.empty()) {
-    const int region = m_regions.at(p);
+    const int region = m_regions->at(p);
     for (int r : m_rules.not_regions)
       if (region == r) return false;
     if (!m_rules.regions.empty() && std::find(m_rules.regions.begin(), m_rules.regions.end(), region) == m_rules.regions.end()) return false;

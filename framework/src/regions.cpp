@@ -21,16 +21,10 @@ Regions::Regions(const RayScene& rays, int cells) {
   // Walls: every voxel a surface passes through (points on each triangle
   // closer than half a voxel apart).
   std::vector<char> wall(n, 0);
-  for (const auto& tri : scene.triangles) {
-    const Vec3 &p0 = scene.positions[tri[0]], &p1 = scene.positions[tri[1]], &p2 = scene.positions[tri[2]];
-    const float longest = std::max({glm::length(p1 - p0), glm::length(p2 - p1), glm::length(p0 - p2)});
-    const int steps = std::clamp(int(std::ceil(2.f * longest / m_voxel)), 1, 256);
-    for (int i = 0; i <= steps; ++i)
-      for (int j = 0; i + j <= steps; ++j) {
-        const glm::ivec3 v = voxel_of(p0 + (float(i) / steps) * (p1 - p0) + (float(j) / steps) * (p2 - p0));
-        wall[index(v.x, v.y, v.z)] = 1;
-      }
-  }
+  scene.for_each_surface_point(0.5f * m_voxel, [&](const Vec3& p) {
+    const glm::ivec3 v = voxel_of(p);
+    wall[index(v.x, v.y, v.z)] = 1;
+  });
   // Flood fill the free voxels, 6-connected.
   m_label.assign(n, -1);
   std::vector<std::pair<size_t, size_t>> parts;  // (voxels, first voxel) per provisional label

@@ -1,5 +1,8 @@
 #include "hilight/scene.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace hilight {
 
 std::vector<Rgb> Scene::vertex_albedo() const {
@@ -21,6 +24,16 @@ Vec3 Scene::face_normal(size_t t) const {
   return len > 0.f ? n / len : Vec3(0.f, 0.f, 1.f);
 }
 
+
+void Scene::for_each_surface_point(float spacing, const std::function<void(const Vec3&)>& visit) const {
+  for (const auto& tri : triangles) {
+    const Vec3 &p0 = positions[tri[0]], &p1 = positions[tri[1]], &p2 = positions[tri[2]];
+    const float longest = std::max({glm::length(p1 - p0), glm::length(p2 - p1), glm::length(p0 - p2)});
+    const int steps = std::clamp(int(std::ceil(longest / std::max(spacing, 1e-30f))), 1, 256);
+    for (int i = 0; i <= steps; ++i)
+      for (int j = 0; i + j <= steps; ++j) visit(p0 + (float(i) / steps) * (p1 - p0) + (float(j) / steps) * (p2 - p0));
+  }
+}
 
 void Scene::update_bounds() {
   bounds = Bounds{};

@@ -6,7 +6,6 @@
 #include "commands.hpp"
 #include "hilight/built_scenes.hpp"
 #include "hilight/io/lights_json.hpp"
-#include "hilight/light_bounds.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/pipeline/solver.hpp"
 #include "hilight/scene_builders.hpp"
@@ -55,13 +54,10 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
                        Registry& registry) {
   auto scene = std::make_shared<const Scene>(finish_scene(built.scene, {max_edge}));
   auto rays = std::make_shared<const RayScene>(*scene);
-  const Bounds space = built.far_lights ? open_light_bounds(*scene) : scene->light_bounds();
   std::mt19937_64 rng(7);
   builders::RandomLightRules rules;
   rules.min_count = rules.max_count = lights;
-  const Lighting truth = builders::random_lights(built, rng, rules, [&](const Vec3& p, float clearance) {
-    return space.contains(p) && !rays->inside_solid(p) && !rays->closest_point(p, clearance).valid();
-  });
+  const Lighting truth = builders::random_lights(built, *rays, rng, rules);
   auto reference = registry.create_renderer("embree", {});
   reference->set_scene(scene);
   const std::vector<Rgb> values = reference->illuminate(SurfacePoints::from_vertices(*scene), truth);

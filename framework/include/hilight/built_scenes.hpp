@@ -4,10 +4,10 @@
 /// kind of scene stands: the recovery tests, `hilight bench solve` and the
 /// painter's tests share them. Metres, +Y up; raw meshes (finish_scene()).
 #include "hilight/lighting.hpp"
+#include "hilight/ray_scene.hpp"
 #include "hilight/scene.hpp"
 
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <random>
 #include <string>
@@ -51,9 +51,9 @@ struct RandomLightRules {
 
 /// A seeded random configuration: 1–8 lights (rules) in random zones, random
 /// colours, some zones left dark; spots aimed into `aim` with random cutoffs
-/// where the scene has one. Positions are free (out of solids, clear of
-/// surfaces), tested with `free(p, clearance)`.
-Lighting random_lights(const BuiltScene& built, std::mt19937_64& rng, const RandomLightRules& rules,
-                       const std::function<bool(const Vec3&, float)>& free);
+/// where the scene has one. `rays`: over the finished scene. Positions are
+/// free: in its light bounds (the open ones for far lights), out of solids,
+/// clear of surfaces.
+Lighting random_lights(const BuiltScene& built, const RayScene& rays, std::mt19937_64& rng, const RandomLightRules& rules);
 
 } // namespace hilight::builders

@@ -7,6 +7,7 @@
 #include "hilight/regions.hpp"
 
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,8 +41,10 @@ class LightSpace {
 public:
   /// `light_bounds`: where lights may stand before the rules; the scene's
   /// light_bounds() unless given (open_light_bounds() for a scene lit from
-  /// outside).
-  LightSpace(const RayScene& rays, PlacementRules rules = {}, std::optional<Bounds> light_bounds = {});
+  /// outside). `regions`: the scene's rooms if already found (they do not
+  /// depend on the bounds or the rules), else found here.
+  LightSpace(const RayScene& rays, PlacementRules rules = {}, std::optional<Bounds> light_bounds = {},
+             std::shared_ptr<const Regions> regions = nullptr);
 
   const PlacementRules& rules() const { return m_rules; }
   const RayScene& rays() const { return m_rays; }
@@ -57,7 +60,8 @@ public:
   /// set (moved vertically), else `p`; nothing if it cannot stand there.
   std::optional<Vec3> place(const Vec3& p) const;
   /// The rooms: connected parts of free space in the scene's light bounds.
-  const Regions& regions() const { return m_regions; }
+  const Regions& regions() const { return *m_regions; }
+  const std::shared_ptr<const Regions>& shared_regions() const { return m_regions; }
   /// `p` satisfies every rule and is free (in the light bounds, out of solids).
   bool admissible(const Vec3& p) const;
 
@@ -65,7 +69,7 @@ private:
   bool satisfies_boxes_and_height(const Vec3& p) const;
   const RayScene& m_rays;
   PlacementRules m_rules;
-  Regions m_regions;
+  std::shared_ptr<const Regions> m_regions;
   Bounds m_light_bounds, m_bounds;
 };
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,10 @@ struct Scene {
   std::vector<Rgb> vertex_albedo() const;
   /// Unit geometric normal of triangle t (from its winding).
   Vec3 face_normal(size_t t) const;
+  /// Calls `visit` with points spread over every triangle, closer than
+  /// `spacing` apart (at most 256 steps along a triangle's edge): what a
+  /// rasterisation of the surfaces into cells of twice that size needs.
+  void for_each_surface_point(float spacing, const std::function<void(const Vec3&)>& visit) const;
   /// Recomputes bounds from positions.
   void update_bounds();
 };

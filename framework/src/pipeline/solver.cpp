@@ -585,7 +585,8 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
 void Solver::open_space(bool open) {
   const bool is_open = m_settings.cache.open_space;
   if (open == is_open) return;
-  m_space.emplace(*m_rays, m_settings.placement, open ? m_open_bounds : m_closed_bounds);
+  std::shared_ptr<const Regions> regions = m_space->shared_regions();  // copied: emplace destroys the old space first
+  m_space.emplace(*m_rays, m_settings.placement, open ? m_open_bounds : m_closed_bounds, std::move(regions));
   m_settings.cache.open_space = open;
   std::swap(m_cache, m_other_cache);
   m_hierarchy.reset();

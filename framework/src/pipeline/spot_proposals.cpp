@@ -21,6 +21,15 @@ constexpr float kStartFalloffDeg = 3.f;
 /// Apexes tried: grid cells along the light space's longest axis.
 constexpr int kApexCells = 12;
 
+/// D̄ of the base lights plus one unit spot (its responses `spot_phi`, m
+/// values), intensities by NNLS.
+double dbar_with(const std::vector<Rgb>& base_phi, size_t base_count, std::span<const Rgb> spot_phi, const SampleSet& samples) {
+  std::vector<Rgb> with = base_phi;
+  with.insert(with.end(), spot_phi.begin(), spot_phi.end());
+  const std::vector<Rgb> intensities = fit_intensities(with, base_count + 1, samples);
+  return normalized_difference(combine(with, intensities, samples.size()), samples);
+}
+
 } // namespace
 
 std::vector<size_t> underlit_pool(const std::vector<Rgb>& lit, const SampleSet& samples, float link) {
@@ -84,10 +93,7 @@ std::optional<Light> best_spot(const std::vector<Light>& spots, const SampleSet&
   const std::vector<Rgb> phi = renderer.unit_responses(samples.points, spots, Transport::DirectOnly);
   std::vector<double> dbar(spots.size());
   tbb::parallel_for(size_t(0), spots.size(), [&](size_t s) {
-    std::vector<Rgb> with = base_phi;
-    with.insert(with.end(), phi.begin() + std::ptrdiff_t(s * m), phi.begin() + std::ptrdiff_t((s + 1) * m));
-    const std::vector<Rgb> l = fit_intensities(with, base_count + 1, samples);
-    dbar[s] = normalized_difference(combine(with, l, m), samples);
+    dbar[s] = dbar_with(base_phi, base_count, std::span<const Rgb>(phi).subspan(s * m, m), samples);
   });
   return spots[size_t(std::min_element(dbar.begin(), dbar.end()) - dbar.begin())];
 }
@@ -121,7 +127,6 @@ std::optional<Light> spot_for_pool(const std::vector<size_t>& pool, const Sample
 
 Light refine_spot(const Light& start, const SampleSet& samples, const LightSpace& space, Renderer& renderer,
                   const std::vector<Rgb>& base_phi, size_t base_count) {
-  const size_t m = samples.size();
   const float scale = space.rays().scene().diagonal();
   auto spot_of = [&](const std::vector<double>& x) {
     Light l = start;
@@ -131,11 +136,8 @@ Light refine_spot(const Light& start, const SampleSet& samples, const LightSpace
   auto objective = [&](const std::vector<double>& x) {
     const Light l = spot_of(x);
     if (!space.admissible(l.position)) return 1e30;
-    std::vector<Rgb> with = base_phi;
-    const std::vector<Rgb> phi = renderer.unit_responses(samples.points, std::span<const Light>(&l, 1), Transport::DirectOnly);
-    with.insert(with.end(), phi.begin(), phi.end());
-    const std::vector<Rgb> intensities = fit_intensities(with, base_count + 1, samples);
-    return normalized_difference(combine(with, intensities, m), samples);
+    return dbar_with(base_phi, base_count, renderer.unit_responses(samples.points, std::span<const Light>(&l, 1), Transport::DirectOnly),
+                     samples);
   };
   std::vector<double> x, steps;
   append_geometry(start, scale, x, steps);
