@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr uint32_t kFormatVersion = 5;  // 4: grid over light_bounds(); 5: flat axes grow on the side surfaces face
+constexpr uint32_t kFormatVersion = 6;  // 4: grid over light_bounds(); 5: flat axes grow on the side surfaces face; 6: smooth points shaded at the point (rendering model)
 constexpr char kMagic[8] = {'H', 'L', 'C', 'A', 'C', 'H', 'E', '1'};
 
 } // namespace

@@ -161,6 +161,28 @@ bool closest_callback(RTCPointQueryFunctionArguments* args) {
   return false;
 }
 
+struct OwnSurfaceQuery {
+  const Scene* scene;
+  Vec3 p, normal;
+  uint32_t own_triangle;
+  float radius, same_position;
+  bool foreign = false;
+};
+
+bool own_surface_callback(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<OwnSurfaceQuery*>(args->userPtr);
+  if (q->foreign || args->primID == q->own_triangle) return false;
+  const auto& tri = q->scene->triangles[args->primID];
+  const auto& pos = q->scene->positions;
+  float u, v;
+  Vec3 c = closest_on_triangle(q->p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v);
+  if (glm::length(c - q->p) > q->radius) return false;
+  for (uint32_t w : tri)
+    if (glm::length(pos[w] - q->p) <= q->same_position && glm::dot(q->scene->normals[w], q->normal) >= 0.999f) return false;
+  q->foreign = true;
+  return false;
+}
+
 } // namespace
 
 Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& normal_hint) const {
@@ -173,6 +195,18 @@ Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& norma
   ClosestQuery q{&m_scene, &m_face_normals, p, normal_hint, m_epsilon, Hit{}, max_distance * max_distance};
   rtcPointQuery(m_rtc_scene, &query, &context, closest_callback, &q);
   return q.best;
+}
+
+bool RayScene::only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius) const {
+  RTCPointQuery query;
+  query.x = p.x; query.y = p.y; query.z = p.z;
+  query.radius = radius;
+  query.time = 0.f;
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  OwnSurfaceQuery q{&m_scene, p, normal, own_triangle, radius, radius / 20.f};
+  rtcPointQuery(m_rtc_scene, &query, &context, own_surface_callback, &q);
+  return !q.foreign;
 }
 
 bool RayScene::inside_solid(const Vec3& p) const {
@@ -193,16 +227,17 @@ bool RayScene::inside_solid(const Vec3& p) const {
 
 namespace hilight {
 
-Vec3 shading_point(const RayScene& rays, const Vec3& position, const Vec3& normal) {
+ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec3& normal) {
   const Scene& scene = rays.scene();
   Hit h = rays.closest_point(position, 1e-3f * scene.diagonal(), normal);
-  if (!h.valid()) return position;
+  if (!h.valid()) return {position, false};
+  if (rays.only_own_surface_near(position, normal, h.triangle, 2.f * rays.epsilon())) return {position, true, h.triangle};
   const auto& tri = scene.triangles[h.triangle];
   Vec3 to_centroid = (scene.positions[tri[0]] + scene.positions[tri[1]] + scene.positions[tri[2]]) / 3.f - position;
   float distance = glm::length(to_centroid);
-  if (!(distance > 0.f)) return position;
+  if (!(distance > 0.f)) return {position, false, h.triangle};
   float step = std::min(std::max(0.01f * distance, 3e-3f), 0.1f * distance);
-  return position + to_centroid * (step / distance);
+  return {position + to_centroid * (step / distance), false, h.triangle};
 }
 
 } // namespace hilight

@@ -23,11 +23,13 @@ struct PreparedLight {
   float angular(const Vec3& to_point) const { return spot ? cone.factor(glm::dot(direction, to_point)) : 1.f; }
 };
 
-/// Irradiance on one side of a surface at `p` — the side `side_normal` points
-/// to — from `light` at unit intensity: |n·ω| · S / d² · V, zero for a light
-/// behind that side. Counts the shadow ray it casts in `rays`.
-inline float unit_direct_irradiance_on_side(const RayScene& es, const Vec3& p, const Vec3& n, const Vec3& side_normal,
-                                            const PreparedLight& light, uint64_t& rays) {
+/// Irradiance on one side of a surface at `at` — the side `side_normal`
+/// points to — from `light` at unit intensity: |n·ω| · S / d² · V, zero for a
+/// light behind that side. The shadow ray starts as `at` says (ShadingPoint::
+/// ray_start). Counts the shadow ray it casts in `rays`.
+inline float unit_direct_irradiance_on_side(const RayScene& es, const ShadingPoint& at, const Vec3& n,
+                                            const Vec3& side_normal, const PreparedLight& light, uint64_t& rays) {
+  const Vec3& p = at.position;
   Vec3 d = light.position - p;
   float dist2 = glm::dot(d, d);
   float eps = es.epsilon();
@@ -40,17 +42,18 @@ inline float unit_direct_irradiance_on_side(const RayScene& es, const Vec3& p, c
   float angular = light.angular(-w);
   if (angular == 0.f) return 0.f;
   ++rays;
-  if (es.occluded(p + side_normal * eps, w, dist - 2.f * eps)) return 0.f;
+  if (es.occluded(at.ray_start(w, side_normal, eps), w, dist - 2.f * eps)) return 0.f;
   return cos_n * angular / dist2;
 }
 
-/// Irradiance at `p` summed over both sides (a light lies on one of them):
-/// the two-sided value of docs/rendering-model.md. `offset_normal` (the
-/// geometric normal, or n) tells the sides apart.
-inline float unit_direct_irradiance(const RayScene& es, const Vec3& p, const Vec3& n, const Vec3& offset_normal,
+/// Irradiance at a point summed over both sides (a light lies on one of
+/// them): the two-sided value of docs/rendering-model.md. `side_normal` (the
+/// shading normal for surface points, the geometric normal for a pixel's hit)
+/// tells the sides apart.
+inline float unit_direct_irradiance(const RayScene& es, const ShadingPoint& at, const Vec3& n, const Vec3& side_normal,
                                     const PreparedLight& light, uint64_t& rays) {
-  Vec3 side = glm::dot(offset_normal, light.position - p) >= 0.f ? offset_normal : -offset_normal;
-  return unit_direct_irradiance_on_side(es, p, n, side, light, rays);
+  Vec3 side = glm::dot(side_normal, light.position - at.position) >= 0.f ? side_normal : -side_normal;
+  return unit_direct_irradiance_on_side(es, at, n, side, light, rays);
 }
 
 } // namespace hilight::embree

@@ -16,7 +16,7 @@ void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   m_embree.reset();
   m_scene = std::move(scene);
   m_embree = std::make_unique<RayScene>(*m_scene);
-  // Vertices on creases are shaded inside their triangle (shading_point);
+  // Where each vertex is shaded (shading_point: creases inside their triangle);
   // computed here, once, so no later (possibly concurrent) call has to.
   const Scene& s = *m_scene;
   m_vertex_shading.resize(s.positions.size());
@@ -33,12 +33,12 @@ std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoin
   });
 }
 
-std::shared_ptr<const std::vector<Vec3>> EmbreeRenderer::shading_points(const SurfacePoints& points) {
+std::shared_ptr<const std::vector<ShadingPoint>> EmbreeRenderer::shading_points(const SurfacePoints& points) {
   return m_shading_points.get(points.content_key(), [&] {
-    auto out = std::make_shared<std::vector<Vec3>>(points.size());
+    auto out = std::make_shared<std::vector<ShadingPoint>>(points.size());
     tbb::parallel_for(size_t(0), points.size(),
                       [&](size_t i) { (*out)[i] = shading_point(*m_embree, points.positions[i], points.normals[i]); });
-    return std::shared_ptr<const std::vector<Vec3>>(std::move(out));
+    return std::shared_ptr<const std::vector<ShadingPoint>>(std::move(out));
   });
 }
 
@@ -56,7 +56,8 @@ std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const Prep
   tbb::parallel_for(tbb::blocked_range<size_t>(0, v_count, 64), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t j = 0; j < lights.size(); ++j)
       for (size_t v = r.begin(); v != r.end(); ++v) {
-        const Vec3 &p = m_vertex_shading[v], &n = scene.normals[v];
+        const ShadingPoint& p = m_vertex_shading[v];
+        const Vec3& n = scene.normals[v];
         out[j * 2 * v_count + 2 * v] = unit_direct_irradiance_on_side(*m_embree, p, n, n, lights[j], rays.local());
         out[j * 2 * v_count + 2 * v + 1] = unit_direct_irradiance_on_side(*m_embree, p, n, -n, lights[j], rays.local());
       }
@@ -156,7 +157,7 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
         Vec3 n = m_embree->hit_normal(hit);
         const Vec3& ng = m_embree->face_normals()[hit.triangle];
         Rgb e(0.f);
-        for (const auto& light : prepared) e += light.intensity * unit_direct_irradiance(*m_embree, p, n, ng, light, local_rays);
+        for (const auto& light : prepared) e += light.intensity * unit_direct_irradiance(*m_embree, ShadingPoint{p, false}, n, ng, light, local_rays);
         if (!vertex_indirect.empty()) {
           const auto& tri = scene.triangles[hit.triangle];
           e += (1.f - hit.u - hit.v) * vertex_indirect[tri[0]] + hit.u * vertex_indirect[tri[1]] + hit.v * vertex_indirect[tri[2]];
@@ -183,13 +184,13 @@ std::vector<std::pair<std::string, double>> EmbreeRenderer::baseline_figures(con
   for (size_t i0 = 0; i0 < points.size(); i0 += 32)
     for (const auto& light : prepared)
       for (size_t i = i0; i < std::min(points.size(), i0 + 32); ++i) {
-        Vec3 d = light.position - (*shading)[i];
+        Vec3 d = light.position - (*shading)[i].position;
         float dist = glm::length(d);
         if (dist <= eps) continue;
         Vec3 w = d / dist;
         const Vec3& n = points.normals[i];
         if (glm::dot(n, w) == 0.f || light.angular(-w) == 0.f) continue;
-        segments.push_back({(*shading)[i] + (glm::dot(n, w) >= 0.f ? n : -n) * eps, w, dist - 2.f * eps});
+        segments.push_back({(*shading)[i].ray_start(w, glm::dot(n, w) >= 0.f ? n : -n, eps), w, dist - 2.f * eps});
       }
   tbb::combinable<uint64_t> blocked([] { return uint64_t(0); });
   auto start = std::chrono::steady_clock::now();

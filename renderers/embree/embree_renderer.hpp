@@ -40,7 +40,7 @@ private:
   /// The gather for `points`, reused while the same point set comes back.
   std::shared_ptr<const BounceGather> gather_for(const SurfacePoints& points);
   /// Where each point is shaded (hilight::shading_point), per point set.
-  std::shared_ptr<const std::vector<Vec3>> shading_points(const SurfacePoints& points);
+  std::shared_ptr<const std::vector<ShadingPoint>> shading_points(const SurfacePoints& points);
   /// Calls visit(i, j, unit RGB response) for every point i and light j, in parallel over points.
   template <class Visit>
   void for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Visit&& visit);
@@ -52,8 +52,8 @@ private:
   std::shared_ptr<const Scene> m_scene;
   std::unique_ptr<RayScene> m_embree;
   KeyedLru<BounceGather> m_gathers{4};
-  KeyedLru<std::vector<Vec3>> m_shading_points{4};
-  std::vector<Vec3> m_vertex_shading;  ///< shading_point() of every scene vertex
+  KeyedLru<std::vector<ShadingPoint>> m_shading_points{4};
+  std::vector<ShadingPoint> m_vertex_shading;  ///< shading_point() of every scene vertex
   std::atomic<uint64_t> m_rays{0};  ///< calls may come from several threads (concurrent refinements)
 };
 

@@ -10,7 +10,7 @@
 
 namespace hilight::embree {
 
-BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<Vec3>& origins, int samples,
+BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<ShadingPoint>& origins, int samples,
                            uint64_t seed)
     : m_es(es), m_samples(samples), m_hits(points.size() * size_t(samples)) {
   const int per_side = samples / 2;
@@ -28,7 +28,6 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
       for (uint32_t b : bits) stream = mix64(stream ^ b);
       for (int side = 0; side < 2; ++side) {
         const Vec3 axis = side == 0 ? n : -n;
-        const Vec3 origin = origins[i] + axis * es.epsilon();
         float rot1 = to_unit_float(stream = mix64(stream)), rot2 = to_unit_float(stream = mix64(stream));
         for (int k = 0; k < per_side; ++k) {
           float u1 = float(k + 0.5f) / float(per_side) + rot1;
@@ -36,7 +35,7 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
           u1 -= std::floor(u1);
           u2 -= std::floor(u2);
           const Vec3 dir = cosine_direction(axis, u1, u2);
-          const Hit hit = es.intersect(origin, dir);
+          const Hit hit = es.intersect(origins[i].ray_start(dir, axis, es.epsilon()), dir);
           GatherHit& g = m_hits[i * samples + side * per_side + k];
           if (hit.valid()) {
             const float seen_side = glm::dot(es.face_normals()[hit.triangle], dir) < 0.f ? 1.f : -1.f;
@@ -64,7 +63,7 @@ Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light,
     hit.triangle = g.triangle;
     hit.u = g.u;
     hit.v = g.v;
-    float e = unit_direct_irradiance_on_side(m_es, m_es.hit_position(hit), m_es.hit_normal(hit),
+    float e = unit_direct_irradiance_on_side(m_es, ShadingPoint{m_es.hit_position(hit), false}, m_es.hit_normal(hit),
                                              g.side * m_es.face_normals()[hit.triangle], light, rays);
     if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
   }

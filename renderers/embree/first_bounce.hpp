@@ -22,8 +22,10 @@ namespace hilight::embree {
 class BounceGather {
 public:
   /// `origins`: where each point is shaded (hilight::shading_point), so rays
-  /// from a point on a crease do not start on the neighbouring face's plane.
-  BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<Vec3>& origins, int samples, uint64_t seed);
+  /// from a point on a crease do not start on the neighbouring face's plane
+  /// and rays from a smooth point skip its own facets.
+  BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<ShadingPoint>& origins, int samples,
+               uint64_t seed);
 
   int samples() const { return m_samples; }
   uint64_t rays_cast() const { return m_rays; }

@@ -200,9 +200,11 @@ const IsmRenderer::PointBuffers& IsmRenderer::upload_points(const SurfacePoints&
                       "the surface points' crease triangles");
   std::memcpy(pb->crease.data<uint32_t>(), crease.data(), crease.size() * sizeof(uint32_t));
   float *pos = pb->positions.data<float>(), *nor = pb->normals.data<float>(), *alb = pb->albedo.data<float>();
-  // Shaded a hair inside their triangle, as every renderer does (rendering model).
+  // Shaded where every renderer shades them (shading_point, rendering model);
+  // positions' w says the point is smooth (its rays skip their first ε).
   tbb::parallel_for(size_t(0), n, [&](size_t i) {
-    Vec3 p = shading_point(*m_rays, points.positions[i], points.normals[i]);
+    const ShadingPoint at = shading_point(*m_rays, points.positions[i], points.normals[i]);
+    const Vec3 p = at.position;
     for (int a = 0; a < 3; ++a) {
       pos[4 * i + a] = p[a];
       nor[4 * i + a] = points.normals[i][a];
@@ -215,7 +217,8 @@ const IsmRenderer::PointBuffers& IsmRenderer::upload_points(const SurfacePoints&
     const Vec3& normal = points.normals[i];
     const uint32_t open =
         uint32_t(!m_rays->inside_solid(p + normal * lift)) | uint32_t(!m_rays->inside_solid(p - normal * lift)) << 1;
-    pos[4 * i + 3] = alb[4 * i + 3] = 0.f;
+    pos[4 * i + 3] = at.smooth ? 1.f : 0.f;
+    alb[4 * i + 3] = 0.f;
     nor[4 * i + 3] = float(open);
   });
   pb->key = key;

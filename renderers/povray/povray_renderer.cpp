@@ -14,6 +14,18 @@ namespace hilight::povray {
 namespace fs = std::filesystem;
 
 namespace {
+/// A triangle of radius r centred at c, wound so that its right-handed
+/// normal is n; in double precision, since receivers sit closer to the mesh
+/// than a float can tell apart.
+void write_camera_triangle(std::ostream& file, const DVec3& c, const Vec3& normal, double r) {
+  const DVec3 n(normal);
+  DVec3 t = glm::normalize(std::abs(n.x) < 0.9 ? glm::cross(n, DVec3(1, 0, 0)) : glm::cross(n, DVec3(0, 1, 0)));
+  DVec3 b = glm::cross(n, t);  // (t, b, n) right-handed: counter-clockwise corners give normal +n
+  DVec3 v0 = c + r * t, v1 = c + r * (-0.5 * t + 0.8660254037844386 * b), v2 = c + r * (-0.5 * t - 0.8660254037844386 * b);
+  file << std::setprecision(15) << "triangle { <" << v0.x << ',' << v0.y << ',' << v0.z << ">, <" << v1.x << ',' << v1.y << ','
+       << v1.z << ">, <" << v2.x << ',' << v2.y << ',' << v2.z << "> }\n";
+}
+
 Lighting scaled_lights(std::span<const Light> lights, float scale) {
   Lighting out(lights.begin(), lights.end());
   for (auto& l : out) l.intensity *= scale;
@@ -45,12 +57,22 @@ float PovrayRenderer::exposure_scale(std::span<const Light> lights) const {
 
 std::vector<Rgb> PovrayRenderer::bake(const SurfacePoints& points, std::span<const Light> lights, int bounces) {
   if (!m_scene) throw std::logic_error("PovrayRenderer: set_scene was not called");
+  std::vector<Rgb> out = bake_direct(points, lights);
+  if (bounces > 0 && points.size() > 0 && !lights.empty()) {
+    // The bounce: POV-Ray's radiosity on the mesh itself (receivers would
+    // gather it at a surface that is not in the scene), as the difference of
+    // a run with and one without it, so it carries no direct light.
+    std::vector<Rgb> with = bake_on_mesh(points, lights, 1), without = bake_on_mesh(points, lights, 0);
+    for (size_t i = 0; i < out.size(); ++i) out[i] += with[i] - without[i];
+  }
+  return out;
+}
+
+std::vector<Rgb> PovrayRenderer::bake_on_mesh(const SurfacePoints& points, std::span<const Light> lights, int bounces) {
   const size_t m = points.size();
   std::vector<Rgb> out(m, Rgb(0.f));
-  if (m == 0 || lights.empty()) return out;
   const float scale = exposure_scale(lights);
   const Lighting scaled = scaled_lights(lights, scale);
-
   TempFolder folder;
   const fs::path pov = folder.path() / "bake.pov";
   {
@@ -58,35 +80,29 @@ std::vector<Rgb> PovrayRenderer::bake(const SurfacePoints& points, std::span<con
     PovSettings settings = m_settings.pov;
     settings.bounces = bounces;
     write_pov_scene(file, *m_scene, scaled, settings);
-    // One camera triangle per point: centred `lift` above the point along its
-    // normal, wound so that its (right-handed) normal points away from the
-    // surface; mesh_camera shoots its ray against that normal, at the point.
+    // One camera triangle per point, `lift` off the surface along its normal,
+    // shooting at the surface ε inside the point's triangle (a ray aimed at a
+    // mesh vertex can slip between the fan's triangles).
     const float lift = 1e-4f * m_scene->diagonal(), size = 0.25f * lift;
     file << std::setprecision(9) << "camera { mesh_camera { 1 0 mesh {\n";
     for (size_t i = 0; i < m; ++i) {
-      Vec3 p = shading_point(*m_rays, points.positions[i], points.normals[i]);
-      Vec3 n = points.normals[i];
-      Vec3 t = glm::normalize(std::abs(n.x) < 0.9f ? glm::cross(n, Vec3(1, 0, 0)) : glm::cross(n, Vec3(0, 1, 0)));
-      Vec3 b = glm::cross(n, t);  // (t, b, n) right-handed: counter-clockwise corners give normal +n
-      Vec3 c = p + lift * n;
-      Vec3 v0 = c + size * t, v1 = c + size * (-0.5f * t + 0.8660254f * b), v2 = c + size * (-0.5f * t - 0.8660254f * b);
-      file << "triangle { <" << v0.x << ',' << v0.y << ',' << v0.z << ">, <" << v1.x << ',' << v1.y << ',' << v1.z << ">, <"
-           << v2.x << ',' << v2.y << ',' << v2.z << "> }\n";
+      const ShadingPoint at = shading_point(*m_rays, points.positions[i], points.normals[i]);
+      Vec3 p = at.position;
+      if (at.smooth && at.triangle != RTC_INVALID_GEOMETRY_ID) {
+        const auto& tri = m_scene->triangles[at.triangle];
+        Vec3 to_centroid = (m_scene->positions[tri[0]] + m_scene->positions[tri[1]] + m_scene->positions[tri[2]]) / 3.f - p;
+        float distance = glm::length(to_centroid);
+        if (distance > 0.f) p += to_centroid * (std::min(m_rays->epsilon(), 0.1f * distance) / distance);
+      }
+      write_camera_triangle(file, DVec3(p + lift * points.normals[i]), points.normals[i], size);
     }
     file << "} } location <0,0,0> }\n";
     if (!file) throw std::runtime_error("povray: cannot write " + pov.string());
   }
-  // One row: mesh_camera maps face i to pixel i of the first row for sure;
-  // its mapping over several rows did not match row-major order (tested).
-  const size_t width = m, height = 1;
-  run_povray(m_settings.executable,
-             {"-D", "-V", "-A", "+FE", "+W" + std::to_string(width), "+H" + std::to_string(height), "+Obake.exr", "+Ibake.pov"},
-             folder.path(), m_settings.timeout_seconds);
-  Image image = read_exr(folder.path() / "bake.exr");
-  if (size_t(image.width) != width || size_t(image.height) != height) throw std::runtime_error("povray: unexpected image size");
+  const Image image = run_bake(folder.path(), m);
   size_t missed = 0;
   for (size_t i = 0; i < m; ++i) {
-    Rgb v = image.at(int(i % width), int(i / width));
+    Rgb v = image.at(int(i), 0);
     if (v.r < 0.f) {  // the background marker: the ray hit nothing
       ++missed;
       continue;
@@ -95,6 +111,78 @@ std::vector<Rgb> PovrayRenderer::bake(const SurfacePoints& points, std::span<con
   }
   if (missed * 100 > m) throw std::runtime_error("povray: " + std::to_string(missed) + " of " + std::to_string(m) + " points were not seen by their baking rays");
   return out;
+}
+
+std::vector<Rgb> PovrayRenderer::bake_direct(const SurfacePoints& points, std::span<const Light> lights) {
+  const size_t m = points.size();
+  std::vector<Rgb> out(m, Rgb(0.f));
+  if (m == 0 || lights.empty()) return out;
+  const float scale = exposure_scale(lights);
+  const Lighting scaled = scaled_lights(lights, scale);
+  const float diagonal = m_scene->diagonal();
+
+  TempFolder folder;
+  const fs::path pov = folder.path() / "bake.pov";
+  {
+    std::ofstream file(pov);
+    PovSettings settings = m_settings.pov;
+    settings.bounces = 0;
+    settings.double_illuminate = false;
+    write_pov_scene(file, *m_scene, scaled, settings);
+    // A point's value is the sum over its two sides (rendering model), and
+    // POV-Ray lights the side of a surface that faces its camera ray. Each
+    // point gets two receivers: tiny white flat triangles with the point's
+    // own normal, 10⁻⁶ × diagonal off its shading point on either side, that
+    // cast no shadow and that radiosity rays do not see. A receiver's flat
+    // normal decides the side of each light as the point's shading normal
+    // does; its shadow rays start at the shading point and POV-Ray ignores
+    // hits closer than 10⁻³, so the point's own facets do not shadow it (a
+    // smooth point) — the model's "skip the first ε". Albedo multiplies after.
+    const float offset = 1e-8f * diagonal, receiver = 1e-4f * diagonal;
+    const float lift = 5e-5f * diagonal, size = 0.25f * receiver;
+    std::vector<Vec3> at(m);
+    for (size_t i = 0; i < m; ++i) at[i] = shading_point(*m_rays, points.positions[i], points.normals[i]).position;
+    // A union of triangles, not a mesh: POV-Ray keeps a mesh's vertices in
+    // single precision, which cannot hold the receivers off the surface.
+    file << "union {\n";
+    for (size_t i = 0; i < m; ++i)
+      for (float side : {1.f, -1.f}) write_camera_triangle(file, DVec3(at[i]) + double(side * offset) * DVec3(points.normals[i]), side * points.normals[i], receiver);
+    file << "texture { pigment { color rgb 1 } finish { diffuse 1 ambient 0 emission 0 specular 0 phong 0 } }\n"
+         << "no_shadow no_radiosity no_reflection }\n";
+    // One camera triangle per receiver, `lift` out along its normal and wound
+    // so that its normal points away from the surface; mesh_camera shoots its
+    // ray against that normal, at the receiver: pixel 2i is the side the
+    // point's normal points to, 2i+1 the other.
+    file << "camera { mesh_camera { 1 0 mesh {\n";
+    for (size_t i = 0; i < m; ++i)
+      for (float side : {1.f, -1.f}) write_camera_triangle(file, DVec3(at[i]) + double(side * lift) * DVec3(points.normals[i]), side * points.normals[i], size);
+    file << "} } location <0,0,0> }\n";
+    if (!file) throw std::runtime_error("povray: cannot write " + pov.string());
+  }
+  const Image image = run_bake(folder.path(), 2 * m);
+  size_t missed = 0;
+  for (size_t i = 0; i < m; ++i)
+    for (int side = 0; side < 2; ++side) {
+      Rgb v = image.at(int(2 * i + side), 0);
+      if (v.r < 0.f) {  // the background marker: the ray hit nothing
+        ++missed;
+        continue;
+      }
+      out[i] += points.albedo[i] * v / scale;
+    }
+  if (missed * 100 > 2 * m) throw std::runtime_error("povray: " + std::to_string(missed) + " of " + std::to_string(2 * m) + " receivers were not seen by their baking rays");
+  return out;
+}
+
+Image PovrayRenderer::run_bake(const fs::path& folder, size_t pixels) const {
+  // One row: mesh_camera maps face i to pixel i of the first row for sure;
+  // its mapping over several rows did not match row-major order (tested).
+  run_povray(m_settings.executable,
+             {"-D", "-V", "-A", "+FE", "+W" + std::to_string(pixels), "+H1", "+Obake.exr", "+Ibake.pov"}, folder,
+             m_settings.timeout_seconds);
+  Image image = read_exr(folder / "bake.exr");
+  if (size_t(image.width) != pixels || image.height != 1) throw std::runtime_error("povray: unexpected image size");
+  return image;
 }
 
 std::vector<Rgb> PovrayRenderer::illuminate(const SurfacePoints& points, std::span<const Light> lights) {

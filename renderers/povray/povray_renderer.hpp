@@ -7,6 +7,7 @@
 #include "hilight/ray_scene.hpp"
 #include "hilight/renderer.hpp"
 
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -32,6 +33,12 @@ public:
 private:
   /// Radiance at the points under `lights`, from one POV-Ray run.
   std::vector<Rgb> bake(const SurfacePoints& points, std::span<const Light> lights, int bounces);
+  /// Direct light at every point through two receivers (docs/povray.md), one POV-Ray run.
+  std::vector<Rgb> bake_direct(const SurfacePoints& points, std::span<const Light> lights);
+  /// Every point baked on the mesh itself (the side its normal points to), one run.
+  std::vector<Rgb> bake_on_mesh(const SurfacePoints& points, std::span<const Light> lights, int bounces);
+  /// Runs bake.pov in `folder` into a one-row image of `pixels`.
+  Image run_bake(const std::filesystem::path& folder, size_t pixels) const;
   /// Scale for light colours so that baked values sit where half floats are precise.
   float exposure_scale(std::span<const Light> lights) const;
 

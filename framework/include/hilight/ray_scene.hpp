@@ -18,12 +18,34 @@ struct Hit {
 
 class RayScene;
 
-/// Where renderers shade a surface point: a hair inside the triangle it lies
-/// on (toward its centroid: 1% of the way, at least 3e-3 scene units — POV-
-/// Ray ignores shadow hits closer than 1e-3 — at most 10%), so that a point on
-/// an edge or corner never starts rays on a neighbouring face's plane. Every
-/// renderer calls this, so they all shade the same point.
-Vec3 shading_point(const RayScene& rays, const Vec3& position, const Vec3& normal);
+/// Where renderers shade a surface point (docs/rendering-model.md, "Where a
+/// point is shaded"). Every renderer calls shading_point(), so they all shade
+/// the same point.
+struct ShadingPoint {
+  Vec3 position;
+  /// On a smooth surface (only its own smooth fan of triangles touches it):
+  /// shaded at the point itself, and a ray leaves it skipping the first ε of
+  /// its own path, so the fan's flat facets never shadow a light the smooth
+  /// normal faces (the terminator). Otherwise (hard creases, contacts,
+  /// touching parts) `position` is a hair inside the point's triangle and a
+  /// ray is lifted ε along the normal of the side it leaves from.
+  bool smooth = false;
+  /// The triangle the point lies on (closest, agreeing best with its normal),
+  /// or RTC_INVALID_GEOMETRY_ID when no surface is near.
+  uint32_t triangle = RTC_INVALID_GEOMETRY_ID;
+
+  /// Where a ray toward unit `dir` starts, leaving on the side `side_normal` points to.
+  Vec3 ray_start(const Vec3& dir, const Vec3& side_normal, float eps) const {
+    return position + (smooth ? dir : side_normal) * eps;
+  }
+};
+
+/// Smooth points stay where they are; others move a hair inside the triangle
+/// they lie on (toward its centroid: 1% of the way, at least 3e-3 scene
+/// units — POV-Ray ignores shadow hits closer than 1e-3 — at most 10%), so
+/// that a point on an edge or corner never starts rays on a neighbouring
+/// face's plane.
+ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec3& normal);
 
 class RayScene {
 public:
@@ -69,6 +91,10 @@ public:
   /// 14 directions all hit, and most of them hit a back face (so inside a
   /// closed, outward-wound object; inside an inward-wound room is free space).
   bool inside_solid(const Vec3& p) const;
+  /// True when every triangle within `radius` of `p` is `own_triangle` or has
+  /// a vertex at `p` (within radius/20) whose normal agrees with `normal`
+  /// (cos ≥ 0.999): only the point's own smooth surface is near it.
+  bool only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius) const;
 
   RTCScene rtc_scene() const { return m_rtc_scene; }
 

@@ -68,7 +68,7 @@ void write_pov_scene(std::ostream& out, const Scene& scene, const Lighting& ligh
     out << ",\n    <" << tri[0] << ',' << tri[1] << ',' << tri[2] << ">, " << scene.triangle_material[t];
   }
   // Normals index like the vertices; two-sided like hilight's surfaces.
-  out << " }\n  double_illuminate\n}\n";
+  out << " }\n" << (s.double_illuminate ? "  double_illuminate\n" : "") << "}\n";
 }
 
 void write_pov_camera(std::ostream& out, const Camera& camera, int width, int height) {

@@ -576,10 +576,23 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
       open_space(false);
     }
   }
+  drop_idle_lights(lights);
   finish_report(target, lights, report);
   if (report.dbar > kPoorFitDbar) report.unreachable = unreachable_share(target, *m_space);
   report.seconds["total"] = total.seconds();
   return lights;
+}
+
+void Solver::drop_idle_lights(Lighting& lights) const {
+  // A light a millionth as bright as the brightest does nothing a designer
+  // could see; the fit sometimes parks one at ~0 instead of removing it.
+  if (m_settings.fixed_count > 0) return;
+  float brightest = 0.f;
+  for (const auto& l : lights) brightest = std::max({brightest, l.intensity.r, l.intensity.g, l.intensity.b});
+  Lighting kept;
+  for (const auto& l : lights)
+    if (std::max({l.intensity.r, l.intensity.g, l.intensity.b}) > 1e-6f * brightest) kept.push_back(l);
+  if (!kept.empty() && kept.size() >= min_lights()) lights = std::move(kept);
 }
 
 void Solver::open_space(bool open) {

@@ -28,11 +28,12 @@ struct Blocker {
 Blocker first_blocker(const SceneObjects& objects, const RayScene& rays, const Light& light, const Vec3& position,
                       const Vec3& normal) {
   Blocker b;
-  const Vec3 start = shading_point(rays, position, normal) + rays.epsilon() * normal;
-  Vec3 to_light = light.position - start;
+  const ShadingPoint at = shading_point(rays, position, normal);
+  Vec3 to_light = light.position - at.position;
   const float distance = glm::length(to_light);
   if (!(distance > 0.f)) return b;
   to_light /= distance;
+  const Vec3 start = at.ray_start(to_light, normal, rays.epsilon());
   if (glm::dot(to_light, normal) <= 0.f || spot_factor(light, -to_light) <= 0.f) return b;
   b.reached = true;
   Hit hit = rays.intersect(start, to_light, distance);
@@ -80,7 +81,7 @@ std::vector<uint32_t> erase_shadow(Document& document, const SceneObjects& objec
     for (size_t i = 0; i < vertices.size(); ++i) {
       const uint32_t v = vertices[i];
       // The light's direct contribution as if nothing blocked it (rendering model).
-      const Vec3 start = shading_point(document.rays(), scene.positions[v], scene.normals[v]);
+      const Vec3 start = shading_point(document.rays(), scene.positions[v], scene.normals[v]).position;
       Vec3 to_light = light.position - start;
       const float d2 = glm::dot(to_light, to_light);
       to_light /= std::sqrt(d2);

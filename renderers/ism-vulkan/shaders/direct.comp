@@ -67,11 +67,14 @@ void main() {
     float cos_n = abs(dot(n, to_point));
     float angular = spot_factor(light, to_point);
     if (cos_n > 0.0 && angular > 0.0) {
-      // The ray ends a hair off the surface, on the light's side (as Embree's).
+      // The ray ends where Embree's starts (ShadingPoint::ray_start): a smooth
+      // point's ray stops ε short of it (its own facets never shadow it);
+      // another's ends a hair off the surface, on the light's side.
+      bool on_smooth = positions[i].w > 0.5;
       vec3 side = dot(n, to_point) < 0.0 ? n : -n;
-      vec3 q = p + side * params.epsilon;
+      vec3 q = on_smooth ? p : p + side * params.epsilon;
       vec3 dq = q - light.position.xyz;
-      float reach = length(dq);
+      float reach = on_smooth ? length(dq) - params.epsilon : length(dq);
       vec3 dir = dq / length(dq);
       uint f = cube_face(dq);
       ivec2 t0 = ivec2(floor(cube_texel(dq, f, params.size) - 0.5));

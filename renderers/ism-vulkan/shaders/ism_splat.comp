@@ -24,7 +24,8 @@ void main() {
   if (origin.w == 0.0) return;
   vec3 n = vpls[VPL_STRIDE * v + 1u].xyz, t = vpls[VPL_STRIDE * v + 3u].xyz, b = vpls[VPL_STRIDE * v + 4u].xyz;
   // The pool is shuffled: a run of it from a per-VPL start is a random subset.
-  vec3 q = pool[(hash_u32(v) + j) % params.pool].xyz;
+  // The start is the VPL's own key (vpl_generate.comp), not its batch index.
+  vec3 q = pool[(uint(vpls[VPL_STRIDE * v + 2u].w) % params.pool + j) % params.pool].xyz;
   vec3 w = q - origin.xyz;
   float len = length(w);
   vec3 local = vec3(dot(w, t), dot(w, b), dot(w, n));

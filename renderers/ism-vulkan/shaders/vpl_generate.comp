@@ -36,7 +36,13 @@ void main() {
   float cos_max = light.cone.z != 0.0 ? light.cone.x : -1.0;
   float cos_theta = 1.0 - (1.0 - cos_max) * (float(k) + 0.5) / float(params.vpls);
   float sin_theta = sqrt(max(1.0 - cos_theta * cos_theta, 0.0));
-  float rotation = float(hash_u32(params.seed ^ hash_u32(c + 1u)) & 0xffffu) / 65536.0;
+  // Random numbers keyed by the light itself, not its place in the batch: a
+  // light gets the same VPLs alone or beside others (superposition holds).
+  uint light_key = params.seed;
+  for (int a = 0; a < 3; ++a)
+    light_key = hash_u32(light_key ^ floatBitsToUint(light.position[a])) ^ hash_u32(floatBitsToUint(light.direction[a]) + 0x9e3779b9u);
+  light_key = hash_u32(light_key ^ floatBitsToUint(light.cone.x) ^ hash_u32(floatBitsToUint(light.cone.y)));
+  float rotation = float(light_key & 0xffffu) / 65536.0;
   float phi = 2.0 * PI * fract(float(k) * 0.61803398875 + rotation);
   vec3 t, b;
   basis_around(axis, t, b);
@@ -66,7 +72,8 @@ void main() {
   basis_around(n, tangent, bitangent);
   vpls[VPL_STRIDE * id] = vec4(light.position.xyz + dir * dist + n * params.lift, 1.0);
   vpls[VPL_STRIDE * id + 1u] = vec4(n, 0.0);
-  vpls[VPL_STRIDE * id + 2u] = vec4(power, 0.0);
+  // w: this VPL's own key, which picks its ISM points (ism_splat.comp).
+  vpls[VPL_STRIDE * id + 2u] = vec4(power, float(hash_u32(light_key ^ (k + 1u)) & 0xffffffu));  // exact in a float
   vpls[VPL_STRIDE * id + 3u] = vec4(tangent, 0.0);
   vpls[VPL_STRIDE * id + 4u] = vec4(bitangent, 0.0);
 }

@@ -17,6 +17,9 @@ struct PovSettings {
   int radiosity_count = 800;     ///< rays per radiosity sample
   double error_bound = 0.15;     ///< radiosity error_bound (lower = more samples)
   double pretrace_end = 0.005;   ///< radiosity pretrace_end (lower = denser samples)
+  /// Both sides of each surface lit at once (POV-Ray's double_illuminate), as
+  /// a user's export wants. Baking turns it off and bakes each side on its own.
+  bool double_illuminate = true;
 };
 
 /// fade_distance used for inverse-square lights: far below any distance in

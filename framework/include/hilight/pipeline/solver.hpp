@@ -132,6 +132,8 @@ private:
   Lighting solve_in_space(const Target& target, SolveReport& report);
   /// Lights may stand beyond the scene's open sides from now on (its own
   /// light cache); `open_space(false)` goes back.
+  /// Removes lights with (almost) zero intensity, unless the count is fixed or at its minimum.
+  void drop_idle_lights(Lighting& lights) const;
   void open_space(bool open);
   /// Opens the space if some of `lights` stand outside the scene's light
   /// bounds but within the open ones (lights from an earlier open solve).

@@ -1,0 +1,195 @@
+// The renderer contract (issue 11): the same cases for every registered
+// renderer that can run here, so a new renderer plugin is held to all of them
+// by being registered. Each case runs at bounces 0 (the direct light every
+// renderer computes exactly) unless it says otherwise.
+#include "hilight/error.hpp"
+#include "hilight/scene_builders.hpp"
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+using namespace hilight;
+
+namespace {
+
+/// Registered renderers, each case once per name; "" when none can run.
+std::vector<std::string> renderer_names() { return test::registry().names("renderer"); }
+
+/// A closed 4 x 3 x 4 room with a floating slab: shadows, creases, both sides.
+std::shared_ptr<const Scene> room() {
+  static auto scene = [] {
+    Scene raw = builders::box_room({4.f, 3.f, 4.f}, Rgb(0.7f));
+    builders::add_box(raw, {1.5f, 0.8f, 2.f}, {2.5f, 1.f, 3.f}, Rgb(0.3f, 0.5f, 0.7f), false, "floating slab");
+    return test::finish(std::move(raw), 0.5f);
+  }();
+  return scene;
+}
+
+/// Every other vertex of the room: few enough for POV-Ray's runs.
+SurfacePoints some_points(const Scene& scene) {
+  SurfacePoints all = SurfacePoints::from_vertices(scene), some;
+  for (size_t i = 0; i < all.size(); i += 2) {
+    some.positions.push_back(all.positions[i]);
+    some.normals.push_back(all.normals[i]);
+    some.albedo.push_back(all.albedo[i]);
+  }
+  return some;
+}
+
+/// Relative tolerance of a renderer's values: POV-Ray's bakes are half floats.
+double tolerance(const std::string& name) { return name == "povray" ? 2e-3 : 1e-4; }
+
+/// |a − b| within `relative` of b, plus `floor` of the largest value (`scale`).
+void require_close(const std::vector<Rgb>& a, const std::vector<Rgb>& b, double relative, double scale, double floor = 1e-5) {
+  REQUIRE(a.size() == b.size());
+  for (size_t i = 0; i < a.size(); ++i)
+    for (int c = 0; c < 3; ++c) REQUIRE(std::abs(a[i][c] - b[i][c]) <= relative * std::abs(b[i][c]) + floor * scale);
+}
+
+double largest(const std::vector<Rgb>& v) {
+  double m = 0;
+  for (const auto& c : v) m = std::max({m, double(c.r), double(c.g), double(c.b)});
+  return m;
+}
+
+const Lighting kTwoLights = {Light::point({1.2f, 2.2f, 1.1f}, Rgb(3.f, 2.f, 1.f)),
+                             Light::spot({2.8f, 2.6f, 2.9f}, {0.2f, -1.f, -0.1f}, 40.f, Rgb(0.5f, 1.f, 4.f), 8.f)};
+
+} // namespace
+
+TEST_CASE("contract: every renderer is linear — A and B together equal A plus B", "[renderer][contract]") {
+  for (const std::string& name : renderer_names()) {
+    if (test::skip_without_renderer(name)) continue;
+    INFO("renderer " << name);
+    auto renderer = test::make_renderer(name, room(), {"bounces=0"});
+    const SurfacePoints points = some_points(*room());
+    auto ab = renderer->illuminate(points, kTwoLights);
+    auto a = renderer->illuminate(points, std::span<const Light>(&kTwoLights[0], 1));
+    auto b = renderer->illuminate(points, std::span<const Light>(&kTwoLights[1], 1));
+    std::vector<Rgb> sum(a.size());
+    for (size_t i = 0; i < a.size(); ++i) sum[i] = a[i] + b[i];
+    require_close(ab, sum, tolerance(name), largest(ab));
+    CHECK(largest(a) > 0.0);
+    CHECK(largest(b) > 0.0);
+  }
+}
+
+TEST_CASE("contract: every renderer's illuminate equals the sum of I times its unit responses", "[renderer][contract]") {
+  for (const std::string& name : renderer_names()) {
+    if (test::skip_without_renderer(name)) continue;
+    INFO("renderer " << name);
+    auto renderer = test::make_renderer(name, room(), {"bounces=0"});
+    const SurfacePoints points = some_points(*room());
+    auto phi = renderer->unit_responses(points, kTwoLights);
+    REQUIRE(phi.size() == points.size() * kTwoLights.size());
+    auto direct = renderer->illuminate(points, kTwoLights);
+    std::vector<Rgb> sum(points.size(), Rgb(0.f));
+    for (size_t j = 0; j < kTwoLights.size(); ++j)
+      for (size_t i = 0; i < points.size(); ++i) sum[i] += kTwoLights[j].intensity * phi[j * points.size() + i];
+    require_close(direct, sum, tolerance(name), largest(direct));
+  }
+}
+
+TEST_CASE("contract: every renderer gives the same values when asked twice, and from a fresh instance",
+          "[renderer][contract]") {
+  for (const std::string& name : renderer_names()) {
+    if (test::skip_without_renderer(name)) continue;
+    INFO("renderer " << name);
+    const SurfacePoints points = some_points(*room());
+    auto first = test::make_renderer(name, room(), {"bounces=0"});
+    auto once = first->illuminate(points, kTwoLights);
+    auto twice = first->illuminate(points, kTwoLights);
+    auto fresh = test::make_renderer(name, room(), {"bounces=0"})->illuminate(points, kTwoLights);
+    CHECK(once == twice);
+    CHECK(once == fresh);
+  }
+}
+
+TEST_CASE("contract: every renderer refuses a setting it does not know, naming it", "[renderer][contract][bad-input]") {
+  for (const std::string& name : renderer_names()) {
+    if (test::skip_without_renderer(name)) continue;
+    INFO("renderer " << name);
+    try {
+      test::make_renderer(name, room(), {"no_such_setting=1"});
+      FAIL("an unknown setting was accepted");
+    } catch (const InputError& e) {
+      CHECK(std::string(e.what()).find("no_such_setting") != std::string::npos);
+    }
+    CHECK_THROWS_AS(test::make_renderer(name, room(), {"bounces=-1"}), InputError);
+    // No lights, no points: zeros and an empty answer, not an error.
+    auto renderer = test::make_renderer(name, room(), {"bounces=0"});
+    const SurfacePoints points = some_points(*room());
+    auto dark = renderer->illuminate(points, std::span<const Light>());
+    REQUIRE(dark.size() == points.size());
+    CHECK(largest(dark) == 0.0);
+    CHECK(renderer->illuminate(SurfacePoints{}, kTwoLights).empty());
+  }
+}
+
+TEST_CASE("contract: every renderer gives the analytic point light on a plane", "[renderer][contract][analytic]") {
+  auto plane = test::finish(builders::plane(6.f, Rgb(0.6f)), 0.5f);
+  const Light light = Light::point({0.7f, 1.9f, -0.4f}, Rgb(5.f));
+  const SurfacePoints points = SurfacePoints::from_vertices(*plane);
+  for (const std::string& name : renderer_names()) {
+    if (test::skip_without_renderer(name)) continue;
+    INFO("renderer " << name);
+    auto values = test::make_renderer(name, plane, {"bounces=0"})->illuminate(points, std::span<const Light>(&light, 1));
+    double worst = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      DVec3 d = DVec3(light.position) - DVec3(points.positions[i]);
+      double expected = 0.6 / kPi * 5.0 * std::abs(glm::dot(DVec3(points.normals[i]), glm::normalize(d))) / glm::dot(d, d);
+      worst = std::max(worst, std::abs(values[i].r - expected) / expected);
+    }
+    INFO("worst relative error " << worst);
+    CHECK(worst < (name == "povray" ? 0.01 : 0.005));
+  }
+}
+
+TEST_CASE("contract: every renderer's spotlight is dark outside its cone and the point light inside",
+          "[renderer][contract][spot]") {
+  auto plane = test::finish(builders::plane(10.f, Rgb(0.8f)), 0.4f);
+  const float height = 3.f, cutoff = 25.f;
+  const Light spot = Light::spot({0.f, height, 0.f}, {0.f, -1.f, 0.f}, cutoff, Rgb(5.f));
+  const SurfacePoints points = SurfacePoints::from_vertices(*plane);
+  const double edge = height * std::tan(cutoff * kPi / 180.0);
+  for (const std::string& name : renderer_names()) {
+    if (test::skip_without_renderer(name)) continue;
+    INFO("renderer " << name);
+    auto values = test::make_renderer(name, plane, {"bounces=0"})->illuminate(points, std::span<const Light>(&spot, 1));
+    size_t inside = 0, outside = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const Vec3& p = points.positions[i];
+      const double r = std::hypot(double(p.x), double(p.z));
+      DVec3 d = DVec3(spot.position) - DVec3(p);
+      double expected = 0.8 / kPi * 5.0 * (height / glm::length(d)) / glm::dot(d, d);
+      if (r > 1.02 * edge) {
+        ++outside;
+        REQUIRE(values[i].r == 0.f);
+      } else if (r < 0.98 * edge) {
+        ++inside;
+        REQUIRE(values[i].r == Approx(expected).epsilon(name == "povray" ? 0.01 : 0.005));
+      }
+    }
+    CHECK(inside > 20);
+    CHECK(outside > 20);
+  }
+}
+
+TEST_CASE("contract: renderers with a first bounce stay linear in the lights", "[renderer][contract][bounce]") {
+  // POV-Ray's radiosity adapts its sampling to the light it sees, so it is
+  // linear only to within its own noise; the others are linear exactly.
+  for (const std::string& name : renderer_names()) {
+    if (name == "povray" || test::skip_without_renderer(name)) continue;
+    INFO("renderer " << name);
+    auto renderer = test::make_renderer(name, room(), {"bounces=1"});
+    const SurfacePoints points = some_points(*room());
+    auto ab = renderer->illuminate(points, kTwoLights);
+    auto a = renderer->illuminate(points, std::span<const Light>(&kTwoLights[0], 1));
+    auto b = renderer->illuminate(points, std::span<const Light>(&kTwoLights[1], 1));
+    std::vector<Rgb> sum(a.size());
+    for (size_t i = 0; i < a.size(); ++i) sum[i] = a[i] + b[i];
+    // Sums of hundreds of VPL or gather terms in float: rounding, not bias.
+    require_close(ab, sum, 1e-3, largest(ab), 1e-4);
+  }
+}
