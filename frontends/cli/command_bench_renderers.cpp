@@ -34,7 +34,9 @@ template <class F> double seconds_of(F&& f) {
 int run_bench_renderers(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Compare renderers on the same scene and lights; prints one JSON object per line", "bench renderers");
   // name[:key=value,...]: the solve's fast settings are worth a line each.
-  std::vector<std::string> names = {"embree", "embree:bounce_direct=vertex", "ism-vulkan", "ism-vulkan:vpls=64"};
+  // hot_spots=off: the bounce before near-light patches (issue 11), side by side.
+  std::vector<std::string> names = {"embree",          "embree:hot_spots=off", "embree:bounce_direct=vertex",
+                                    "embree:bounce_direct=vertex,hot_spots=off", "ism-vulkan", "ism-vulkan:vpls=64"};
   int repeat = 3, threads = 0, light_count = 1000;
   float max_edge = 0.15f;
   app.add_option("--renderers", names, "renderers to compare, each NAME or NAME:key=value,key=value")->capture_default_str();
@@ -78,7 +80,8 @@ int run_bench_renderers(const std::vector<std::string>& args, Registry& registry
     for (int r = 0; r < repeat; ++r) phi.push_back(seconds_of([&] { renderer->unit_responses(points, batch); }));
     nlohmann::json out = {{"figure", "renderers"}, {"renderer", spec}, {"triangles", scene->triangles.size()},
                           {"points", points.size()}, {"evaluate_lights", config.size()}, {"evaluate_seconds", median(evaluate)},
-                          {"phi_lights", batch.size()}, {"phi_seconds", median(phi)}, {"repeat", repeat}};
+                          {"phi_lights", batch.size()}, {"phi_seconds", median(phi)},
+                          {"phi_seconds_per_light", median(phi) / double(batch.size())}, {"repeat", repeat}};
     for (const auto& [key, value] : renderer->baseline_figures(points, std::span<const Light>(config)))
       out["stages_4_lights"][key] = value;
     std::printf("%s\n", out.dump().c_str());

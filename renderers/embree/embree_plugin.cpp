@@ -8,6 +8,8 @@
 // | bounce_direct   | exact   | direct light at gather hits: exact shadow rays, or   |
 // |                 |         | "vertex": interpolated from the hit triangle's       |
 // |                 |         | vertices (fast for many lights; used by the cache)   |
+// | hot_spots       | on      | surfaces near a light lit as virtual lights, not by  |
+// |                 |         | gather hits (no fireflies; hot_spots.hpp)            |
 #include "embree_renderer.hpp"
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
@@ -27,6 +29,9 @@ std::unique_ptr<hilight::Renderer> create(const hilight::Properties& props) {
   if (bounce_direct != "exact" && bounce_direct != "vertex")
     throw hilight::InputError("renderer embree: bounce_direct must be exact or vertex");
   s.vertex_interpolated_bounce = bounce_direct == "vertex";
+  const std::string hot = props.get_string("hot_spots", "on");
+  if (hot != "on" && hot != "off") throw hilight::InputError("renderer embree: hot_spots must be on or off");
+  s.hot_spots = hot == "on";
   return std::make_unique<hilight::embree::EmbreeRenderer>(s);
 }
 

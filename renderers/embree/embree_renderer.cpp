@@ -44,7 +44,8 @@ std::shared_ptr<const std::vector<ShadingPoint>> EmbreeRenderer::shading_points(
 
 std::string EmbreeRenderer::settings_key() const {
   return "embree/bounces=" + std::to_string(m_settings.bounces) + "/samples=" + std::to_string(m_settings.bounce_samples) +
-         "/seed=" + std::to_string(m_settings.seed) + "/vertex_bounce=" + std::to_string(m_settings.vertex_interpolated_bounce);
+         "/seed=" + std::to_string(m_settings.seed) + "/vertex_bounce=" + std::to_string(m_settings.vertex_interpolated_bounce) +
+         "/hot_spots=" + std::to_string(m_settings.hot_spots);
 }
 
 std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const PreparedLight> lights) {
@@ -66,6 +67,16 @@ std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const Prep
   return out;
 }
 
+std::vector<HotSpots> EmbreeRenderer::hot_spots_of(std::span<const PreparedLight> lights) {
+  std::vector<HotSpots> out;
+  if (!m_settings.hot_spots || m_settings.bounces == 0) return out;
+  uint64_t cast = 0;
+  out.reserve(lights.size());
+  for (const auto& light : lights) out.emplace_back(*m_embree, light, cast);
+  m_rays += cast;
+  return out;
+}
+
 template <class Visit>
 void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport,
                                        Visit&& visit) {
@@ -78,7 +89,8 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
   std::vector<float> vertex_direct;
   if (gather && m_settings.vertex_interpolated_bounce) vertex_direct = vertex_direct_irradiance(prepared);
   const size_t v_count = m_scene->positions.size();
-  auto shading_owner = want_direct ? shading_points(points) : nullptr;
+  auto shading_owner = want_direct || gather ? shading_points(points) : nullptr;
+  const std::vector<HotSpots> hot = gather ? hot_spots_of(prepared) : std::vector<HotSpots>();
   tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
   // Points in chunks, lights inside: neighbouring points' rays toward one
   // light are coherent, and the chunk's data stays in cache across lights.
@@ -93,8 +105,13 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
       for (size_t i = range.begin(); i != range.end(); ++i) {
         const Vec3& n = points.normals[i];
         Rgb e(want_direct ? unit_direct_irradiance(*m_embree, (*shading_owner)[i], n, n, light, local_rays) : 0.f);
-        if (gather && !vertex_direct.empty()) e += gather->interpolated_indirect_irradiance(i, &vertex_direct[j * 2 * v_count]);
-        else if (gather) e += gather->unit_indirect_irradiance(i, light, local_rays);
+        if (gather) {
+          const ShadingPoint& at = (*shading_owner)[i];
+          const HotSpots* h = hot.empty() ? nullptr : &hot[j];
+          if (!vertex_direct.empty()) e += gather->interpolated_indirect_irradiance(i, &vertex_direct[j * 2 * v_count], h, at.position);
+          else e += gather->unit_indirect_irradiance(i, light, h, at.position, local_rays);
+          if (h) e += h->irradiance(*m_embree, at, n, local_rays);
+        }
         visit(i, j, points.albedo[i] * float(1.0 / kPi) * e);
       }
     }
@@ -131,11 +148,18 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
     SurfacePoints vertices = SurfacePoints::from_vertices(scene);
     auto gather_owner = gather_for(vertices);
     const BounceGather& gather = *gather_owner;
+    const std::vector<HotSpots> hot = hot_spots_of(prepared);
     vertex_indirect.assign(vertices.size(), Rgb(0.f));
     tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
     tbb::parallel_for(tbb::blocked_range<size_t>(0, vertices.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i != r.end(); ++i)
-        for (const auto& light : prepared) vertex_indirect[i] += light.intensity * gather.unit_indirect_irradiance(i, light, rays.local());
+        for (size_t j = 0; j < prepared.size(); ++j) {
+          const HotSpots* h = hot.empty() ? nullptr : &hot[j];
+          const ShadingPoint& at = m_vertex_shading[i];
+          Rgb e = gather.unit_indirect_irradiance(i, prepared[j], h, at.position, rays.local());
+          if (h) e += h->irradiance(*m_embree, at, scene.normals[i], rays.local());
+          vertex_indirect[i] += prepared[j].intensity * e;
+        }
     });
     m_rays += rays.combine(std::plus<uint64_t>());
   }

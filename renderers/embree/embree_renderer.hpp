@@ -14,6 +14,7 @@ namespace hilight::embree {
 struct EmbreeSettings {
   int bounces = 1;           ///< 0: direct only; 1: plus the first diffuse bounce
   int bounce_samples = 128;  ///< gather rays per point (even)
+  bool hot_spots = true;     ///< near-light hot patches lit as virtual lights (hot_spots.hpp)
   uint64_t seed = 1;         ///< gather sample stream
   /// Direct light at the gather's hit points: exact shadow rays per hit, or
   /// interpolated across each hit triangle from its vertices (one shadow ray
@@ -47,6 +48,8 @@ private:
   /// Unit direct irradiance at every scene vertex for each light, on each
   /// side (light-major; per vertex: normal side, then the other).
   std::vector<float> vertex_direct_irradiance(std::span<const PreparedLight> lights);
+  /// Each light's hot patches (empty when hot_spots is off or there is no bounce).
+  std::vector<HotSpots> hot_spots_of(std::span<const PreparedLight> lights);
 
   EmbreeSettings m_settings;
   std::shared_ptr<const Scene> m_scene;

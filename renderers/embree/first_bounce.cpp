@@ -52,7 +52,8 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
   m_rays = uint64_t(points.size()) * uint64_t(samples);
 }
 
-Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light, uint64_t& rays) const {
+Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light, const HotSpots* hot, const Vec3& x,
+                                           uint64_t& rays) const {
   const Scene& scene = m_es.scene();
   Rgb sum(0.f);
   const GatherHit* hits = &m_hits[i * m_samples];
@@ -63,7 +64,9 @@ Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light,
     hit.triangle = g.triangle;
     hit.u = g.u;
     hit.v = g.v;
-    float e = unit_direct_irradiance_on_side(m_es, ShadingPoint{m_es.hit_position(hit), false}, m_es.hit_normal(hit),
+    const Vec3 y = m_es.hit_position(hit);
+    if (hot && hot->handles(x, y)) continue;
+    float e = unit_direct_irradiance_on_side(m_es, ShadingPoint{y, false}, m_es.hit_normal(hit),
                                              g.side * m_es.face_normals()[hit.triangle], light, rays);
     if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
   }
@@ -74,7 +77,8 @@ Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light,
 
 namespace hilight::embree {
 
-Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex_direct) const {
+Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex_direct, const HotSpots* hot,
+                                                   const Vec3& x) const {
   const Scene& scene = m_es.scene();
   Rgb sum(0.f);
   const GatherHit* hits = &m_hits[i * m_samples];
@@ -82,6 +86,9 @@ Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex
     const GatherHit& hit = hits[k];
     if (!hit.valid()) continue;
     const auto& tri = scene.triangles[hit.triangle];
+    if (hot && hot->handles(x, (1.f - hit.u - hit.v) * scene.positions[tri[0]] + hit.u * scene.positions[tri[1]] +
+                                    hit.v * scene.positions[tri[2]]))
+      continue;
     // Each vertex holds both sides' values; take the side facing the gatherer.
     auto on_side = [&](int corner) { return vertex_direct[2 * tri[corner] + ((hit.vertex_sides >> corner) & 1 ? 0 : 1)]; };
     float e = (1.f - hit.u - hit.v) * on_side(0) + hit.u * on_side(1) + hit.v * on_side(2);

@@ -12,6 +12,7 @@
 /// through solids), while a lone sheet lit from one side glows on that side.
 /// Unbiased for any N; the error falls as N grows (tests show it).
 #include "direct_light.hpp"
+#include "hot_spots.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/surface_points.hpp"
 
@@ -30,12 +31,14 @@ public:
   int samples() const { return m_samples; }
   uint64_t rays_cast() const { return m_rays; }
 
-  /// Indirect irradiance (RGB, per unit light intensity) at point i.
-  Rgb unit_indirect_irradiance(size_t i, const PreparedLight& light, uint64_t& rays) const;
+  /// Indirect irradiance (RGB, per unit light intensity) at point i, shaded
+  /// at `x`, from its gather hits — less those the light's hot patches count
+  /// instead (`hot` may be null; add hot->irradiance() for their share).
+  Rgb unit_indirect_irradiance(size_t i, const PreparedLight& light, const HotSpots* hot, const Vec3& x, uint64_t& rays) const;
   /// The same with the direct irradiance at each hit interpolated from
   /// `vertex_direct` — per scene vertex, two values: the side its normal
   /// points to, then the other — instead of shadow rays.
-  Rgb interpolated_indirect_irradiance(size_t i, const float* vertex_direct) const;
+  Rgb interpolated_indirect_irradiance(size_t i, const float* vertex_direct, const HotSpots* hot, const Vec3& x) const;
 
 private:
   const RayScene& m_es;

@@ -128,25 +128,28 @@ std::vector<Rgb> PovrayRenderer::bake_direct(const SurfacePoints& points, std::s
     PovSettings settings = m_settings.pov;
     settings.bounces = 0;
     settings.double_illuminate = false;
-    write_pov_scene(file, *m_scene, scaled, settings);
     // A point's value is the sum over its two sides (rendering model), and
     // POV-Ray lights the side of a surface that faces its camera ray. Each
     // point gets two receivers: tiny white flat triangles with the point's
-    // own normal, 10⁻⁶ × diagonal off its shading point on either side, that
+    // own normal, 10⁻⁸ × diagonal off its shading point on either side, that
     // cast no shadow and that radiosity rays do not see. A receiver's flat
     // normal decides the side of each light as the point's shading normal
     // does; its shadow rays start at the shading point and POV-Ray ignores
-    // hits closer than 10⁻³, so the point's own facets do not shadow it (a
-    // smooth point) — the model's "skip the first ε". Albedo multiplies after.
+    // hits closer than 10⁻⁶ (and, for shadows, 10⁻³), so the point's own
+    // facets do not shadow it (a smooth point) — the model's "skip the first
+    // ε"; the mesh's inside_vector keeps real blockers behind those facets
+    // (pov_export.cpp). Albedo multiplies after.
     const float offset = 1e-8f * diagonal, receiver = 1e-4f * diagonal;
     const float lift = 5e-5f * diagonal, size = 0.25f * receiver;
     std::vector<Vec3> at(m);
     for (size_t i = 0; i < m; ++i) at[i] = shading_point(*m_rays, points.positions[i], points.normals[i]).position;
     // A union of triangles, not a mesh: POV-Ray keeps a mesh's vertices in
     // single precision, which cannot hold the receivers off the surface.
+    write_pov_scene(file, *m_scene, scaled, settings);
     file << "union {\n";
     for (size_t i = 0; i < m; ++i)
-      for (float side : {1.f, -1.f}) write_camera_triangle(file, DVec3(at[i]) + double(side * offset) * DVec3(points.normals[i]), side * points.normals[i], receiver);
+      for (float side : {1.f, -1.f})
+        write_camera_triangle(file, DVec3(at[i]) + double(side * offset) * DVec3(points.normals[i]), side * points.normals[i], receiver);
     file << "texture { pigment { color rgb 1 } finish { diffuse 1 ambient 0 emission 0 specular 0 phong 0 } }\n"
          << "no_shadow no_radiosity no_reflection }\n";
     // One camera triangle per receiver, `lift` out along its normal and wound

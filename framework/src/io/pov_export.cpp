@@ -68,7 +68,11 @@ void write_pov_scene(std::ostream& out, const Scene& scene, const Lighting& ligh
     out << ",\n    <" << tri[0] << ',' << tri[1] << ',' << tri[2] << ">, " << scene.triangle_material[t];
   }
   // Normals index like the vertices; two-sided like hilight's surfaces.
-  out << " }\n" << (s.double_illuminate ? "  double_illuminate\n" : "") << "}\n";
+  // inside_vector makes POV-Ray report every hit along a ray: without it a
+  // mesh stops at its nearest hit, and a shadow ray that first crosses the
+  // point's own facets (ignored as too close) never sees a real blocker
+  // behind them (docs/povray.md). Nothing here uses insideness.
+  out << " }\n  inside_vector <0, 0, 1>\n" << (s.double_illuminate ? "  double_illuminate\n" : "") << "}\n";
 }
 
 void write_pov_camera(std::ostream& out, const Camera& camera, int width, int height) {

@@ -1,0 +1,142 @@
+#include "hot_spots.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hilight::embree {
+
+namespace {
+
+constexpr int G = HotSpots::kCellsPerFace, S = HotSpots::kSubSamples;
+
+/// The direction through (u, v) ∈ [-1, 1]² on cube face `face` (axis face/2, sign by face%2).
+Vec3 cube_direction(int face, float u, float v) {
+  const int axis = face / 2;
+  const float sign = face % 2 ? -1.f : 1.f;
+  Vec3 d(0.f);
+  d[axis] = sign;
+  d[(axis + 1) % 3] = u;
+  d[(axis + 2) % 3] = v;
+  return glm::normalize(d);
+}
+
+struct SubHit {
+  bool hit = false;
+  float distance = 0.f;
+  Vec3 position{0.f}, normal{0.f};  ///< normal: the side facing the light
+  Rgb flux{0.f};
+};
+
+} // namespace
+
+int HotSpots::cell_of(const Vec3& d) const {
+  const Vec3 a = glm::abs(d);
+  const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+  const int face = 2 * axis + (d[axis] < 0.f ? 1 : 0);
+  const float u = d[(axis + 1) % 3] / a[axis], v = d[(axis + 2) % 3] / a[axis];
+  const int i = std::clamp(int((u + 1.f) * 0.5f * float(G)), 0, G - 1), j = std::clamp(int((v + 1.f) * 0.5f * float(G)), 0, G - 1);
+  return (face * G + i) * G + j;
+}
+
+HotSpots::HotSpots(const RayScene& rays, const PreparedLight& light, uint64_t& cast) : m_light(light.position) {
+  const Scene& scene = rays.scene();
+  const int cells = 6 * G * G;
+  std::vector<SubHit> sub(size_t(cells) * S * S);
+  float nearest = std::numeric_limits<float>::max();
+  const float step = 2.f / float(G * S);
+  for (int c = 0; c < cells; ++c) {
+    const int face = c / (G * G), i = (c / G) % G, j = c % G;
+    for (int a = 0; a < S; ++a)
+      for (int b = 0; b < S; ++b) {
+        const float u = -1.f + (float(i * S + a) + 0.5f) * step, v = -1.f + (float(j * S + b) + 0.5f) * step;
+        const Vec3 dir = cube_direction(face, u, v);
+        SubHit& s = sub[(size_t(c) * S + a) * S + b];
+        ++cast;
+        const Hit hit = rays.intersect(light.position, dir);
+        if (!hit.valid()) continue;
+        s.hit = true;
+        s.distance = hit.t;
+        s.position = rays.hit_position(hit);
+        const Vec3& ng = rays.face_normals()[hit.triangle];
+        s.normal = glm::dot(ng, dir) < 0.f ? ng : -ng;
+        // E dA = I · S · dω on the first surface a direction meets.
+        const float solid_angle = step * step / std::pow(1.f + u * u + v * v, 1.5f);
+        s.flux = scene.triangle_albedo(hit.triangle) * (light.angular(dir) * solid_angle);
+        nearest = std::min(nearest, s.distance);
+      }
+  }
+  if (nearest == std::numeric_limits<float>::max()) return;
+  // Hot: much nearer than the light's typical surface (so much brighter than
+  // what the gather sees elsewhere). A light in the open has no hot patches.
+  std::vector<float> distances;
+  for (const SubHit& h : sub) distances.push_back(h.hit ? h.distance : std::numeric_limits<float>::max());
+  std::nth_element(distances.begin(), distances.begin() + long(distances.size() / 2), distances.end());
+  const float typical = distances[distances.size() / 2];
+  const float reach = std::min(5.f * nearest, kHotFraction * typical);
+  m_reach2 = reach * reach;
+  m_cell.assign(size_t(cells), -1);
+  const float lift = 1e-3f * scene.diagonal();
+  for (int c = 0; c < cells; ++c) {
+    const SubHit* s = &sub[size_t(c) * S * S];
+    // The cell's surfaces within reach form its patch; gather hits there are
+    // the patch's (handles() checks the reach too), the rest stay the gather's.
+    Rgb flux(0.f);
+    Vec3 centre(0.f), normal(0.f);
+    float weight = 0.f;
+    auto in_reach = [&](const SubHit& h) { return h.hit && h.distance < reach; };
+    for (int k = 0; k < S * S; ++k) {
+      if (!in_reach(s[k])) continue;
+      const float w = s[k].flux.r + s[k].flux.g + s[k].flux.b;
+      flux += s[k].flux;
+      centre += w * s[k].position;
+      normal += w * s[k].normal;
+      weight += w;
+    }
+    if (!(weight > 0.f) || !(glm::length(normal) > 0.f)) continue;
+    centre /= weight;
+    normal = glm::normalize(normal);
+    bool flat = true;
+    float radius = 0.f;
+    for (int k = 0; k < S * S; ++k) {
+      if (!in_reach(s[k])) continue;
+      flat &= glm::dot(s[k].normal, normal) > 0.9f;  // nearly flat: one centre and normal speak for it
+      radius = std::max(radius, glm::length(s[k].position - centre));
+    }
+    if (!flat) continue;
+    m_cell[size_t(c)] = int32_t(m_patches.size());
+    const float near = 3.f * std::max(radius, lift);
+    m_patches.push_back({centre + lift * normal, normal, flux, near * near});
+  }
+}
+
+bool HotSpots::handles(const Vec3& x, const Vec3& y) const {
+  if (m_patches.empty()) return false;
+  const Vec3 d = y - m_light;
+  if (glm::dot(d, d) >= m_reach2) return false;
+  const int32_t p = m_cell[size_t(cell_of(d))];
+  if (p < 0) return false;
+  const Vec3 w = m_patches[size_t(p)].position - x;
+  return glm::dot(w, w) > m_patches[size_t(p)].near2;
+}
+
+Rgb HotSpots::irradiance(const RayScene& rays, const ShadingPoint& at, const Vec3& n, uint64_t& cast) const {
+  Rgb e(0.f);
+  const float eps = rays.epsilon();
+  for (const Patch& p : m_patches) {
+    const Vec3 w = p.position - at.position;
+    const float r2 = glm::dot(w, w);
+    if (!(r2 > p.near2)) continue;
+    const float r = std::sqrt(r2);
+    const Vec3 dir = w / r;
+    const float cos_patch = -glm::dot(p.normal, dir);  // the patch shines to its lit side
+    const float cos_point = glm::dot(n, dir);
+    if (cos_patch <= 0.f || cos_point == 0.f) continue;
+    ++cast;
+    if (rays.occluded(at.ray_start(dir, cos_point > 0.f ? n : -n, eps), dir, r - 2.f * eps)) continue;
+    e += p.flux * (cos_patch * std::abs(cos_point) / (float(kPi) * r2));
+  }
+  return e;
+}
+
+} // namespace hilight::embree
