@@ -5,13 +5,17 @@
 #include "hilight/io/image_io.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/io/ply.hpp"
+#include "hilight/ray_scene.hpp"
+#include "hilight/real_model_scenes.hpp"
 #include "hilight/scene_builders.hpp"
+#include "random_lights.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <random>
 
 using namespace hilight;
 
@@ -280,4 +284,46 @@ TEST_CASE("hilight export writes a POV-Ray scene that POV-Ray renders like hilig
   }
   INFO("mean relative difference " << sum / ref);
   CHECK(sum / ref < 0.02);
+}
+
+TEST_CASE("the first bounce on real curved models: Embree and POV-Ray agree within a stated tolerance",
+          "[povray][cross][bounce][real]") {
+  if (test::skip_without_renderer("povray")) return;
+  // The Wuson and the spider on a floor before a wall (Debian's
+  // assimp-testmodels), one seeded random light; every 4th vertex, so that
+  // POV-Ray's radiosity runs stay short.
+  auto scene = std::make_shared<const Scene>(finish_scene(builders::curved_models_on_floor(), {}));
+  RayScene rays(*scene);
+  std::mt19937_64 rng(1102);
+  const Lighting light = test::random_free_lights(rays, rng, 1, 0.05f);
+  const SurfacePoints all = SurfacePoints::from_vertices(*scene);
+  SurfacePoints points;
+  for (size_t i = 0; i < all.size(); i += 4) {
+    points.positions.push_back(all.positions[i]);
+    points.normals.push_back(all.normals[i]);
+    points.albedo.push_back(all.albedo[i]);
+  }
+  auto direct = test::make_renderer("embree", scene, {"bounces=0"})->illuminate(points, light);
+  auto embree = test::make_renderer("embree", scene, {"bounce_samples=1024"})->illuminate(points, light);
+  auto pov = test::make_renderer("povray", scene, {"error_bound=0.05", "radiosity_count=1600", "pretrace_end=0.002"})
+                 ->illuminate(points, light);
+  std::vector<Rgb> embree_indirect(points.size()), pov_indirect(points.size());
+  double sum_pov = 0, sum_embree = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    embree_indirect[i] = embree[i] - direct[i];
+    pov_indirect[i] = pov[i] - direct[i];
+    sum_pov += pov_indirect[i].g, sum_embree += embree_indirect[i].g;
+  }
+  const double total = test::dbar(pov, embree), bounce_only = test::dbar(pov_indirect, embree_indirect);
+  std::printf("first bounce on curved models (%zu points): D-bar of the total %.2f%%, of the bounce alone %.1f%%, "
+              "bounce POV-Ray/Embree %.3f\n", points.size(), 100 * total, 100 * bounce_only, sum_pov / sum_embree);
+  // Stated tolerance (measured: 9.5%, 38%, 0.999). The bounce's total agrees;
+  // point by point it does not: on the wall within 6%, on the floor 23% and
+  // on the models 41%, while Embree at 1024 rays is within 2% of 4096 and
+  // POV-Ray barely moves with error_bound 0.01 or 0.5: POV-Ray's irradiance
+  // cache interpolates across the models' small curved parts and their
+  // contact shadows on the floor (docs/povray.md).
+  CHECK(total < 0.12);
+  CHECK(bounce_only < 0.45);
+  CHECK(std::abs(sum_pov / sum_embree - 1) < 0.05);
 }

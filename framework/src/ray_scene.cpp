@@ -240,4 +240,20 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
   return {position + to_centroid * (step / distance), false, h.triangle};
 }
 
+ShadingPoint smooth_hit_point(const RayScene& rays, const Hit& hit) {
+  const Scene& scene = rays.scene();
+  const auto& tri = scene.triangles[hit.triangle];
+  const Vec3 p = rays.hit_position(hit);
+  const float b[3] = {1.f - hit.u - hit.v, hit.u, hit.v};
+  Vec3 lifted(0.f);
+  for (int k = 0; k < 3; ++k) {
+    const Vec3& n = scene.normals[tri[k]];
+    // Toward the vertex's tangent plane, and only outward: a convex part's
+    // facets lie below the smooth surface, never above it.
+    const float below = std::min(0.f, glm::dot(p - scene.positions[tri[k]], n));
+    lifted += b[k] * (p - below * n);
+  }
+  return {lifted, true, hit.triangle};
+}
+
 } // namespace hilight

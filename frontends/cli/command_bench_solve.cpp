@@ -4,6 +4,7 @@
 // medians over --repeat runs, all in one process so the figures compare.
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "hilight/pipeline/solve_renderers.hpp"
 #include "hilight/built_scenes.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/light_cache_store.hpp"
@@ -62,8 +63,8 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
   reference->set_scene(scene);
   const std::vector<Rgb> values = reference->illuminate(SurfacePoints::from_vertices(*scene), truth);
   const Target target = bind_target("bench", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
-  Properties solve_props;
-  solve_props.set("bounce_direct", "vertex");
+  // The solve's fast twin exactly as `hilight solve` sets it up.
+  const Properties solve_props = Properties::from_assignments(fast_renderer_settings("embree", {}));
   auto renderer = registry.create_renderer("embree", solve_props);
   renderer->set_scene(scene);
   auto sampler = registry.create_sampler("importance", {});
@@ -134,6 +135,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   // The target comes from the reference settings (exact bounce), the solve
   // from its own fast settings: the figures include that model difference.
   Properties reference_props;
+  if (const char* extra = std::getenv("HILIGHT_BENCH_REFERENCE")) reference_props = Properties::from_assignments({extra});
   auto reference = registry.create_renderer("embree", reference_props);
   reference->set_scene(scene);
   std::vector<Rgb> values = reference->illuminate(SurfacePoints::from_vertices(*scene), truth);
@@ -144,8 +146,8 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
     if (edited.points.positions[i].y < 0.01f && edited.points.positions[i].x < 3.f) edited.value[i] *= 1.1f;
 
   auto sampler = registry.create_sampler("importance", {});
-  Properties solve_props;
-  solve_props.set("bounce_direct", "vertex");
+  // The solve's fast twin exactly as `hilight solve` sets it up.
+  const Properties solve_props = Properties::from_assignments(fast_renderer_settings("embree", {}));
   auto renderer = registry.create_renderer("embree", solve_props);
   renderer->set_scene(scene);
 

@@ -108,9 +108,13 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
         if (gather) {
           const ShadingPoint& at = (*shading_owner)[i];
           const HotSpots* h = hot.empty() ? nullptr : &hot[j];
-          if (!vertex_direct.empty()) e += gather->interpolated_indirect_irradiance(i, &vertex_direct[j * 2 * v_count], h, at.position);
-          else e += gather->unit_indirect_irradiance(i, light, h, at.position, local_rays);
-          if (h) e += h->irradiance(*m_embree, at, n, local_rays);
+          if (!vertex_direct.empty()) {
+            e += gather->interpolated_indirect_irradiance(i, &vertex_direct[j * 2 * v_count], h, at.position);
+            if (h && !h->empty()) e += h->irradiance_seen(at, n, h->sees_light(*m_embree, at, n, local_rays));
+          } else {
+            e += gather->unit_indirect_irradiance(i, light, h, at.position, local_rays);
+            if (h) e += h->irradiance(*m_embree, at, n, local_rays);
+          }
         }
         visit(i, j, points.albedo[i] * float(1.0 / kPi) * e);
       }
@@ -177,11 +181,12 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
         Hit hit = m_embree->intersect(camera.eye, dir);
         ++local_rays;
         if (!hit.valid()) continue;
-        Vec3 p = m_embree->hit_position(hit);
-        Vec3 n = m_embree->hit_normal(hit);
-        const Vec3& ng = m_embree->face_normals()[hit.triangle];
+        // Shaded as a vertex is (rendering model): the side of a light by the
+        // shading normal, from the smooth surface over the facets.
+        const ShadingPoint at = smooth_hit_point(*m_embree, hit);
+        const Vec3 n = m_embree->hit_normal(hit);
         Rgb e(0.f);
-        for (const auto& light : prepared) e += light.intensity * unit_direct_irradiance(*m_embree, ShadingPoint{p, false}, n, ng, light, local_rays);
+        for (const auto& light : prepared) e += light.intensity * unit_direct_irradiance(*m_embree, at, n, n, light, local_rays);
         if (!vertex_indirect.empty()) {
           const auto& tri = scene.triangles[hit.triangle];
           e += (1.f - hit.u - hit.v) * vertex_indirect[tri[0]] + hit.u * vertex_indirect[tri[1]] + hit.v * vertex_indirect[tri[2]];

@@ -120,21 +120,58 @@ bool HotSpots::handles(const Vec3& x, const Vec3& y) const {
   return glm::dot(w, w) > m_patches[size_t(p)].near2;
 }
 
+namespace {
+
+/// Φ cosθ_patch |cosθ_x| / (π r²), or 0 when the point is behind the patch
+/// or within its near distance; `dir` and `r` are set for the shadow ray.
+template <class Patch>
+float patch_factor(const Patch& p, const ShadingPoint& at, const Vec3& n, Vec3& dir, float& r, float& cos_point) {
+  const Vec3 w = p.position - at.position;
+  const float r2 = glm::dot(w, w);
+  if (!(r2 > p.near2)) return 0.f;
+  r = std::sqrt(r2);
+  dir = w / r;
+  const float cos_patch = -glm::dot(p.normal, dir);  // the patch shines to its lit side
+  cos_point = glm::dot(n, dir);
+  if (cos_patch <= 0.f || cos_point == 0.f) return 0.f;
+  return cos_patch * std::abs(cos_point) / (float(kPi) * r2);
+}
+
+} // namespace
+
+bool HotSpots::sees_light(const RayScene& rays, const ShadingPoint& at, const Vec3& n, uint64_t& cast) const {
+  if (m_patches.empty()) return false;
+  const Vec3 w = m_light - at.position;
+  const float r = glm::length(w);
+  if (!(r > 2.f * rays.epsilon())) return false;
+  const Vec3 dir = w / r;
+  ++cast;
+  return !rays.occluded(at.ray_start(dir, glm::dot(n, dir) >= 0.f ? n : -n, rays.epsilon()), dir, r - 2.f * rays.epsilon());
+}
+
+Rgb HotSpots::irradiance_seen(const ShadingPoint& at, const Vec3& n, bool sees) const {
+  Rgb e(0.f);
+  if (!sees) return e;
+  for (const Patch& p : m_patches) {
+    Vec3 dir;
+    float r, cos_point;
+    const float f = patch_factor(p, at, n, dir, r, cos_point);
+    if (f > 0.f) e += p.flux * f;
+  }
+  return e;
+}
+
 Rgb HotSpots::irradiance(const RayScene& rays, const ShadingPoint& at, const Vec3& n, uint64_t& cast) const {
   Rgb e(0.f);
   const float eps = rays.epsilon();
   for (const Patch& p : m_patches) {
-    const Vec3 w = p.position - at.position;
-    const float r2 = glm::dot(w, w);
-    if (!(r2 > p.near2)) continue;
-    const float r = std::sqrt(r2);
-    const Vec3 dir = w / r;
-    const float cos_patch = -glm::dot(p.normal, dir);  // the patch shines to its lit side
-    const float cos_point = glm::dot(n, dir);
-    if (cos_patch <= 0.f || cos_point == 0.f) continue;
+    Vec3 dir;
+    float r, cos_point;
+    const float f = patch_factor(p, at, n, dir, r, cos_point);
+    if (!(f > 0.f)) continue;
     ++cast;
     if (rays.occluded(at.ray_start(dir, cos_point > 0.f ? n : -n, eps), dir, r - 2.f * eps)) continue;
-    e += p.flux * (cos_patch * std::abs(cos_point) / (float(kPi) * r2));
+    e += p.flux * f;
   }
   return e;
 }

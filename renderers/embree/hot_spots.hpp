@@ -4,9 +4,9 @@
 /// elsewhere hit it rarely and, when they do, very brightly: fireflies. So
 /// the directions around each light are split into cells (a cube map,
 /// kCellsPerFace² per face). The part of a cell whose surfaces are close to
-/// the light — within 5× the distance to its nearest surface and 0.35× the
-/// median distance to its surfaces (8× brighter than typical), so a light in
-/// the open or mid-room has none — is a
+/// the light — within 5× the distance to its nearest surface and 0.25× the
+/// median distance to its surfaces (16× brighter than typical), so a light
+/// in the open or mid-room has none — is a
 /// *hot patch* when nearly flat. A point farther than 3 patch radii from it
 /// receives the patch's
 /// reflected flux from one virtual point light at its flux-weighted centre,
@@ -19,7 +19,7 @@
 /// size against the distance (≤ 1/3) blurs the patch's soft shadow into a
 /// point light's hard one and shifts its cosines by up to ~1/3 radian.
 /// Measured (tests/test_bounce_noise.cpp): the total bounce within 1% of a
-/// 4096-ray gather, and D̄ 4.2% against it at 512 rays where the gather alone
+/// 4096-ray gather, and D̄ 4.9% against it at 512 rays where the gather alone
 /// is 27% off (a lamp 15 cm below a ceiling).
 /// Linear in the light's intensity and deterministic (no random numbers).
 #include "direct_light.hpp"
@@ -42,10 +42,17 @@ public:
   /// Irradiance (RGB, unit light intensity) at the point shaded at `at` with
   /// normal `n` from the patches that handle it: Φ cosθ_patch |cosθ_x| / (π r²) · V.
   Rgb irradiance(const RayScene& rays, const ShadingPoint& at, const Vec3& n, uint64_t& cast) const;
+  /// The same with one visibility for all patches: whether the point sees
+  /// the light itself (the patches lie near it). The vertex mode's shortcut:
+  /// one shadow ray instead of one per patch; its bias (a patch's shadow is
+  /// the light's) is the reference polish's to remove.
+  Rgb irradiance_seen(const ShadingPoint& at, const Vec3& n, bool sees_light) const;
+  /// Whether the point shaded at `at` (normal n) sees the light: one shadow ray.
+  bool sees_light(const RayScene& rays, const ShadingPoint& at, const Vec3& n, uint64_t& cast) const;
 
   static constexpr int kCellsPerFace = 4;   ///< cells along a cube face's edge
   static constexpr int kSubSamples = 4;     ///< sample directions along a cell's edge
-  static constexpr float kHotFraction = 0.35f;  ///< hot: nearer than this × the light's median surface distance
+  static constexpr float kHotFraction = 0.25f;  ///< hot: nearer than this × the light's median surface distance
 
 private:
   struct Patch {

@@ -47,6 +47,13 @@ struct ShadingPoint {
 /// face's plane.
 ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec3& normal);
 
+/// Where a pixel's hit inside a smooth-shaded triangle is shaded: lifted to
+/// the smooth surface its vertex normals describe (each vertex's tangent
+/// plane, blended by the barycentrics; Hanika 2021, "Hacking the shadow
+/// terminator"), so the facets' terminator does not show inside a triangle.
+/// At a vertex, and on a flat triangle, it is the hit itself.
+ShadingPoint smooth_hit_point(const RayScene& rays, const Hit& hit);
+
 class RayScene {
 public:
   explicit RayScene(const Scene& scene);

@@ -20,8 +20,9 @@ std::vector<std::string> reference_renderer_settings(std::vector<std::string> se
 
 std::vector<std::string> fast_renderer_settings(const std::string& renderer, std::vector<std::string> settings) {
   if (renderer == "embree" && !has_setting(settings, "bounce_direct")) settings.push_back("bounce_direct=vertex");
-  // Hot patches cost the vertex mode 3x per light; the fast renderer's noise
-  // is the reference polish's to remove, so it gathers alone.
+  // Hot patches cost the vertex mode 1.6x per light even with one shadow ray
+  // for all of them (and a cold start 1.6x); the fast twin's fireflies are
+  // the reference polish's to remove, so it gathers alone.
   if (renderer == "embree" && !has_setting(settings, "hot_spots")) settings.push_back("hot_spots=off");
   if (renderer == "ism-vulkan") {
     std::erase_if(settings, [](const std::string& kv) { return kv.rfind("vpls=", 0) == 0; });
