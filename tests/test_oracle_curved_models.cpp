@@ -199,7 +199,9 @@ const OracleCase& curved_case() {
 
 Agreement renderer_against_oracle(const std::string& name) {
   const OracleCase& c = curved_case();
-  auto renderer = test::make_renderer(name, c.scene, {"bounces=0"});
+  std::vector<std::string> settings{"bounces=0"};
+  if (const char* extra = std::getenv("HILIGHT_ORACLE_SETTING")) settings.push_back(extra);
+  auto renderer = test::make_renderer(name, c.scene, settings);
   auto result = renderer->illuminate(SurfacePoints::from_vertices(*c.scene), c.lights);
   Agreement a = agreement(result, c.oracle);
   if (std::getenv("HILIGHT_ORACLE_DEBUG")) {
@@ -258,9 +260,9 @@ TEST_CASE("oracle: POV-Ray's direct light on real curved models matches the brut
 
 TEST_CASE("oracle: ism-vulkan's direct light on real curved models matches the brute-force loop", "[oracle][ism]") {
   if (test::skip_without_renderer("ism-vulkan")) return;
-  // Goal 2% (issue 11); measured 6.3% on lavapipe: its ID maps miss
-  // occluders a few centimetres from the models' back sides (docs/STATUS.md).
-  CHECK(renderer_against_oracle("ism-vulkan").dbar < 0.07);
+  // Issue 11's tolerance; measured 1.6% on lavapipe (512² ID maps, a 4x4
+  // texel window of candidates; 256² and 2x2 gave 6.3%).
+  CHECK(renderer_against_oracle("ism-vulkan").dbar < 0.02);
 }
 
 TEST_CASE("oracle: the loop itself gives the analytic answer on a plane, and most curved-model vertices are lit",

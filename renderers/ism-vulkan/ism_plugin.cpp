@@ -5,7 +5,7 @@
 // | property        | default | meaning                                                  |
 // |-----------------|---------|----------------------------------------------------------|
 // | bounces         | 1       | 0 = direct light only, 1 = plus the first bounce (VPLs)  |
-// | shadow_size     | 256     | cube ID map face resolution, texels (16..4096)          |
+// | shadow_size     | 512     | cube ID map face resolution, texels (16..4096)          |
 // | vpls            | 256     | virtual point lights per light (1..16384)                |
 // | ism_size        | 32      | imperfect shadow map per VPL, texels (power of 2, 4..256) |
 // | points_per_vpl  | 4096    | scene points splatted into each ISM                      |

@@ -10,7 +10,7 @@ namespace hilight::ism {
 
 struct IsmSettings {
   int bounces = 1;                 ///< 0: direct light only; 1: plus the first bounce from VPLs
-  uint32_t shadow_size = 256;      ///< cube ID map face resolution (texels)
+  uint32_t shadow_size = 512;      ///< cube ID map face resolution (texels)
   uint32_t vpls = 256;             ///< virtual point lights per light
   uint32_t ism_size = 32;          ///< imperfect shadow map resolution per VPL (power of two)
   uint32_t points_per_vpl = 4096;  ///< scene point samples splatted into each VPL's ISM

@@ -25,7 +25,10 @@ layout(std430, binding = 3) readonly buffer Lights { Light lights[]; };
 layout(std430, binding = 4) readonly buffer Triangles { uint triangles[]; };
 layout(std430, binding = 5) readonly buffer Corners { float corners[]; };
 layout(std430, binding = 6) readonly buffer Neighbours { uint neighbours[]; };  // 3 per triangle; ~0u = none
-const uint CREASE_CANDIDATES = 16u;  // as kCreaseCandidates in crease_candidates.hpp
+const uint CREASE_CANDIDATES = 16u;
+// Texels looked up around the ray's direction, per side: on curved models a
+// texel shows a triangle or two away from the one the exact ray crosses.
+const int WINDOW = 4;  // as kCreaseCandidates in crease_candidates.hpp
 layout(std430, binding = 7) readonly buffer Crease { uint crease[]; };  // per point; ~0u = none
 layout(std430, binding = 8) writeonly buffer Out { vec4 result[]; };
 
@@ -77,11 +80,11 @@ void main() {
       float reach = on_smooth ? length(dq) - params.epsilon : length(dq);
       vec3 dir = dq / length(dq);
       uint f = cube_face(dq);
-      ivec2 t0 = ivec2(floor(cube_texel(dq, f, params.size) - 0.5));
+      ivec2 t0 = ivec2(floor(cube_texel(dq, f, params.size) - 0.5)) - ivec2(WINDOW / 2 - 1);
       uint base = (c * 6u + f) * params.size * params.size;
       bool shadowed = false;
-      for (int k = 0; k < 4 && !shadowed; ++k) {
-        ivec2 t = clamp(t0 + ivec2(k & 1, k >> 1), ivec2(0), ivec2(int(params.size) - 1));
+      for (int k = 0; k < WINDOW * WINDOW && !shadowed; ++k) {
+        ivec2 t = clamp(t0 + ivec2(k % WINDOW, k / WINDOW), ivec2(0), ivec2(int(params.size) - 1));
         shadowed = blocks(triangles[base + uint(t.y) * params.size + uint(t.x)], light.position.xyz, dir, reach);
       }
       // The faces touching the point: at a crease the blocking face may be a
