@@ -53,6 +53,21 @@ double largest(const std::vector<Rgb>& v) {
   return m;
 }
 
+struct Superposition {
+  std::vector<Rgb> together, a, b, sum;
+};
+
+/// The two lights rendered together and one by one, and the sum of the two.
+Superposition superposition(hilight::Renderer& renderer, const SurfacePoints& points, const Lighting& lights) {
+  Superposition s;
+  s.together = renderer.illuminate(points, lights);
+  s.a = renderer.illuminate(points, std::span<const Light>(&lights[0], 1));
+  s.b = renderer.illuminate(points, std::span<const Light>(&lights[1], 1));
+  s.sum.resize(s.a.size());
+  for (size_t i = 0; i < s.a.size(); ++i) s.sum[i] = s.a[i] + s.b[i];
+  return s;
+}
+
 const Lighting kTwoLights = {Light::point({1.2f, 2.2f, 1.1f}, Rgb(3.f, 2.f, 1.f)),
                              Light::spot({2.8f, 2.6f, 2.9f}, {0.2f, -1.f, -0.1f}, 40.f, Rgb(0.5f, 1.f, 4.f), 8.f)};
 
@@ -63,15 +78,10 @@ TEST_CASE("contract: every renderer is linear — A and B together equal A plus 
     if (test::skip_without_renderer(name)) continue;
     INFO("renderer " << name);
     auto renderer = test::make_renderer(name, room(), {"bounces=0"});
-    const SurfacePoints points = some_points(*room());
-    auto ab = renderer->illuminate(points, kTwoLights);
-    auto a = renderer->illuminate(points, std::span<const Light>(&kTwoLights[0], 1));
-    auto b = renderer->illuminate(points, std::span<const Light>(&kTwoLights[1], 1));
-    std::vector<Rgb> sum(a.size());
-    for (size_t i = 0; i < a.size(); ++i) sum[i] = a[i] + b[i];
-    require_close(ab, sum, tolerance(name), largest(ab));
-    CHECK(largest(a) > 0.0);
-    CHECK(largest(b) > 0.0);
+    const Superposition s = superposition(*renderer, some_points(*room()), kTwoLights);
+    require_close(s.together, s.sum, tolerance(name), largest(s.together));
+    CHECK(largest(s.a) > 0.0);
+    CHECK(largest(s.b) > 0.0);
   }
 }
 
@@ -183,13 +193,8 @@ TEST_CASE("contract: renderers with a first bounce stay linear in the lights", "
     if (name == "povray" || test::skip_without_renderer(name)) continue;
     INFO("renderer " << name);
     auto renderer = test::make_renderer(name, room(), {"bounces=1"});
-    const SurfacePoints points = some_points(*room());
-    auto ab = renderer->illuminate(points, kTwoLights);
-    auto a = renderer->illuminate(points, std::span<const Light>(&kTwoLights[0], 1));
-    auto b = renderer->illuminate(points, std::span<const Light>(&kTwoLights[1], 1));
-    std::vector<Rgb> sum(a.size());
-    for (size_t i = 0; i < a.size(); ++i) sum[i] = a[i] + b[i];
+    const Superposition s = superposition(*renderer, some_points(*room()), kTwoLights);
     // Sums of hundreds of VPL or gather terms in float: rounding, not bias.
-    require_close(ab, sum, 1e-3, largest(ab), 1e-4);
+    require_close(s.together, s.sum, 1e-3, largest(s.together), 1e-4);
   }
 }

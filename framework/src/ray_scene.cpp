@@ -183,29 +183,28 @@ bool own_surface_callback(RTCPointQueryFunctionArguments* args) {
   return false;
 }
 
-} // namespace
-
-Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& normal_hint) const {
-  RTCPointQuery query;
-  query.x = p.x; query.y = p.y; query.z = p.z;
-  query.radius = max_distance;
-  query.time = 0.f;
-  RTCPointQueryContext context;
-  rtcInitPointQueryContext(&context);
-  ClosestQuery q{&m_scene, &m_face_normals, p, normal_hint, m_epsilon, Hit{}, max_distance * max_distance};
-  rtcPointQuery(m_rtc_scene, &query, &context, closest_callback, &q);
-  return q.best;
-}
-
-bool RayScene::only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius) const {
+/// Calls `visit` (an Embree point-query callback) for the triangles within `radius` of `p`.
+void query_triangles_near(RTCScene scene, const Vec3& p, float radius, RTCPointQueryFunction visit, void* state) {
   RTCPointQuery query;
   query.x = p.x; query.y = p.y; query.z = p.z;
   query.radius = radius;
   query.time = 0.f;
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
+  rtcPointQuery(scene, &query, &context, visit, state);
+}
+
+} // namespace
+
+Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& normal_hint) const {
+  ClosestQuery q{&m_scene, &m_face_normals, p, normal_hint, m_epsilon, Hit{}, max_distance * max_distance};
+  query_triangles_near(m_rtc_scene, p, max_distance, closest_callback, &q);
+  return q.best;
+}
+
+bool RayScene::only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius) const {
   OwnSurfaceQuery q{&m_scene, p, normal, own_triangle, radius, radius / 20.f};
-  rtcPointQuery(m_rtc_scene, &query, &context, own_surface_callback, &q);
+  query_triangles_near(m_rtc_scene, p, radius, own_surface_callback, &q);
   return !q.foreign;
 }
 

@@ -1,6 +1,7 @@
 // hilight render SCENE --lights L.json -o OUT[.ply|.png|.exr]
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "hilight/shadow_refinement.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/image_io.hpp"
 #include "hilight/io/lights_json.hpp"
@@ -43,6 +44,7 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   std::vector<std::string> outputs;
   float max_edge = 0.f, exposure = 0.f;
   int width = 960, height = 720;
+  long long refine_budget = 0;
   RendererOptions ropts;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
   app.add_option("--lights", lights_path, "lights JSON file")->required();
@@ -51,6 +53,9 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--camera", camera_text, "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (default frames the scene)");
   app.add_option("--width", width, "image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
+  app.add_option("--refine-shadows", refine_budget,
+                 "split triangles at shadow and spot edges for .ply outputs, up to this many vertices in all (0: off)")
+      ->check(CLI::Range(0, 50000000));
   app.add_option("--exposure", exposure, "PNG exposure multiplier (default: automatic)")->check(FiniteNonNegative);
   ropts.add_to(app);
   if (auto code = parse_arguments(app, args)) return *code;
@@ -65,6 +70,20 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
 
   auto start = std::chrono::steady_clock::now();
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
+  if (refine_budget > 0) {
+    // The direct light alone decides where shadow and spot edges run.
+    RendererOptions direct = ropts;
+    direct.bounces = 0;
+    ShadowRefinementSettings refine;
+    refine.vertex_budget = size_t(refine_budget);
+    const size_t before = scene->positions.size();
+    auto refined = refine_shadow_edges(scene, [&](const std::shared_ptr<const Scene>& s) {
+      return direct.create(registry, s)->illuminate(SurfacePoints::from_vertices(*s), lights);
+    }, refine);
+    scene = refined.scene;
+    std::fprintf(stderr, "refined shadow edges: %zu -> %zu vertices in %d passes\n", before, scene->positions.size(),
+                 refined.passes);
+  }
   auto renderer = ropts.create(registry, scene);
 
   for (const auto& path : paths) {

@@ -1,0 +1,129 @@
+// Adaptive refinement at shadow and spot edges (issue 11 §5): triangles
+// split only where the direct light changes fast, the mesh stays watertight,
+// the budget holds, and the shadow's edge comes out sharper.
+#include "hilight/scene_builders.hpp"
+#include "hilight/shadow_refinement.hpp"
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <map>
+
+using namespace hilight;
+
+namespace {
+
+/// A floor with a floating square blocker and a light above: a square shadow.
+std::shared_ptr<const Scene> shadowed_floor() {
+  Scene raw = builders::plane(4.f, Rgb(0.7f));
+  builders::add_box(raw, {-0.5f, 1.f, -0.5f}, {0.5f, 1.1f, 0.5f}, Rgb(0.5f), false, "blocker");
+  return test::finish(std::move(raw), 0.4f);
+}
+
+const Light kLamp = Light::point({0.3f, 3.f, 0.2f}, Rgb(5.f));
+
+VertexLight embree_direct() {
+  return [](const std::shared_ptr<const Scene>& s) {
+    return test::make_renderer("embree", s, {"bounces=0"})->illuminate(SurfacePoints::from_vertices(*s),
+                                                                          std::span<const Light>(&kLamp, 1));
+  };
+}
+
+/// Triangles per undirected edge, over the floor's triangles (y = 0).
+std::map<std::pair<uint32_t, uint32_t>, int> floor_edge_use(const Scene& s) {
+  std::map<std::pair<uint32_t, uint32_t>, int> use;
+  for (const auto& t : s.triangles) {
+    if (std::abs(s.positions[t[0]].y) > 1e-6f || std::abs(s.positions[t[1]].y) > 1e-6f || std::abs(s.positions[t[2]].y) > 1e-6f) continue;
+    for (int k = 0; k < 3; ++k) ++use[std::minmax(t[k], t[(k + 1) % 3])];
+  }
+  return use;
+}
+
+double floor_area(const Scene& s) {
+  double area = 0;
+  for (const auto& t : s.triangles)
+    if (std::abs(s.positions[t[0]].y) < 1e-6f && std::abs(s.positions[t[1]].y) < 1e-6f && std::abs(s.positions[t[2]].y) < 1e-6f)
+      area += 0.5 * glm::length(glm::cross(DVec3(s.positions[t[1]] - s.positions[t[0]]), DVec3(s.positions[t[2]] - s.positions[t[0]])));
+  return area;
+}
+
+/// Where the floor leaves the blocker's shadow along +x through the shadow's
+/// centre line z = z0: the first lit vertex beyond the last dark one, from the values.
+double shadow_edge_width(const Scene& s, const std::vector<Rgb>& light) {
+  // The widest gap between a dark and a lit floor vertex within 3 cm of z = 0.
+  double dark_max = -1e9, lit_min = 1e9;
+  const double edge_x = 0.3 + (0.5 - 0.3) * 3.0 / 2.0;  // the blocker's x = 0.5 edge projected from y = 1 (lower face) to y = 0
+  for (size_t v = 0; v < s.positions.size(); ++v) {
+    const Vec3& p = s.positions[v];
+    if (std::abs(p.y) > 1e-6f || std::abs(p.z) > 0.2f || p.x < edge_x - 1.0 || p.x > edge_x + 1.0) continue;
+    if (light[v].r == 0.f) dark_max = std::max(dark_max, double(p.x));
+    else if (p.x > edge_x - 0.5) lit_min = std::min(lit_min, double(p.x));
+  }
+  return lit_min - dark_max;
+}
+
+} // namespace
+
+TEST_CASE("shadow refinement splits triangles only along the shadow's edge, watertight and within the budget",
+          "[refine][renderer]") {
+  auto scene = shadowed_floor();
+  ShadowRefinementSettings settings;
+  settings.vertex_budget = 3 * scene->positions.size();
+  const auto result = refine_shadow_edges(scene, embree_direct(), settings);
+  const Scene& refined = *result.scene;
+  INFO(scene->positions.size() << " -> " << refined.positions.size() << " vertices in " << result.passes << " passes");
+  CHECK(result.passes >= 3);
+  CHECK(refined.positions.size() > scene->positions.size() + 100);
+  CHECK(refined.positions.size() <= settings.vertex_budget);
+  CHECK(refined.triangles.size() == refined.triangle_material.size());
+  // Watertight: no floor edge is used by more than two triangles, and the
+  // floor's area is unchanged (no overlaps, no holes).
+  for (const auto& [edge, count] : floor_edge_use(refined)) REQUIRE(count <= 2);
+  CHECK(floor_area(refined) == Approx(floor_area(*scene)).epsilon(1e-5));
+  // New vertices lie near the shadow's edge: the blocker's outline projected
+  // from the lamp onto the floor (a square), within two original edges.
+  const Vec3 lo(-0.5f, 1.f, -0.5f), hi(0.5f, 1.f, 0.5f);
+  size_t near_edge = 0, added = refined.positions.size() - scene->positions.size();
+  for (size_t v = scene->positions.size(); v < refined.positions.size(); ++v) {
+    const Vec3& p = refined.positions[v];
+    if (std::abs(p.y) > 1e-6f) continue;
+    // The floor point's ray to the lamp crosses y = 1 (the blocker's underside) at q.
+    const float t = (1.f - p.y) / (kLamp.position.y - p.y);
+    const Vec3 q = p + t * (kLamp.position - p);
+    const float outside = std::max(std::max(lo.x - q.x, q.x - hi.x), std::max(lo.z - q.z, q.z - hi.z));
+    near_edge += std::abs(outside) < 0.4f;  // within one original edge of the outline, in the blocker's plane
+  }
+  CHECK(double(near_edge) > 0.9 * double(added));
+  // Sharper: the gap between the last dark and the first lit floor vertex
+  // across the shadow's edge shrinks.
+  const auto light = [&](const Scene& s) {
+    return test::make_renderer("embree", std::make_shared<const Scene>(s), {"bounces=0"})
+        ->illuminate(SurfacePoints::from_vertices(s), std::span<const Light>(&kLamp, 1));
+  };
+  const double before = shadow_edge_width(*scene, light(*scene)), after = shadow_edge_width(refined, light(refined));
+  std::printf("shadow refinement: %zu -> %zu vertices in %d passes, %.0f%% of them at the edge; shadow edge gap %.3f -> %.3f m\n",
+              scene->positions.size(), refined.positions.size(), result.passes, 100.0 * double(near_edge) / double(added), before, after);
+  CHECK(after < 0.35 * before);
+}
+
+TEST_CASE("shadow refinement leaves an evenly lit scene alone", "[refine][renderer]") {
+  auto scene = test::finish(builders::plane(4.f, Rgb(0.7f)), 0.4f);
+  const auto result = refine_shadow_edges(scene, embree_direct());
+  CHECK(result.passes == 0);
+  CHECK(result.scene == scene);
+}
+
+TEST_CASE("hilight render --refine-shadows writes the refined vertices to the .ply", "[refine][cli]") {
+  auto dir = test::output_dir("render_refine_shadows");
+  const std::string room = HILIGHT_SOURCE_DIR "/scenes/room.obj", lights = HILIGHT_SOURCE_DIR "/scenes/room-4lights.json";
+  auto plain = test::run_hilight({"render", room, "--lights", lights, "-o", (dir / "plain.ply").string()});
+  auto refined = test::run_hilight({"render", room, "--lights", lights, "-o", (dir / "refined.ply").string(), "--refine-shadows", "30000"});
+  INFO(refined.err);
+  REQUIRE(plain.exit_code == 0);
+  REQUIRE(refined.exit_code == 0);
+  CHECK(refined.err.find("refined shadow edges:") != std::string::npos);
+  CHECK(test::read_file(dir / "refined.ply").size() > test::read_file(dir / "plain.ply").size());
+  auto bad = test::run_hilight({"render", room, "--lights", lights, "-o", (dir / "bad.ply").string(), "--refine-shadows", "-3"});
+  CHECK(bad.exit_code == 2);
+  CHECK(test::line_count(bad.err) == 1);
+}
