@@ -179,6 +179,16 @@ bool own_surface_callback(RTCPointQueryFunctionArguments* args) {
   if (glm::length(c - q->p) > q->radius) return false;
   for (uint32_t w : tri)
     if (glm::length(pos[w] - q->p) <= q->same_position && glm::dot(q->scene->normals[w], q->normal) >= 0.999f) return false;
+  // Sharing an edge with the point's own triangle (the same two corners,
+  // with the same normals) is the same smooth surface: a point on that edge
+  // (a refined render's midpoint) is smooth as a vertex there would be.
+  const auto& own = q->scene->triangles[q->own_triangle];
+  int shared = 0;
+  for (uint32_t w : tri)
+    for (uint32_t o : own)
+      shared += glm::length(pos[w] - pos[o]) <= q->same_position &&
+                glm::dot(q->scene->normals[w], q->scene->normals[o]) >= 0.999f;
+  if (shared >= 2) return false;
   q->foreign = true;
   return false;
 }

@@ -91,6 +91,15 @@ Target bind_target(const std::string& source, const std::vector<Vec3>& positions
       Vec3 p, nrm;
       Rgb albedo;
       surface_point_at(scene, b, p, nrm, albedo);
+      // A point on the surface that brings its own normal (a vertex of a
+      // refined render: `render --refine-shadows`) is that very point, bit
+      // for bit, as render shaded it: the same position and normal also key
+      // the renderers' random streams.
+      const float length = normals.empty() ? 0.f : glm::length(normals[i]);
+      if (hits[i].t <= rays.epsilon() && length > 0.f && glm::dot(normals[i] / length, nrm) > 0.99f) {
+        p = positions[i];
+        nrm = std::abs(length - 1.f) < 1e-5f ? normals[i] : normals[i] / length;
+      }
       t.points.positions.push_back(p);
       t.points.normals.push_back(nrm);
       t.points.albedo.push_back(albedo);
