@@ -249,14 +249,14 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
   return {position + to_centroid * (step / distance), false, h.triangle};
 }
 
-ShadingPoint smooth_hit_point(const RayScene& rays, const Hit& hit) {
+ShadingPoint smooth_hit_point(const RayScene& rays, const Hit& hit, float side) {
   const Scene& scene = rays.scene();
   const auto& tri = scene.triangles[hit.triangle];
   const Vec3 p = rays.hit_position(hit);
   const float b[3] = {1.f - hit.u - hit.v, hit.u, hit.v};
   Vec3 lifted(0.f);
   for (int k = 0; k < 3; ++k) {
-    const Vec3& n = scene.normals[tri[k]];
+    const Vec3 n = side * scene.normals[tri[k]];
     // Toward the vertex's tangent plane, and only outward: a convex part's
     // facets lie below the smooth surface, never above it.
     const float below = std::min(0.f, glm::dot(p - scene.positions[tri[k]], n));

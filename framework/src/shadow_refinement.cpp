@@ -1,7 +1,9 @@
 #include "hilight/shadow_refinement.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace hilight {
 
@@ -37,25 +39,44 @@ std::vector<Flagged> fast_changing(const Scene& scene, const std::vector<Rgb>& l
   return out;
 }
 
-/// The scene with the given edges split at their midpoints; every triangle
-/// touching a split edge is cut conformingly (1, 2 or 3 split edges: 2, 3 or 4 triangles).
-Scene split_edges(const Scene& scene, const std::unordered_map<uint64_t, uint32_t>& split) {
+/// Per vertex, the first vertex at the same position: edges are matched by
+/// where they are, so copies of a vertex (split at creases, materials or
+/// texture seams) split their shared edges together and no crack opens.
+std::vector<uint32_t> welded(const Scene& scene) {
+  std::unordered_map<uint64_t, uint32_t> first;
+  std::vector<uint32_t> out(scene.positions.size());
+  for (uint32_t v = 0; v < out.size(); ++v) {
+    const Vec3& p = scene.positions[v];
+    uint32_t bits[3];
+    std::memcpy(bits, &p, sizeof bits);
+    const uint64_t key = (uint64_t(bits[0]) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(bits[1]) << 21) ^ (uint64_t(bits[2]) * 0xC2B2AE3D27D4EB4Full);
+    auto [it, inserted] = first.emplace(key, v);
+    // A hash collision between different positions must not weld them.
+    out[v] = inserted || scene.positions[it->second] == p ? it->second : v;
+  }
+  return out;
+}
+
+/// The scene with every edge whose (welded) ends are in `split` cut at its
+/// midpoint; every triangle touching a split edge is cut conformingly (1, 2
+/// or 3 split edges: 2, 3 or 4 triangles). Each copy of a split edge gets its
+/// own midpoint vertex (its own normal), all at the same position.
+Scene split_edges(const Scene& scene, const std::vector<uint32_t>& weld, const std::unordered_set<uint64_t>& split) {
   Scene out = scene;
   out.triangles.clear();
   out.triangle_material.clear();
-  // Midpoints: new vertices, numbered in the map's order of creation.
-  std::vector<std::pair<uint64_t, uint32_t>> order(split.begin(), split.end());
-  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
-  for (const auto& [key, index] : order) {
-    const uint32_t a = uint32_t(key >> 32), b = uint32_t(key & 0xffffffffu);
-    out.positions.push_back(0.5f * (scene.positions[a] + scene.positions[b]));
-    Vec3 n = scene.normals[a] + scene.normals[b];
-    out.normals.push_back(glm::length(n) > 0.f ? glm::normalize(n) : scene.normals[a]);
-  }
-  const uint32_t base = uint32_t(scene.positions.size());
+  std::unordered_map<uint64_t, uint32_t> midpoint;  // by vertex-index pair
   auto mid = [&](uint32_t a, uint32_t b) -> int64_t {
-    auto it = split.find(edge_key(a, b));
-    return it == split.end() ? -1 : int64_t(base + it->second);
+    if (!split.count(edge_key(weld[a], weld[b]))) return -1;
+    auto [it, inserted] = midpoint.emplace(edge_key(a, b), uint32_t(out.positions.size()));
+    if (inserted) {
+      // From the welded ends, in a fixed order: every copy lands on the same bits.
+      const uint32_t lo = std::min(weld[a], weld[b]), hi = std::max(weld[a], weld[b]);
+      out.positions.push_back(0.5f * (scene.positions[lo] + scene.positions[hi]));
+      Vec3 n = scene.normals[a] + scene.normals[b];
+      out.normals.push_back(glm::length(n) > 0.f ? glm::normalize(n) : scene.normals[a]);
+    }
+    return int64_t(it->second);
   };
   for (size_t t = 0; t < scene.triangles.size(); ++t) {
     const auto& tri = scene.triangles[t];
@@ -106,17 +127,20 @@ ShadowRefinementResult refine_shadow_edges(std::shared_ptr<const Scene> scene, c
   for (int pass = 0; pass < settings.passes && scene->positions.size() < budget; ++pass) {
     const std::vector<Rgb> light = direct_light(scene);
     const std::vector<Flagged> flagged = fast_changing(*scene, light, settings.contrast, min_edge);
-    std::unordered_map<uint64_t, uint32_t> split;
+    const std::vector<uint32_t> weld = welded(*scene);
+    std::unordered_set<uint64_t> split;
     for (const Flagged& f : flagged) {
       const auto& tri = scene->triangles[f.triangle];
       size_t added = 0;
-      for (int k = 0; k < 3; ++k) added += !split.count(edge_key(tri[k], tri[(k + 1) % 3]));
+      for (int k = 0; k < 3; ++k) added += !split.count(edge_key(weld[tri[k]], weld[tri[(k + 1) % 3]]));
+      // (Copies of an edge at a crease each get a vertex: the budget counts positions.)
       if (scene->positions.size() + split.size() + added > budget) break;
-      for (int k = 0; k < 3; ++k) split.emplace(edge_key(tri[k], tri[(k + 1) % 3]), uint32_t(split.size()));
+      for (int k = 0; k < 3; ++k) split.insert(edge_key(weld[tri[k]], weld[tri[(k + 1) % 3]]));
     }
     if (split.empty()) break;
-    scene = std::make_shared<const Scene>(split_edges(*scene, split));
-    result.split_edges += split.size();
+    const size_t before = scene->positions.size();
+    scene = std::make_shared<const Scene>(split_edges(*scene, weld, split));
+    result.split_edges += scene->positions.size() - before;
     result.passes = pass + 1;
   }
   result.scene = std::move(scene);

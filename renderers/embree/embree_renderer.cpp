@@ -183,10 +183,13 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
         if (!hit.valid()) continue;
         // Shaded as a vertex is (rendering model): the side of a light by the
         // shading normal, from the smooth surface over the facets.
-        const ShadingPoint at = smooth_hit_point(*m_embree, hit);
+        const ShadingPoint front = smooth_hit_point(*m_embree, hit, 1.f), back = smooth_hit_point(*m_embree, hit, -1.f);
         const Vec3 n = m_embree->hit_normal(hit);
         Rgb e(0.f);
-        for (const auto& light : prepared) e += light.intensity * unit_direct_irradiance(*m_embree, at, n, n, light, local_rays);
+        for (const auto& light : prepared) {
+          const ShadingPoint& at = glm::dot(n, light.position - front.position) >= 0.f ? front : back;
+          e += light.intensity * unit_direct_irradiance(*m_embree, at, n, n, light, local_rays);
+        }
         if (!vertex_indirect.empty()) {
           const auto& tri = scene.triangles[hit.triangle];
           e += (1.f - hit.u - hit.v) * vertex_indirect[tri[0]] + hit.u * vertex_indirect[tri[1]] + hit.v * vertex_indirect[tri[2]];

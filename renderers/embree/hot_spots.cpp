@@ -68,9 +68,11 @@ HotSpots::HotSpots(const RayScene& rays, const PreparedLight& light, uint64_t& c
   }
   if (nearest == std::numeric_limits<float>::max()) return;
   // Hot: much nearer than the light's typical surface (so much brighter than
-  // what the gather sees elsewhere). A light in the open has no hot patches.
+  // what the gather sees elsewhere). A light mid-room has no hot patches.
+  // Over the directions that meet a surface: above an open floor half miss.
   std::vector<float> distances;
-  for (const SubHit& h : sub) distances.push_back(h.hit ? h.distance : std::numeric_limits<float>::max());
+  for (const SubHit& h : sub)
+    if (h.hit) distances.push_back(h.distance);
   std::nth_element(distances.begin(), distances.begin() + long(distances.size() / 2), distances.end());
   const float typical = distances[distances.size() / 2];
   const float reach = std::min(5.f * nearest, kHotFraction * typical);
@@ -113,7 +115,8 @@ HotSpots::HotSpots(const RayScene& rays, const PreparedLight& light, uint64_t& c
 bool HotSpots::handles(const Vec3& x, const Vec3& y) const {
   if (m_patches.empty()) return false;
   const Vec3 d = y - m_light;
-  if (glm::dot(d, d) >= m_reach2) return false;
+  const float d2 = glm::dot(d, d);
+  if (d2 >= m_reach2 || !(d2 > 0.f)) return false;
   const int32_t p = m_cell[size_t(cell_of(d))];
   if (p < 0) return false;
   const Vec3 w = m_patches[size_t(p)].position - x;

@@ -5,8 +5,8 @@
 /// the directions around each light are split into cells (a cube map,
 /// kCellsPerFace² per face). The part of a cell whose surfaces are close to
 /// the light — within 5× the distance to its nearest surface and 0.25× the
-/// median distance to its surfaces (16× brighter than typical), so a light
-/// in the open or mid-room has none — is a
+/// median distance to the surfaces it meets (16× brighter than typical), so
+/// a light mid-room has none — is a
 /// *hot patch* when nearly flat. A point farther than 3 patch radii from it
 /// receives the patch's
 /// reflected flux from one virtual point light at its flux-weighted centre,

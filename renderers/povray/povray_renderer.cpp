@@ -7,6 +7,8 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace hilight::povray {
@@ -131,7 +133,7 @@ std::vector<Rgb> PovrayRenderer::bake_direct(const SurfacePoints& points, std::s
     // A point's value is the sum over its two sides (rendering model), and
     // POV-Ray lights the side of a surface that faces its camera ray. Each
     // point gets two receivers: tiny white flat triangles with the point's
-    // own normal, 10⁻⁸ × diagonal off its shading point on either side, that
+    // own normal, 10⁻⁸ × diagonal (or 8 float ulps) off its shading point on either side, that
     // cast no shadow and that radiosity rays do not see. A receiver's flat
     // normal decides the side of each light as the point's shading normal
     // does; its shadow rays start at the shading point and POV-Ray ignores
@@ -139,7 +141,12 @@ std::vector<Rgb> PovrayRenderer::bake_direct(const SurfacePoints& points, std::s
     // facets do not shadow it (a smooth point) — the model's "skip the first
     // ε"; the mesh's inside_vector keeps real blockers behind those facets
     // (pov_export.cpp). Albedo multiplies after.
-    const float offset = 1e-8f * diagonal, receiver = 1e-4f * diagonal;
+    // Off the surface by more than a float's rounding of the shading point
+    // (8 ulps of the largest coordinate), else the mesh can hide a receiver.
+    float largest = 0.f;
+    for (const auto& p : m_scene->positions) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    const float offset = std::max(1e-8f * diagonal, 8.f * std::numeric_limits<float>::epsilon() * largest);
+    const float receiver = 1e-4f * diagonal;
     const float lift = 5e-5f * diagonal, size = 0.25f * receiver;
     std::vector<Vec3> at(m);
     for (size_t i = 0; i < m; ++i) at[i] = shading_point(*m_rays, points.positions[i], points.normals[i]).position;

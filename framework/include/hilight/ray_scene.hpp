@@ -51,8 +51,11 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
 /// the smooth surface its vertex normals describe (each vertex's tangent
 /// plane, blended by the barycentrics; Hanika 2021, "Hacking the shadow
 /// terminator"), so the facets' terminator does not show inside a triangle.
-/// At a vertex, and on a flat triangle, it is the hit itself.
-ShadingPoint smooth_hit_point(const RayScene& rays, const Hit& hit);
+/// At a vertex, and on a flat triangle, it is the hit itself. `side` (+1 or
+/// -1) is the side of the shading normal the light is on: the lift goes to
+/// that side, so a light behind a two-sided curved sheet is not shadowed by
+/// the sheet's own facets either.
+ShadingPoint smooth_hit_point(const RayScene& rays, const Hit& hit, float side = 1.f);
 
 class RayScene {
 public:

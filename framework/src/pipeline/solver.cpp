@@ -591,7 +591,8 @@ void Solver::drop_idle_lights(Lighting& lights) const {
   for (const auto& l : lights) brightest = std::max({brightest, l.intensity.r, l.intensity.g, l.intensity.b});
   Lighting kept;
   for (const auto& l : lights)
-    if (std::max({l.intensity.r, l.intensity.g, l.intensity.b}) > 1e-6f * brightest) kept.push_back(l);
+    if (l.type == LightType::Spot || std::max({l.intensity.r, l.intensity.g, l.intensity.b}) > 1e-6f * brightest)
+      kept.push_back(l);  // spots stay: they are the user's hints
   if (!kept.empty() && kept.size() >= min_lights()) lights = std::move(kept);
 }
 
