@@ -14,6 +14,7 @@
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
+#include <unistd.h>
 #include <cstdlib>
 #include <functional>
 #include <cstring>
@@ -72,7 +73,8 @@ std::unique_ptr<SolveRig> rig(const RealCase& c, const std::string& renderer, in
   r->fast = test::make_renderer(renderer, c.scene, fast_renderer_settings(renderer, settings));
   r->sampler = test::registry().create_sampler("importance", {});
   r->optimizer = test::registry().create_optimizer("varpro", {});
-  const auto dir = test::output_dir("fixed_point_" + renderer);
+  // Its own folder per process: ctest runs the fixed-point cases side by side.
+  const auto dir = test::output_dir("fixed_point_" + renderer + "_" + std::to_string(::getpid()));
   write_illuminated_ply(dir / "target.ply", *c.scene, r->reference->illuminate(SurfacePoints::from_vertices(*c.scene), c.truth));
   r->target = read_target(dir / "target.ply", *c.scene, *c.rays);
   SolveSettings s;
