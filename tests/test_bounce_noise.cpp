@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstdlib>
 
 using namespace hilight;
 
@@ -71,15 +70,7 @@ std::vector<Rgb> room_indirect(const std::vector<std::string>& settings, std::sh
 TEST_CASE("bounce noise: a lamp 15 cm below the ceiling gives no fireflies on flat walls and floors", "[renderer][bounce][noise]") {
   for (const char* mode : {"exact", "vertex"}) {
     std::shared_ptr<const Scene> scene;
-    const char* extra = std::getenv("HILIGHT_NOISE_SETTING");
-    std::vector<std::string> settings{std::string("bounce_direct=") + mode};
-    if (extra)
-      for (std::string rest = extra; !rest.empty();) {  // comma-separated key=value
-        const size_t comma = rest.find(',');
-        settings.push_back(rest.substr(0, comma));
-        rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
-      }
-    auto indirect = room_indirect(settings, scene);
+    auto indirect = room_indirect({std::string("bounce_direct=") + mode}, scene);
     Speckle s = neighbour_deviation(*scene, indirect);
     std::printf("bounce noise (%s): median neighbour deviation %.1f%%, 99th percentile %.1f%% over %zu flat vertices\n", mode,
                 100 * s.median, 100 * s.p99, s.vertices);

@@ -16,7 +16,6 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 
 using namespace hilight;
@@ -199,44 +198,9 @@ const OracleCase& curved_case() {
 
 Agreement renderer_against_oracle(const std::string& name) {
   const OracleCase& c = curved_case();
-  std::vector<std::string> settings{"bounces=0"};
-  if (const char* extra = std::getenv("HILIGHT_ORACLE_SETTING")) settings.push_back(extra);
-  auto renderer = test::make_renderer(name, c.scene, settings);
+  auto renderer = test::make_renderer(name, c.scene, {"bounces=0"});
   auto result = renderer->illuminate(SurfacePoints::from_vertices(*c.scene), c.lights);
   Agreement a = agreement(result, c.oracle);
-  if (std::getenv("HILIGHT_ORACLE_DEBUG")) {
-    Oracle o(*c.scene);
-    int shown = 0, darker = 0, brighter = 0, smooth_off = 0;
-    for (uint32_t v = 0; v < result.size(); ++v) {
-      double x = luminance(result[v]), y = luminance(c.oracle[v]);
-      if (std::abs(x - y) <= 0.05 * y + 1e-4) continue;
-      (x < y ? darker : brighter)++;
-      bool sm = o.smooth(v);
-      smooth_off += sm;
-      if (shown++ < 12) {
-        std::printf("v %u smooth %d renderer %.5f oracle %.5f |", v, int(sm), x, y);
-        for (const auto& l : c.lights) {
-          Vec3 w = glm::normalize(l.position - c.scene->positions[v]);
-          double first = 1e30;
-          for (const auto& t : o.tris) {
-            double h = hit_distance(t, D3(c.scene->positions[v]), D3(w));
-            if (h > o.eps && h < first) first = h;
-          }
-          std::printf(" n.w %.3f first hit %.4f of %.3f;", glm::dot(c.scene->normals[v], w), first,
-                      glm::length(l.position - c.scene->positions[v]));
-        }
-        std::printf("\n   fan:");
-        for (const auto& t : o.tris)
-          if (t.v[0] == v || t.v[1] == v || t.v[2] == v) {
-            std::printf(" [ng.n %.2f", glm::dot(t.face_normal, D3(c.scene->normals[v])));
-            for (const auto& l : c.lights) std::printf(" %.2f", glm::dot(t.face_normal, glm::normalize(D3(l.position) - D3(c.scene->positions[v]))));
-            std::printf("]");
-          }
-        std::printf("\n");
-      }
-    }
-    std::printf("darker %d brighter %d smooth among off %d\n", darker, brighter, smooth_off);
-  }
   std::printf("oracle on curved models (%zu vertices, %zu lights): %s D-bar %.3f%%, %.2f%% of vertices > 5%% off\n",
               c.scene->positions.size(), c.lights.size(), name.c_str(), 100 * a.dbar, 100 * a.off_share);
   return a;

@@ -135,7 +135,6 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   // The target comes from the reference settings (exact bounce), the solve
   // from its own fast settings: the figures include that model difference.
   Properties reference_props;
-  if (const char* extra = std::getenv("HILIGHT_BENCH_REFERENCE")) reference_props = Properties::from_assignments({extra});
   auto reference = registry.create_renderer("embree", reference_props);
   reference->set_scene(scene);
   std::vector<Rgb> values = reference->illuminate(SurfacePoints::from_vertices(*scene), truth);
