@@ -79,6 +79,7 @@ std::unique_ptr<SolveRig> rig(const RealCase& c, const std::string& renderer, in
   r->target = read_target(dir / "target.ply", *c.scene, *c.rays);
   SolveSettings s;
   s.use_cache = cache;
+  s.evaluation_points = 0;  // every point: the fixed point is asserted over the whole target
   if (samples) s.samples = samples;
   r->solver = std::make_unique<Solver>(c.scene, c.rays, *r->fast, *r->reference, *r->sampler, *r->optimizer, s);
   return r;

@@ -4,7 +4,9 @@
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/light_bounds.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/gtc/packing.hpp>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -16,7 +18,52 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr uint32_t kFormatVersion = 6;  // 4: grid over light_bounds(); 5: flat axes grow on the side surfaces face; 6: smooth points shaded at the point (rendering model)
+constexpr uint32_t kFormatVersion = 7;  // 4: grid over light_bounds(); 5: flat axes grow on the side surfaces face; 6: smooth points shaded at the point (rendering model); 7: half floats, zero runs
+constexpr uint64_t kMaxVertices = uint64_t(1) << 32;
+
+/// One node's bounce over every vertex as it is kept on disk: values over the
+/// node's largest channel in half floats (a bounce is ~1e-7 in millimetre
+/// scenes: below half's range without the scale), and the runs of vertices
+/// with no bounce at all (other rooms, behind walls) as lengths only.
+struct PackedNode {
+  float scale = 0.f;
+  std::vector<uint32_t> runs;     ///< alternating: zero vertices, then non-zero vertices, ...
+  std::vector<uint16_t> halves;   ///< 3 per non-zero vertex
+};
+
+PackedNode pack(const Rgb* values, size_t count) {
+  PackedNode node;
+  for (size_t v = 0; v < count; ++v) node.scale = std::max({node.scale, values[v].r, values[v].g, values[v].b});
+  const float inverse = node.scale > 0.f ? 1.f / node.scale : 0.f;
+  std::vector<uint16_t> h(3 * count);
+  for (size_t v = 0; v < count; ++v)
+    for (int c = 0; c < 3; ++c) h[3 * v + c] = uint16_t(glm::packHalf1x16(std::max(0.f, values[v][c]) * inverse));
+  auto nonzero = [&](size_t v) { return (h[3 * v] | h[3 * v + 1] | h[3 * v + 2]) != 0; };
+  for (size_t v = 0; v < count;) {
+    const size_t zeros_start = v;
+    while (v < count && !nonzero(v)) ++v;
+    const size_t values_start = v;
+    while (v < count && nonzero(v)) ++v;
+    node.runs.push_back(uint32_t(values_start - zeros_start));
+    node.runs.push_back(uint32_t(v - values_start));
+    node.halves.insert(node.halves.end(), h.begin() + std::ptrdiff_t(3 * values_start), h.begin() + std::ptrdiff_t(3 * v));
+  }
+  return node;
+}
+
+/// The values `pack` kept; false when the runs do not cover `count` vertices.
+bool unpack(const PackedNode& node, Rgb* out, size_t count) {
+  size_t v = 0, h = 0;
+  for (size_t r = 0; r + 1 < node.runs.size(); r += 2) {
+    if (node.runs[r] > count - v) return false;
+    for (uint32_t k = 0; k < node.runs[r]; ++k) out[v++] = Rgb(0.f);
+    if (node.runs[r + 1] > count - v || 3 * size_t(node.runs[r + 1]) > node.halves.size() - h) return false;
+    for (uint32_t k = 0; k < node.runs[r + 1]; ++k, h += 3)
+      out[v++] = node.scale * Rgb(glm::unpackHalf1x16(node.halves[h]), glm::unpackHalf1x16(node.halves[h + 1]),
+                                  glm::unpackHalf1x16(node.halves[h + 2]));
+  }
+  return v == count && h == node.halves.size() && node.runs.size() % 2 == 0;
+}
 constexpr char kMagic[8] = {'H', 'L', 'C', 'A', 'C', 'H', 'E', '1'};
 
 } // namespace
@@ -66,6 +113,13 @@ LightCache LightCache::build(const Scene& scene, const RayScene& rays, Renderer&
   cache.m_vertex_count = scene.positions.size();
   cache.m_key = key(scene, renderer.settings_key(), settings);
   if (!lights.empty()) cache.m_data = renderer.unit_responses(SurfacePoints::from_vertices(scene), lights, Transport::IndirectOnly);
+  // Kept as the disk keeps it, so a solve that built the cache and one that
+  // loaded it see the same numbers.
+  const size_t vc = cache.m_vertex_count;
+  tbb::parallel_for(size_t(0), lights.size(), [&](size_t slot) {
+    Rgb* node = cache.m_data.data() + slot * vc;
+    unpack(pack(node, vc), node, vc);
+  });
   return cache;
 }
 
@@ -89,7 +143,15 @@ void LightCache::save(const fs::path& file) const {
     out.write(reinterpret_cast<const char*>(&m_dims), sizeof(m_dims));
     out.write(reinterpret_cast<const char*>(m_node_valid.data()), std::streamsize(m_node_valid.size()));
     out.write(reinterpret_cast<const char*>(m_node_slot.data()), std::streamsize(m_node_slot.size() * sizeof(uint32_t)));
-    out.write(reinterpret_cast<const char*>(m_data.data()), std::streamsize(m_data.size() * sizeof(Rgb)));
+    const size_t slots = m_vertex_count ? m_data.size() / m_vertex_count : 0;
+    for (size_t slot = 0; slot < slots; ++slot) {
+      const PackedNode node = pack(m_data.data() + slot * m_vertex_count, m_vertex_count);
+      const uint64_t sizes[2] = {node.runs.size(), node.halves.size()};
+      out.write(reinterpret_cast<const char*>(&node.scale), sizeof(node.scale));
+      out.write(reinterpret_cast<const char*>(sizes), sizeof(sizes));
+      out.write(reinterpret_cast<const char*>(node.runs.data()), std::streamsize(node.runs.size() * sizeof(uint32_t)));
+      out.write(reinterpret_cast<const char*>(node.halves.data()), std::streamsize(node.halves.size() * sizeof(uint16_t)));
+    }
     if (!out) throw std::runtime_error("light cache: write failed");
   });
 }
@@ -114,10 +176,22 @@ std::optional<LightCache> LightCache::load(const fs::path& file, uint64_t key, s
   c.m_node_slot.resize(counts[1]);
   in.read(reinterpret_cast<char*>(c.m_node_valid.data()), std::streamsize(counts[1]));
   in.read(reinterpret_cast<char*>(c.m_node_slot.data()), std::streamsize(counts[1] * sizeof(uint32_t)));
-  if (counts[2] != c.valid_node_count() * counts[0]) return std::nullopt;
+  if (counts[0] >= kMaxVertices || counts[2] != c.valid_node_count() * counts[0]) return std::nullopt;
   c.m_data.resize(counts[2]);
-  in.read(reinterpret_cast<char*>(c.m_data.data()), std::streamsize(counts[2] * sizeof(Rgb)));
-  if (!in) return std::nullopt;
+  const size_t slots = counts[0] ? counts[2] / counts[0] : 0;
+  for (size_t slot = 0; slot < slots; ++slot) {
+    PackedNode node;
+    uint64_t sizes[2];
+    in.read(reinterpret_cast<char*>(&node.scale), sizeof(node.scale));
+    in.read(reinterpret_cast<char*>(sizes), sizeof(sizes));
+    // At most two runs and three halves a vertex: anything more is damage.
+    if (!in || sizes[0] > 2 * counts[0] + 2 || sizes[1] > 3 * counts[0] || !std::isfinite(node.scale)) return std::nullopt;
+    node.runs.resize(sizes[0]);
+    node.halves.resize(sizes[1]);
+    in.read(reinterpret_cast<char*>(node.runs.data()), std::streamsize(sizes[0] * sizeof(uint32_t)));
+    in.read(reinterpret_cast<char*>(node.halves.data()), std::streamsize(sizes[1] * sizeof(uint16_t)));
+    if (!in || !unpack(node, c.m_data.data() + slot * counts[0], counts[0])) return std::nullopt;
+  }
   return c;
 }
 

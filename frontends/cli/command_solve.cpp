@@ -87,7 +87,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--spot-hints", hints_path, "lights JSON of spotlights wanted (position, direction, cutoff; intensity ignored)");
   app.add_option("--seed", seed, "seed of sampling and of the renderer's sample streams")->capture_default_str();
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
-  app.add_option("--evaluation-points", s.evaluation_points, "target points D̄ is measured on (0: all; fewer: an estimate)")
+  app.add_option("--evaluation-points", s.evaluation_points, "D̄ is measured on every target point up to this many, else on this many evenly spaced ones (an estimate; 0: every point)")
       ->capture_default_str();
   app.add_flag("--no-residual-samples", [&](int64_t) { s.residual_samples = false; },
                "no second polish with the worst-explained target points added as samples");

@@ -46,6 +46,7 @@ public:
     auto f = [&](const std::vector<double>& p) { return problem.objective(decode(p)); };
     SimplexSettings settings;
     settings.max_evaluations = m_max_evaluations;
+    settings.f_target = problem.negligible();
     if (effort == RefineEffort::Polish) {  // near the optimum: smaller simplex, a quarter of the budget
       for (auto& s : steps) s *= 0.25;
       settings.max_evaluations = std::max(10, m_max_evaluations / 4);

@@ -2,7 +2,8 @@
 // solve, so the simplex searches geometry only (3 parameters per point light
 // instead of 6), and it does so one light at a time — moving one light costs
 // one light's φ, the others' responses are kept by the problem. Sweeps repeat
-// until a sweep improves the objective by less than `tolerance`. A polish
+// until a sweep improves the objective by less than `tolerance`, or the fit
+// is good beyond sight (RefineProblem::negligible). A polish
 // (RefineEffort::Polish) is one sweep with small first steps and half the
 // evaluations.
 //
@@ -34,9 +35,9 @@ public:
     // A polish starts near the optimum: one sweep with small first steps.
     const int sweeps = effort == RefineEffort::Polish ? 1 : m_sweeps;
     const int first_step_level = effort == RefineEffort::Polish ? 2 : 0;
-    for (int sweep = 0; sweep < sweeps; ++sweep) {
+    for (int sweep = 0; sweep < sweeps && best_value > problem.negligible(); ++sweep) {
       const double before = best_value;
-      for (size_t j = 0; j < best.size(); ++j) {
+      for (size_t j = 0; j < best.size() && best_value > problem.negligible(); ++j) {
         std::vector<double> x, steps;
         append_geometry(best[j], scale, x, steps);
         // Later sweeps take smaller first steps: the lights are close by then.
@@ -52,6 +53,7 @@ public:
         settings.max_evaluations = x.size() > 3 ? 4 * m_evaluations : m_evaluations;
         if (effort == RefineEffort::Polish) settings.max_evaluations = std::max(12, settings.max_evaluations / 2);
         settings.x_tolerance = 2e-4;  // 0.02% of the diagonal
+        settings.f_target = problem.negligible();
         SimplexResult r = nelder_mead(f, x, steps, settings);
         if (r.value < best_value) {
           read_geometry(best[j], scale, r.x, 0);

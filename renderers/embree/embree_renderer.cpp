@@ -48,19 +48,21 @@ std::string EmbreeRenderer::settings_key() const {
          "/hot_spots=" + std::to_string(m_settings.hot_spots);
 }
 
-std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const PreparedLight> lights) {
-  // Two values per vertex and light: the side its normal points to, the other.
+std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const PreparedLight> lights,
+                                                           const std::vector<uint32_t>& vertex_sides) {
+  // Two values per vertex and light: the side its normal points to, the
+  // other; only those the gather reads are computed (the rest stay 0).
   const Scene& scene = *m_scene;
   const size_t v_count = scene.positions.size();
   std::vector<float> out(2 * v_count * lights.size());
   tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, v_count, 64), [&](const tbb::blocked_range<size_t>& r) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, vertex_sides.size(), 128), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t j = 0; j < lights.size(); ++j)
-      for (size_t v = r.begin(); v != r.end(); ++v) {
+      for (size_t k = r.begin(); k != r.end(); ++k) {
+        const uint32_t entry = vertex_sides[k], v = entry / 2;
         const ShadingPoint& p = m_vertex_shading[v];
         const Vec3& n = scene.normals[v];
-        out[j * 2 * v_count + 2 * v] = unit_direct_irradiance_on_side(*m_embree, p, n, n, lights[j], rays.local());
-        out[j * 2 * v_count + 2 * v + 1] = unit_direct_irradiance_on_side(*m_embree, p, n, -n, lights[j], rays.local());
+        out[j * 2 * v_count + entry] = unit_direct_irradiance_on_side(*m_embree, p, n, entry & 1 ? -n : n, lights[j], rays.local());
       }
   });
   m_rays += rays.combine(std::plus<uint64_t>());
@@ -87,7 +89,7 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
   if (m_settings.bounces > 0 && transport != Transport::DirectOnly) gather_owner = gather_for(points);
   const BounceGather* gather = gather_owner.get();
   std::vector<float> vertex_direct;
-  if (gather && m_settings.vertex_interpolated_bounce) vertex_direct = vertex_direct_irradiance(prepared);
+  if (gather && m_settings.vertex_interpolated_bounce) vertex_direct = vertex_direct_irradiance(prepared, gather->vertex_sides_read());
   const size_t v_count = m_scene->positions.size();
   auto shading_owner = want_direct || gather ? shading_points(points) : nullptr;
   const std::vector<HotSpots> hot = gather ? hot_spots_of(prepared) : std::vector<HotSpots>();

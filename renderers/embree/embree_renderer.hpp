@@ -45,9 +45,10 @@ private:
   /// Calls visit(i, j, unit RGB response) for every point i and light j, in parallel over points.
   template <class Visit>
   void for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Visit&& visit);
-  /// Unit direct irradiance at every scene vertex for each light, on each
-  /// side (light-major; per vertex: normal side, then the other).
-  std::vector<float> vertex_direct_irradiance(std::span<const PreparedLight> lights);
+  /// Unit direct irradiance at scene vertices for each light, on each side
+  /// (light-major; per vertex: normal side, then the other), computed for the
+  /// entries in `vertex_sides` (BounceGather::vertex_sides_read), 0 elsewhere.
+  std::vector<float> vertex_direct_irradiance(std::span<const PreparedLight> lights, const std::vector<uint32_t>& vertex_sides);
   /// Each light's hot patches (empty when hot_spots is off or there is no bounce).
   std::vector<HotSpots> hot_spots_of(std::span<const PreparedLight> lights);
 

@@ -50,6 +50,13 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
     }
   });
   m_rays = uint64_t(points.size()) * uint64_t(samples);
+  const auto& triangles = es.scene().triangles;
+  std::vector<uint8_t> read(2 * es.scene().positions.size(), 0);
+  for (const GatherHit& g : m_hits)
+    if (g.valid())
+      for (int corner = 0; corner < 3; ++corner) read[2 * triangles[g.triangle][corner] + ((g.vertex_sides >> corner) & 1 ? 0 : 1)] = 1;
+  for (size_t k = 0; k < read.size(); ++k)
+    if (read[k]) m_vertex_sides_read.push_back(uint32_t(k));
 }
 
 Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light, const HotSpots* hot, const Vec3& x,

@@ -29,6 +29,10 @@ public:
                uint64_t seed);
 
   int samples() const { return m_samples; }
+  /// The (vertex, side) values interpolated_indirect_irradiance reads, as
+  /// 2·vertex + (0: the side its normal points to, 1: the other), ascending:
+  /// the only direct light the interpolated mode needs computed.
+  const std::vector<uint32_t>& vertex_sides_read() const { return m_vertex_sides_read; }
   uint64_t rays_cast() const { return m_rays; }
 
   /// Indirect irradiance (RGB, per unit light intensity) at point i, shaded
@@ -55,6 +59,7 @@ private:
     bool valid() const { return triangle != RTC_INVALID_GEOMETRY_ID; }
   };
   std::vector<GatherHit> m_hits;  ///< point-major, m * samples
+  std::vector<uint32_t> m_vertex_sides_read;
 };
 
 } // namespace hilight::embree

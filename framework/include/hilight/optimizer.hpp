@@ -21,6 +21,9 @@ public:
   virtual bool admissible(const Vec3& p) const = 0;
   /// The scene diagonal: the natural step size for positions.
   virtual float scale() const = 0;
+  /// An objective value below which nothing is left that anyone could see:
+  /// an optimizer may stop there (0: never stop early).
+  virtual double negligible() const { return 0.0; }
 };
 
 /// How much work a refine call should do.

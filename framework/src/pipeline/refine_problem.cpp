@@ -98,6 +98,11 @@ double SampleRefineProblem::objective_with_best_intensities(std::vector<Light>& 
   return d * d;
 }
 
+double SampleRefineProblem::negligible() const {
+  const double floor = 1e-4 * m_model.samples().target_norm();
+  return floor * floor;
+}
+
 bool SampleRefineProblem::admissible(const Vec3& p) const {
   const auto placed = m_space.place(p);
   return placed && m_space.admissible(*placed);

@@ -44,6 +44,7 @@ SimplexResult nelder_mead(const std::function<double(const std::vector<double>&)
       for (size_t k = 0; k < n; ++k) size = std::max(size, std::abs(simplex[i][k] - simplex[best][k]));
     if (spread <= settings.f_tolerance * (std::abs(values[best]) + 1e-300) && size <= settings.x_tolerance) break;
     if (size <= settings.x_tolerance * 1e-3) break;
+    if (values[best] <= settings.f_target) break;
 
     std::fill(centroid.begin(), centroid.end(), 0.0);
     for (size_t i = 0; i <= n; ++i)

@@ -28,6 +28,8 @@ public:
   double objective_with_best_intensities(std::vector<Light>& lights) override;
   bool admissible(const Vec3& p) const override;
   float scale() const override { return m_space.rays().scene().diagonal(); }
+  /// D̄ 0.01% at the samples (the threshold polish_with_reference stops at).
+  double negligible() const override;
   /// Moves every light where the light space puts it (the ceiling mount);
   /// false if one cannot stand anywhere near. Objectives evaluate placed lights.
   bool place(std::vector<Light>& lights) const;

@@ -11,6 +11,7 @@ struct SimplexSettings {
   int max_evaluations = 1000;
   double f_tolerance = 1e-9;  ///< stop when the simplex's values agree this closely (relative)
   double x_tolerance = 1e-6;  ///< ...and its vertices this closely (in parameter units)
+  double f_target = 0.0;      ///< stop as soon as a value is at or below this (good enough)
 };
 
 struct SimplexResult {

@@ -19,6 +19,9 @@
 
 namespace hilight {
 
+/// Default cap on the points D̄ is measured on (SolveSettings::evaluation_points).
+constexpr size_t kDefaultEvaluationPoints = 20000;
+
 struct SolveSettings {
   size_t samples = 0;                ///< surface samples drawn by the sampler (0: sample_count_for(target points))
   uint64_t seed = 1;                 ///< sampling seed
@@ -32,7 +35,10 @@ struct SolveSettings {
   double eps_opt = 0.15;             ///< ε_opt: only cuts with D̄ below are refined
   double eps_impro = 1.6;            ///< ε_impro of eq. 9
   size_t fixed_count = 0;            ///< --lights N (0: automatic)
-  size_t evaluation_points = 0;      ///< target points D̄ is measured on (0: all; else evenly spaced, an estimate)
+  /// Target points D̄ is measured on: every point up to this many, else this
+  /// many evenly spaced (an estimate; 0: always every point). The exact
+  /// bounce over a 138k-point building costs 4.9 s for 6 lights on 2 cores.
+  size_t evaluation_points = kDefaultEvaluationPoints;
   bool residual_samples = true;      ///< after the fit, add the worst-explained points as samples and polish
   Lighting spot_hints;               ///< spotlights the user asked for
   PlacementRules placement;          ///< where lights may stand (--place)
