@@ -69,7 +69,7 @@ TEST_CASE("regions: region:K and not-region:K hold in every result", "[regions][
   const Target target = bind_target("two rooms", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
   auto sampler = test::registry().create_sampler("importance", {});
   auto optimizer = test::registry().create_optimizer("varpro", {});
-  for (const std::string rule : {"not-region:" + std::to_string(right), "region:" + std::to_string(left)}) {
+  for (const std::string& rule : {"not-region:" + std::to_string(right), "region:" + std::to_string(left)}) {
     INFO(rule);
     SolveSettings s;
     s.use_cache = false;
@@ -97,4 +97,38 @@ TEST_CASE("regions: region:K and not-region:K hold in every result", "[regions][
   PlacementRules rules;
   CHECK_THROWS_WITH(rules.add("not-region:-1"), Catch::Contains("region number"));
   CHECK_THROWS_WITH(rules.add("region:1.5"), Catch::Contains("region number"));
+}
+
+TEST_CASE("regions: the hierarchy merges a split lamp within its room first, and every merged light stands in a child's room",
+          "[regions][hierarchy]") {
+  auto scene = std::make_shared<const Scene>(two_rooms(false));
+  const RayScene rays(*scene);
+  const LightSpace space(rays);
+  auto renderer = test::make_renderer("embree", scene, {"bounces=0"});
+  // Room A's lamp found as two lights (a seeding's split), room B's as one;
+  // the target: one lamp in each room.
+  const Lighting leaves = {Light::point({1.3f, 2.5f, 2.f}, Rgb(1.f)), Light::point({4.5f, 2.5f, 2.f}, Rgb(1.f)),
+                           Light::point({1.7f, 2.5f, 2.1f}, Rgb(1.f))};
+  const Lighting truth = {Light::point({1.5f, 2.5f, 2.05f}, Rgb(2.f)), Light::point({4.5f, 2.5f, 2.f}, Rgb(1.f))};
+  const std::vector<Rgb> values = renderer->illuminate(SurfacePoints::from_vertices(*scene), truth);
+  const Target target = bind_target("two rooms", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, rays, scene->normals);
+  const SampleSet samples = all_samples(target);
+  ResponseModel model(*renderer, samples, nullptr);
+  const auto phi = model.responses(leaves);
+  auto may_stand_at = [&](const Vec3& x, const Vec3& a, const Vec3& b) {
+    const int room = space.regions().at(x);
+    return space.admissible(x) && (room == space.regions().at(a) || room == space.regions().at(b));
+  };
+  const LightHierarchy h = LightHierarchy::build(model, leaves, phi, {}, {}, {}, may_stand_at);
+  REQUIRE(h.nodes().size() == 5);
+  CHECK(std::minmax(h.nodes()[3].left, h.nodes()[3].right) == std::minmax(0, 2));  // the split lamp first
+  const std::vector<int> two = h.cut(2);
+  REQUIRE(two.size() == 2);
+  CHECK(space.regions().at(h.nodes()[two[0]].position) != space.regions().at(h.nodes()[two[1]].position));
+  for (size_t k = leaves.size(); k < h.nodes().size(); ++k) {
+    const Cluster& c = h.nodes()[k];
+    const Vec3 a = h.nodes()[c.left].position, b = h.nodes()[c.right].position;
+    INFO("merge " << k);
+    CHECK(may_stand_at(c.position, a, b));
+  }
 }

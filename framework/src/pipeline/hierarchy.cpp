@@ -5,18 +5,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <tbb/parallel_for.h>
 
 namespace hilight {
 
-namespace {
-
-} // namespace
-
 LightHierarchy LightHierarchy::build(ResponseModel& model, const Lighting& leaves, const std::vector<Rgb>& leaf_phi,
                                      const std::vector<Rgb>& fixed_phi, const std::vector<Rgb>& fixed_intensity,
-                                     const HierarchySettings& settings) {
+                                     const HierarchySettings& settings, const MayStandAt& may_stand_at) {
   const SampleSet& samples = model.samples();
   const size_t m = samples.size();
   LightHierarchy h;
@@ -64,6 +61,7 @@ LightHierarchy LightHierarchy::build(ResponseModel& model, const Lighting& leave
     }
     // Eq. 7 positions whose φ is not known yet: one batch.
     std::vector<Vec3> weighted_pos(pairs.size());
+    std::vector<char> weighted_allowed(pairs.size(), 1);
     Lighting missing;
     std::vector<size_t> missing_pair;
     for (size_t p = 0; p < pairs.size(); ++p) {
@@ -72,7 +70,8 @@ LightHierarchy LightHierarchy::build(ResponseModel& model, const Lighting& leave
       const double na = contribution(a.phi, 0, a.intensity, samples), nb = contribution(b.phi, 0, b.intensity, samples);
       weighted_pos[p] = na + nb > 0 ? Vec3((DVec3(a.position) * na + DVec3(b.position) * nb) / (na + nb))
                                     : 0.5f * (a.position + b.position);
-      if (!weighted_phi.count(pairs[p])) {
+      weighted_allowed[p] = !may_stand_at || may_stand_at(weighted_pos[p], a.position, b.position);
+      if (weighted_allowed[p] && !weighted_phi.count(pairs[p])) {
         missing.push_back(Light::point(weighted_pos[p], Rgb(1.f)));
         missing_pair.push_back(p);
       }
@@ -86,7 +85,7 @@ LightHierarchy LightHierarchy::build(ResponseModel& model, const Lighting& leave
     std::vector<std::array<double, 3>> cost(pairs.size());
     tbb::parallel_for(size_t(0), pairs.size(), [&](size_t p) {
       const Cluster &a = h.m_nodes[pairs[p].first], &b = h.m_nodes[pairs[p].second];
-      const std::vector<Rgb>& pw = weighted_phi.at(pairs[p]);
+      const std::vector<Rgb>& pw = weighted_allowed[p] ? weighted_phi.at(pairs[p]) : a.phi;  // (unused when not allowed)
       const DVec3 la(a.intensity), lb(b.intensity), lab = la + lb;
       std::array<double, 3> s = {0, 0, 0};
       for (size_t i = 0; i < m; ++i) {
@@ -97,6 +96,7 @@ LightHierarchy LightHierarchy::build(ResponseModel& model, const Lighting& leave
         s[1] += w * glm::dot(db, db);
         s[2] += w * glm::dot(dw, dw);
       }
+      if (!weighted_allowed[p]) s[2] = std::numeric_limits<double>::infinity();
       cost[p] = s;
     });
     size_t best_p = 0;

@@ -146,7 +146,14 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   Lighting spots(seed.lights.begin() + std::ptrdiff_t(n_points), seed.lights.end());
   std::vector<Rgb> spot_l;
   for (const auto& s : spots) spot_l.push_back(s.intensity);
-  m_hierarchy = LightHierarchy::build(model, leaves, leaf_phi, spot_phi, spot_l, m_settings.hierarchy);
+  // A merged light stands in free space, in the room of one of the two.
+  const LightSpace& space = *m_space;
+  auto may_stand_at = [&space](const Vec3& x, const Vec3& a, const Vec3& b) {
+    if (!space.admissible(x)) return false;
+    const int room = space.regions().at(x);
+    return room == space.regions().at(a) || room == space.regions().at(b);
+  };
+  m_hierarchy = LightHierarchy::build(model, leaves, leaf_phi, spot_phi, spot_l, m_settings.hierarchy, may_stand_at);
   report.seconds["hierarchy"] += hierarchy_watch.seconds();
 
   // Every cut's D̄ with intensities re-fitted (a better start than the sums).

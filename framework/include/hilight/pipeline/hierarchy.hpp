@@ -8,8 +8,16 @@
 /// rarely the best merge, and the pair count falls from O(n²) to O(n·k)); the
 /// residual is updated incrementally and each pair's weighted-position φ is
 /// computed once and kept, since clusters never change after they form.
+///
+/// Rooms: eq. 7's weighted position of two clusters in different rooms can
+/// fall in the wall between them or in a third room; `may_stand_at(x, a, b)`
+/// (the solver: x is a free light position in a's or b's region) keeps such
+/// an x out of the candidates, so a merge across rooms puts the light where
+/// one of the two stood — and, like every merge, happens only when it
+/// explains the target best of all merges left.
 #include "hilight/pipeline/responses.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace hilight {
@@ -31,9 +39,10 @@ class LightHierarchy {
 public:
   /// `leaves`: the seed's point lights with their φ; `fixed_phi`/`fixed_l`:
   /// lights that never merge (spots), part of every cut's illumination.
+  using MayStandAt = std::function<bool(const Vec3& merged, const Vec3& a, const Vec3& b)>;
   static LightHierarchy build(ResponseModel& model, const Lighting& leaves, const std::vector<Rgb>& leaf_phi,
                               const std::vector<Rgb>& fixed_phi, const std::vector<Rgb>& fixed_intensity,
-                              const HierarchySettings& settings = {});
+                              const HierarchySettings& settings = {}, const MayStandAt& may_stand_at = {});
 
   size_t leaf_count() const { return m_leaf_count; }
   const std::vector<Cluster>& nodes() const { return m_nodes; }
