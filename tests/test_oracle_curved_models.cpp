@@ -111,8 +111,11 @@ struct Oracle {
     return true;
   }
 
-  /// Where a crease or contact vertex is shaded: a hair toward the centroid of
-  /// the nearest triangle that agrees best with its normal.
+  /// Where a crease or contact vertex is shaded: a fixed step into the face
+  /// of the nearest triangle that agrees best with its normal, away from the
+  /// crease (the mean direction over the face's wedges at the point) or, where
+  /// the face goes on all around, away from the surfaces touching it (their
+  /// normals laid into the face's plane); halved until still on that face.
   D3 nudged(uint32_t v) const {
     const D3 p(scene.positions[v]), n(scene.normals[v]);
     double best = std::numeric_limits<double>::max(), best_alignment = -2;
@@ -127,6 +130,43 @@ struct Oracle {
       }
     }
     if (!chosen) return p;
+    const D3 plane = chosen->face_normal, on = p - glm::dot(p - chosen->a, plane) * plane;
+    const double touch = 0.5 * eps, full_step = std::max(3e-3, 4 * eps);
+    D3 fan(0), away(0);
+    for (const auto& t : tris) {
+      if (glm::any(glm::lessThan(on + full_step, t.lo)) || glm::any(glm::greaterThan(on - full_step, t.hi))) continue;
+      const double d = distance_to(t, on), facing = glm::dot(t.face_normal, plane);
+      if (d > full_step) continue;
+      if (facing < 0.9999) {
+        if (facing > -0.9999) away += t.face_normal - facing * plane;
+        continue;
+      }
+      if (d > touch) continue;
+      const D3 corners[3] = {t.a, t.b, t.c};
+      bool at_corner = false;
+      for (int k = 0; k < 3 && !at_corner; ++k)
+        if (glm::length(corners[k] - on) <= touch) {
+          const D3 ub = glm::normalize(corners[(k + 1) % 3] - on), uc = glm::normalize(corners[(k + 2) % 3] - on);
+          const double angle = std::acos(glm::clamp(glm::dot(ub, uc), -1.0, 1.0));
+          if (glm::length(ub + uc) > 0) fan += 2 * std::sin(angle / 2) * glm::normalize(ub + uc);
+          at_corner = true;
+        }
+      for (int k = 0; k < 3 && !at_corner; ++k) {
+        const D3 a = corners[k], b = corners[(k + 1) % 3], c = corners[(k + 2) % 3], ab = b - a;
+        const double s = glm::dot(on - a, ab) / glm::dot(ab, ab);
+        if (s < 0 || s > 1 || glm::length(a + s * ab - on) > touch) continue;
+        const D3 inward = (c - a) - glm::dot(c - a, glm::normalize(ab)) * glm::normalize(ab);
+        fan += 2.0 * glm::normalize(inward);
+        break;
+      }
+    }
+    const D3 direction = glm::length(fan) > 1e-3 ? fan : away;
+    if (glm::length(direction) > 1e-3)
+      for (double step = full_step; step > touch; step *= 0.5) {
+        const D3 q = on + step * glm::normalize(direction);
+        for (const auto& t : tris)
+          if (glm::dot(t.face_normal, plane) >= 0.9999 && distance_to(t, q) <= 2 * touch) return q;
+      }
     D3 to_centroid = (chosen->a + chosen->b + chosen->c) / 3.0 - p;
     double distance = glm::length(to_centroid);
     double step = std::min(std::max(0.01 * distance, 3e-3), 0.1 * distance);

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr uint32_t kFormatVersion = 7;  // 4: grid over light_bounds(); 5: flat axes grow on the side surfaces face; 6: smooth points shaded at the point (rendering model); 7: half floats, zero runs
+constexpr uint32_t kFormatVersion = 8;  // 4: grid over light_bounds(); 5: flat axes grow on the side surfaces face; 6: smooth points shaded at the point (rendering model); 7: half floats, zero runs; 8: crease points nudged the same on any tessellation
 constexpr uint64_t kMaxVertices = uint64_t(1) << 32;
 
 /// One node's bounce over every vertex as it is kept on disk: values over the

@@ -1,6 +1,7 @@
 #include "hilight/ray_scene.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include <stdexcept>
 #include <string>
@@ -193,6 +194,66 @@ bool own_surface_callback(RTCPointQueryFunctionArguments* args) {
   return false;
 }
 
+/// Where a crease or contact point is nudged, from the triangles touching p:
+/// - `fan`: those in the plane of its chosen triangle (facing the same way),
+///   each adding the mean of the unit directions over its wedge at p
+///   (∫ ω dθ). The sum depends on the fan's angular span only, not on how it
+///   is split into triangles, so a refined mesh nudges a point the way the
+///   original does; it vanishes where the face goes on all around p.
+/// - `away`: the other surfaces' normals laid into the plane (a leg standing
+///   on a floor: away from the leg), for that case.
+struct FanQuery {
+  const Scene* scene;
+  const std::vector<Vec3>* face_normals;
+  Vec3 p, plane_normal;
+  float touch;       ///< p lies on a triangle when this close to it
+  float near;        ///< other surfaces this close count (within the nudge's step)
+  Vec3 fan{0.f}, away{0.f};
+};
+
+bool fan_callback(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<FanQuery*>(args->userPtr);
+  const auto& tri = q->scene->triangles[args->primID];
+  const auto& pos = q->scene->positions;
+  float u, v;
+  const float distance = glm::length(closest_on_triangle(q->p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v) - q->p);
+  if (distance > q->near) return false;
+  const Vec3& face = (*q->face_normals)[args->primID];
+  const float facing = glm::dot(face, q->plane_normal);
+  if (facing < 0.9999f || distance > q->touch) {
+    if (facing >= 0.9999f) return false;  // the same face, not at p
+    if (facing > -0.9999f) q->away += face - facing * q->plane_normal;  // (a face's back, coplanar, says nothing)
+    return false;
+  }
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = pos[tri[k]], b = pos[tri[(k + 1) % 3]], c = pos[tri[(k + 2) % 3]];
+    const Vec3 to_b = b - q->p, to_c = c - q->p;
+    if (glm::length(a - q->p) <= q->touch) {  // p at corner a: the wedge from ab to ac
+      const float lb = glm::length(to_b), lc = glm::length(to_c);
+      if (!(lb > 0.f && lc > 0.f)) return false;
+      const Vec3 ub = to_b / lb, uc = to_c / lc;
+      const float angle = std::acos(std::clamp(glm::dot(ub, uc), -1.f, 1.f));
+      const Vec3 bisector = ub + uc;
+      if (glm::length(bisector) > 0.f) q->fan += 2.f * std::sin(0.5f * angle) * glm::normalize(bisector);
+      return false;
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = pos[tri[k]], b = pos[tri[(k + 1) % 3]], c = pos[tri[(k + 2) % 3]];
+    const Vec3 ab = b - a;
+    const float len = glm::length(ab);
+    if (!(len > 0.f)) continue;
+    const float along = glm::dot(q->p - a, ab) / (len * len);
+    if (along < 0.f || along > 1.f || glm::length(a + along * ab - q->p) > q->touch) continue;
+    // p on edge ab: the half-disk toward c, whose mean direction has length 2.
+    Vec3 inward = (c - a) - glm::dot(c - a, ab / len) * (ab / len);
+    const float height = glm::length(inward);
+    if (height > 0.f) q->fan += 2.f * inward / height;
+    return false;
+  }
+  return false;  // p inside the triangle: no edge here (a contact in the open face)
+}
+
 /// Calls `visit` (an Embree point-query callback) for the triangles within `radius` of `p`.
 void query_triangles_near(RTCScene scene, const Vec3& p, float radius, RTCPointQueryFunction visit, void* state) {
   RTCPointQuery query;
@@ -241,12 +302,32 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
   Hit h = rays.closest_point(position, 1e-3f * scene.diagonal(), normal);
   if (!h.valid()) return {position, false};
   if (rays.only_own_surface_near(position, normal, h.triangle, 2.f * rays.epsilon())) return {position, true, h.triangle};
+  // Into the chosen triangle's face, away from the crease (or the touching
+  // surface), a fixed step — at least 3e-3: POV-Ray ignores shadow hits
+  // closer than 1e-3 — halved until the point is still on that face. All of
+  // it is the same on any tessellation of the same faces.
+  const Vec3 plane = rays.face_normals()[h.triangle];
+  const Vec3 on = position - glm::dot(position - rays.hit_position(h), plane) * plane;
+  const float touch = 0.5f * rays.epsilon(), full_step = std::max(3e-3f, 4.f * rays.epsilon());
+  FanQuery fan{&scene, &rays.face_normals(), on, plane, touch, full_step};
+  query_triangles_near(rays.rtc_scene(), on, fan.near, fan_callback, &fan);
+  const Vec3 direction = glm::length(fan.fan) > 1e-3f ? fan.fan : fan.away;
+  if (glm::length(direction) > 1e-3f) {
+    const Vec3 unit = glm::normalize(direction);
+    for (float step = full_step; step > touch; step *= 0.5f) {
+      const Vec3 q = on + step * unit;
+      const Hit c = rays.closest_point(q, 2.f * touch, plane);
+      if (c.valid() && glm::dot(rays.face_normals()[c.triangle], plane) >= 0.9999f) return {q, false, c.triangle};
+    }
+  }
+  // Nothing to go by (an isolated point in an open face): toward the
+  // triangle's centroid.
   const auto& tri = scene.triangles[h.triangle];
   Vec3 to_centroid = (scene.positions[tri[0]] + scene.positions[tri[1]] + scene.positions[tri[2]]) / 3.f - position;
   float distance = glm::length(to_centroid);
   if (!(distance > 0.f)) return {position, false, h.triangle};
-  float step = std::min(std::max(0.01f * distance, 3e-3f), 0.1f * distance);
-  return {position + to_centroid * (step / distance), false, h.triangle};
+  float centroid_step = std::min(std::max(0.01f * distance, 3e-3f), 0.1f * distance);
+  return {position + to_centroid * (centroid_step / distance), false, h.triangle};
 }
 
 ShadingPoint smooth_hit_point(const RayScene& rays, const Hit& hit, float side) {

@@ -64,4 +64,23 @@ Scene real_furnished_room() {
   return scene;
 }
 
+BuiltScene engine_product() {
+  BuiltScene b;
+  b.name = "engine";
+  b.scene = test_model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+  Bounds box;
+  for (const auto& p : b.scene.positions) box.extend(p);
+  const Vec3 c = box.center(), half = 0.5f * box.extent();
+  const float d = glm::length(box.extent());
+  // A ring of zones a quarter diagonal beyond the sides, above the top: in
+  // the open space the solve searches (half a diagonal beyond open sides).
+  for (int k = 0; k < 6; ++k) {
+    const float a = 2.f * float(kPi) * float(k) / 6.f;
+    const Vec3 centre(c.x + std::cos(a) * (half.x + 0.25f * d), c.y + half.y + 0.1f * d, c.z + std::sin(a) * (half.z + 0.25f * d));
+    b.zones.push_back({centre - Vec3(0.08f * d), centre + Vec3(0.08f * d)});
+  }
+  b.far_lights = true;
+  return b;
+}
+
 } // namespace hilight::builders

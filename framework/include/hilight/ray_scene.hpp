@@ -40,9 +40,10 @@ struct ShadingPoint {
   }
 };
 
-/// Smooth points stay where they are; others move a hair inside the triangle
-/// they lie on (toward its centroid: 1% of the way, at least 3e-3 scene
-/// units — POV-Ray ignores shadow hits closer than 1e-3 — at most 10%), so
+/// Smooth points stay where they are; others move a fixed step (at least
+/// 3e-3 scene units: POV-Ray ignores shadow hits closer than 1e-3) into the
+/// face they lie on, away from the crease or from the surface touching them,
+/// the same on any tessellation of that face (docs/rendering-model.md), so
 /// that a point on an edge or corner never starts rays on a neighbouring
 /// face's plane.
 ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec3& normal);

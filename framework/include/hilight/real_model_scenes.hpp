@@ -4,6 +4,7 @@
 /// and the painter's tests, like hilight/scene_builders.hpp; raw meshes to
 /// pass through finish_scene(). Each throws InputError naming the model
 /// file when it is missing.
+#include "hilight/built_scenes.hpp"
 #include "hilight/scene.hpp"
 
 #include <filesystem>
@@ -29,5 +30,10 @@ Scene curved_models_on_floor();
 /// Wuson on it, the spider and the Cesium milk truck on the floor, a rock
 /// (fels) on a cabinet. Units are metres; the ceiling is at y = 3.
 Scene real_furnished_room();
+
+/// A real product in open space: the glTF 2-cylinder engine (156k vertices,
+/// in its own units), with six zones around and above it, outside its
+/// bounds, where a key, a fill and a rim light stand (far lights).
+BuiltScene engine_product();
 
 } // namespace hilight::builders
