@@ -257,9 +257,10 @@ TEST_CASE("oracle: Embree's direct light on real curved models matches a brute-f
 
 TEST_CASE("oracle: POV-Ray's direct light on real curved models matches the brute-force loop", "[oracle][povray]") {
   if (test::skip_without_renderer("povray")) return;
-  // Goal 1% (issue 11); measured 2.5%: POV-Ray still differs at some crease
-  // and grazing points (docs/STATUS.md).
-  CHECK(renderer_against_oracle("povray").dbar < 0.03);
+  // Goal 1% (issue 11); measured 2.0%, most of it at three vertices under a
+  // doubled sheet of the Wuson that POV-Ray's shadow tolerance ignores
+  // (docs/povray.md).
+  CHECK(renderer_against_oracle("povray").dbar < 0.025);
 }
 
 TEST_CASE("oracle: ism-vulkan's direct light on real curved models matches the brute-force loop", "[oracle][ism]") {
