@@ -85,7 +85,10 @@ std::vector<int32_t> match_vertices(const Scene& scene, const std::vector<Vec3>&
         float a = glm::dot(glm::normalize(normal), scene.normals[v]);
         if (a > agreement + 1e-6f) agreement = a, best = v;
       }
-      vertex[i] = int32_t(best);
+      // A point of another surface that only passes through a vertex here (a
+      // refined render's vertex on a table leg's edge, where the table top
+      // has a corner) is not that vertex: it binds to its own surface.
+      if (agreement >= 0.99f) vertex[i] = int32_t(best);
     } else {
       vertex[i] = int32_t(c[taken[c.front()]++ % c.size()]);
     }
