@@ -466,6 +466,59 @@ Lighting Solver::merge_close_pairs(const SampleSet& samples, Lighting lights, do
   return lights;
 }
 
+Lighting Solver::split_lamps(const SampleSet& samples, Lighting lights, double& dbar) {
+  const size_t most = max_lights();
+  if (m_settings.fixed_count != 0 || dbar <= kVisibleDbar || (most != 0 && lights.size() >= most)) return lights;
+  const size_t m = samples.size();
+  std::optional<LightCacheView> view;
+  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
+  ResponseModel model(m_renderer, samples, view ? &*view : nullptr), exact(m_renderer, samples, nullptr);
+  // Each sample's residual goes to the light that gives it the most light.
+  const std::vector<Rgb> phi = model.responses(lights);
+  const std::vector<Rgb> l = fit_intensities(phi, lights.size(), samples);
+  const std::vector<Rgb> lit = combine(phi, l, m);
+  std::vector<double> share(lights.size(), 0.0);
+  double total = 0;
+  for (size_t i = 0; i < m; ++i) {
+    const DVec3 d = DVec3(samples.target[i]) - DVec3(lit[i]);
+    const double r = double(samples.weight[i]) * glm::dot(d, d);
+    size_t owner = 0;
+    float brightest = -1.f;
+    for (size_t j = 0; j < lights.size(); ++j) {
+      const Rgb c = phi[j * m + i] * l[j];
+      if (c.r + c.g + c.b > brightest) brightest = c.r + c.g + c.b, owner = j;
+    }
+    share[owner] += r, total += r;
+  }
+  const size_t j = size_t(std::max_element(share.begin(), share.end()) - share.begin());
+  if (lights[j].type != LightType::Point || !(share[j] > 0.25 * total)) return lights;
+  // Two halves a quarter of a seeding cell to either side, along each axis.
+  const Vec3 extent = m_space->bounds().extent();
+  const float offset = 0.25f * std::max({extent.x, extent.y, extent.z}) / float(2 * std::max(1, m_settings.seeding.coarse_cells));
+  Lighting best;
+  double best_dbar = dbar;
+  for (int axis = 0; axis < 3; ++axis) {
+    Vec3 step(0.f);
+    step[axis] = offset;
+    Lighting trial;
+    for (size_t k = 0; k < lights.size(); ++k)
+      if (k != j) trial.push_back(lights[k]);
+    for (float side : {-1.f, 1.f}) {
+      const Vec3 p = lights[j].position + side * step;
+      if (!m_space->admissible(p)) break;
+      trial.push_back(Light::point(p, 0.5f * lights[j].intensity));
+    }
+    if (trial.size() != lights.size() + 1) continue;
+    double trial_dbar = 0;
+    trial = refine_anchored(model, exact, trial, trial_dbar, RefineEffort::Polish);
+    trial = polish_with_reference(samples, trial, false, trial_dbar);
+    if (trial.size() == lights.size() + 1 && trial_dbar < best_dbar) best = std::move(trial), best_dbar = trial_dbar;
+  }
+  if (best.empty() || !(dbar >= m_settings.eps_impro * best_dbar)) return lights;  // eq. 9: the light more must pay
+  dbar = best_dbar;
+  return best;
+}
+
 Lighting Solver::polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
                                   SolveReport& report) {
   Stopwatch watch;
@@ -645,6 +698,11 @@ Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {
     lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
   }
   lights = merge_close_pairs(samples, std::move(lights), report.dbar_samples);
+  for (int round = 0; round < 4; ++round) {  // each split must pay (eq. 9)
+    const size_t before = lights.size();
+    lights = split_lamps(samples, std::move(lights), report.dbar_samples);
+    if (lights.size() == before) break;
+  }
   report.seconds["reference polish"] += polish_watch.seconds();
   lights = polish_residuals(target, std::move(samples), lights, false, report);
   finish_report(target, lights, report);

@@ -165,6 +165,10 @@ private:
   /// spot_proposals.hpp), one at a time, each kept if D̄ improves by ε_impro.
   Lighting add_spots(const SampleSet& samples, Lighting lights, double& dbar);
   Lighting merge_close_pairs(const SampleSet& samples, Lighting lights, double& dbar);
+  /// The inverse of a merge: the point light whose share of the target is
+  /// worst explained split in two (along each axis), polished, kept when eq.
+  /// 9 says the light more pays (two close lamps the seeding found as one).
+  Lighting split_lamps(const SampleSet& samples, Lighting lights, double& dbar);
   /// Polishes again with the worst-explained target points added to the samples.
   Lighting polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
                             SolveReport& report);
