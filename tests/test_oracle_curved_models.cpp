@@ -123,7 +123,16 @@ struct Oracle {
     for (const auto& t : tris) {
       if (glm::any(glm::lessThan(p + 4 * eps, t.lo)) || glm::any(glm::greaterThan(p - 4 * eps, t.hi))) continue;
       double d = distance_to(t, p), alignment = glm::dot(t.face_normal, n);
-      if (d < best - eps || (std::abs(d - best) <= eps && alignment > best_alignment + 1e-4)) {
+      // Ties (as close, as well aligned) go to the larger normal, x first:
+      // the same choice on any cut of the same faces.
+      auto larger = [&](const D3& a, const D3& b) {
+        for (int k = 0; k < 3; ++k)
+          if (std::abs(a[k] - b[k]) > 1e-4) return a[k] > b[k];
+        return false;
+      };
+      if (d < best - eps ||
+          (std::abs(d - best) <= eps && (alignment > best_alignment + 1e-4 ||
+                                         (alignment >= best_alignment - 1e-4 && larger(t.face_normal, chosen->face_normal))))) {
         best = std::min(best, d);
         best_alignment = alignment;
         chosen = &t;
@@ -133,12 +142,16 @@ struct Oracle {
     const D3 plane = chosen->face_normal, on = p - glm::dot(p - chosen->a, plane) * plane;
     const double touch = 0.5 * eps, full_step = std::max(3e-3, 4 * eps);
     D3 fan(0), away(0);
+    std::vector<std::pair<D3, double>> planes;  // other surfaces counted once a plane
     for (const auto& t : tris) {
       if (glm::any(glm::lessThan(on + full_step, t.lo)) || glm::any(glm::greaterThan(on - full_step, t.hi))) continue;
       const double d = distance_to(t, on), facing = glm::dot(t.face_normal, plane);
       if (d > full_step) continue;
       if (facing < 0.9999) {
-        if (facing > -0.9999) away += t.face_normal - facing * plane;
+        const double offset = glm::dot(t.face_normal, t.a);
+        bool seen = facing <= -0.9999;
+        for (const auto& [normal, o] : planes) seen |= glm::length(normal - t.face_normal) < 1e-4 && std::abs(o - offset) <= touch;
+        if (!seen) planes.emplace_back(t.face_normal, offset), away += t.face_normal - facing * plane;
         continue;
       }
       if (d > touch) continue;
@@ -147,8 +160,7 @@ struct Oracle {
       for (int k = 0; k < 3 && !at_corner; ++k)
         if (glm::length(corners[k] - on) <= touch) {
           const D3 ub = glm::normalize(corners[(k + 1) % 3] - on), uc = glm::normalize(corners[(k + 2) % 3] - on);
-          const double angle = std::acos(glm::clamp(glm::dot(ub, uc), -1.0, 1.0));
-          if (glm::length(ub + uc) > 0) fan += 2 * std::sin(angle / 2) * glm::normalize(ub + uc);
+          if (glm::length(ub + uc) > 0) fan += glm::length(ub - uc) * glm::normalize(ub + uc);  // 2 sin(α/2) on the bisector
           at_corner = true;
         }
       for (int k = 0; k < 3 && !at_corner; ++k) {
@@ -160,7 +172,7 @@ struct Oracle {
         break;
       }
     }
-    const D3 direction = glm::length(fan) > 1e-3 ? fan : away;
+    const D3 direction = glm::length(fan) > 0.05 ? fan : away;
     if (glm::length(direction) > 1e-3)
       for (double step = full_step; step > touch; step *= 0.5) {
         const D3 q = on + step * glm::normalize(direction);

@@ -137,6 +137,16 @@ struct ClosestQuery {
   float best_alignment = -2.f;
 };
 
+/// An order on face normals that does not depend on how a face is cut into
+/// triangles (its pieces share its normal to within rounding): equally close,
+/// equally agreeing triangles are told apart by it, not by which one Embree
+/// visits first.
+bool normal_before(const Vec3& a, const Vec3& b) {
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(a[k] - b[k]) > 1e-4f) return a[k] > b[k];
+  return false;
+}
+
 bool closest_callback(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<ClosestQuery*>(args->userPtr);
   const auto& tri = q->scene->triangles[args->primID];
@@ -148,7 +158,10 @@ bool closest_callback(RTCPointQueryFunctionArguments* args) {
   float alignment = glm::dot(q->hint, (*q->face_normals)[args->primID]);
   float dist = std::sqrt(d2), best = q->best.valid() ? q->best.t : std::sqrt(q->best_d2);
   bool nearer = dist < best - q->tie;
-  bool tied_better = q->best.valid() && std::abs(dist - best) <= q->tie && alignment > q->best_alignment + 1e-4f;
+  const Vec3& face = (*q->face_normals)[args->primID];
+  bool tied_better = q->best.valid() && std::abs(dist - best) <= q->tie &&
+                     (alignment > q->best_alignment + 1e-4f ||
+                      (alignment >= q->best_alignment - 1e-4f && normal_before(face, (*q->face_normals)[q->best.triangle])));
   if (nearer || tied_better || (!q->best.valid() && d2 <= q->best_d2)) {
     q->best_alignment = alignment;
     q->best_d2 = d2;
@@ -201,7 +214,8 @@ bool own_surface_callback(RTCPointQueryFunctionArguments* args) {
 ///   is split into triangles, so a refined mesh nudges a point the way the
 ///   original does; it vanishes where the face goes on all around p.
 /// - `away`: the other surfaces' normals laid into the plane (a leg standing
-///   on a floor: away from the leg), for that case.
+///   on a floor: away from the leg), for that case — one per plane, so that
+///   a face cut into more triangles does not weigh more.
 struct FanQuery {
   const Scene* scene;
   const std::vector<Vec3>* face_normals;
@@ -209,6 +223,7 @@ struct FanQuery {
   float touch;       ///< p lies on a triangle when this close to it
   float near;        ///< other surfaces this close count (within the nudge's step)
   Vec3 fan{0.f}, away{0.f};
+  std::vector<glm::vec4> planes;  ///< the other surfaces' planes counted in `away` (normal, offset)
 };
 
 bool fan_callback(RTCPointQueryFunctionArguments* args) {
@@ -222,7 +237,12 @@ bool fan_callback(RTCPointQueryFunctionArguments* args) {
   const float facing = glm::dot(face, q->plane_normal);
   if (facing < 0.9999f || distance > q->touch) {
     if (facing >= 0.9999f) return false;  // the same face, not at p
-    if (facing > -0.9999f) q->away += face - facing * q->plane_normal;  // (a face's back, coplanar, says nothing)
+    if (facing <= -0.9999f) return false;  // (a face's back, coplanar, says nothing)
+    const float offset = glm::dot(face, pos[tri[0]]);
+    for (const auto& known : q->planes)
+      if (glm::length(Vec3(known) - face) < 1e-4f && std::abs(known.w - offset) <= q->touch) return false;
+    q->planes.emplace_back(face, offset);
+    q->away += face - facing * q->plane_normal;
     return false;
   }
   for (int k = 0; k < 3; ++k) {
@@ -231,10 +251,11 @@ bool fan_callback(RTCPointQueryFunctionArguments* args) {
     if (glm::length(a - q->p) <= q->touch) {  // p at corner a: the wedge from ab to ac
       const float lb = glm::length(to_b), lc = glm::length(to_c);
       if (!(lb > 0.f && lc > 0.f)) return false;
+      // 2 sin(α/2) along the bisector, where |ub − uc| = 2 sin(α/2): no acos,
+      // whose rounding near 1 would keep a full disk's sum from vanishing.
       const Vec3 ub = to_b / lb, uc = to_c / lc;
-      const float angle = std::acos(std::clamp(glm::dot(ub, uc), -1.f, 1.f));
       const Vec3 bisector = ub + uc;
-      if (glm::length(bisector) > 0.f) q->fan += 2.f * std::sin(0.5f * angle) * glm::normalize(bisector);
+      if (glm::length(bisector) > 0.f) q->fan += glm::length(ub - uc) * glm::normalize(bisector);
       return false;
     }
   }
@@ -311,7 +332,9 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
   const float touch = 0.5f * rays.epsilon(), full_step = std::max(3e-3f, 4.f * rays.epsilon());
   FanQuery fan{&scene, &rays.face_normals(), on, plane, touch, full_step};
   query_triangles_near(rays.rtc_scene(), on, fan.near, fan_callback, &fan);
-  const Vec3 direction = glm::length(fan.fan) > 1e-3f ? fan.fan : fan.away;
+  // A crease's wedges sum to at least ~0.1 (a half-disk: 2); a face going on
+  // all around sums to 0 but for rounding.
+  const Vec3 direction = glm::length(fan.fan) > 0.05f ? fan.fan : fan.away;
   if (glm::length(direction) > 1e-3f) {
     const Vec3 unit = glm::normalize(direction);
     for (float step = full_step; step > touch; step *= 0.5f) {
