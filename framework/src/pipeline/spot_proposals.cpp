@@ -4,6 +4,7 @@
 #include "hilight/pipeline/spot_refinement.hpp"
 #include "hilight/pipeline/spot_screening.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <optional>
 #include <cstdlib>
@@ -14,6 +15,11 @@ namespace {
 
 /// Candidates refined per round: the screening's best few from distinct apexes.
 constexpr size_t kStarts = 6;
+/// A candidate refined beside the spots found so far may light less than
+/// the target (lamps not yet found will add) but over-lighting counts this
+/// many times (refine_spots' over_weight): otherwise the best single spot
+/// for two or three pools is one wide cone over all of them.
+constexpr double kOverWeight = 100.0;
 
 struct Model {
   const SampleSet& samples;
@@ -36,11 +42,13 @@ struct Model {
   /// the rounds converge (measured: the error along a spot's valley falls
   /// ~2.5x a round). `bounce` gets the last estimate.
   Lighting refine(Lighting spots, const std::vector<Rgb>& base_phi, size_t base_count, int rounds, std::vector<Rgb>& bounce,
-                  double& dbar) const {
+                  double& dbar, bool alone = false) const {
     double previous = 1e300;
+    SpotRefineSettings settings;
+    if (alone) settings.over_weight = kOverWeight;
     for (int round = 0; round < rounds; ++round) {
       bounce = bounce_of(spots);
-      spots = refine_spots(spots, bounce, samples, space, renderer, base_phi, base_count, dbar);
+      spots = refine_spots(spots, bounce, samples, space, renderer, base_phi, base_count, dbar, settings);
       if (dbar > 0.9 * previous) break;  // the bounce no longer moves the spots
       previous = dbar;
     }
@@ -63,7 +71,8 @@ struct Model {
 void show(const char* what, const Lighting& spots, double dbar) {
   static const bool debug = std::getenv("HILIGHT_SPOT_DEBUG");
   if (!debug) return;
-  std::fprintf(stderr, "%s: D̄ %.4f\n", what, dbar);
+  static auto t0 = std::chrono::steady_clock::now();
+  std::fprintf(stderr, "%s: D̄ %.4f at %.2f s\n", what, dbar, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   for (const auto& l : spots)
     std::fprintf(stderr, "  (%.3f %.3f %.3f) dir (%.3f %.3f %.3f) cutoff %.2f falloff %.2f I %.2f\n", l.position.x, l.position.y,
                  l.position.z, l.direction.x, l.direction.y, l.direction.z, l.cutoff_deg, l.falloff_deg, l.intensity.g);
@@ -72,6 +81,15 @@ void show(const char* what, const Lighting& spots, double dbar) {
 /// The best of the screening's candidates for what `base` (responses
 /// `base_phi`, with bounce) leaves, each refined with the base held; `dbar`
 /// its D̄ beside them. Nothing when the screening has no candidate.
+/// `spots` without spot `s`; `kept_bounce` gets the others' bounce.
+Lighting without(const Lighting& spots, const std::vector<Rgb>& bounce, size_t s, size_t m, std::vector<Rgb>& kept_bounce) {
+  Lighting kept = spots;
+  kept.erase(kept.begin() + std::ptrdiff_t(s));
+  kept_bounce = bounce;
+  kept_bounce.erase(kept_bounce.begin() + std::ptrdiff_t(s * m), kept_bounce.begin() + std::ptrdiff_t((s + 1) * m));
+  return kept;
+}
+
 std::optional<Light> best_candidate(const Model& model, const SpotScreen& screen, const std::vector<Rgb>& base_phi, size_t base_count,
                                     double& dbar) {
   std::vector<Rgb> residual;
@@ -81,10 +99,59 @@ std::optional<Light> best_candidate(const Model& model, const SpotScreen& screen
   for (const Light& start : screen.candidates(residual, kStarts)) {
     std::vector<Rgb> bounce;
     double d = 1.0;
-    const Lighting one = model.refine({start}, base_phi, base_count, 2, bounce, d);
+    const Lighting one = model.refine({start}, base_phi, base_count, 1, bounce, d, true);
     if (d < dbar) dbar = d, best = one[0];
   }
   return best;
+}
+
+/// Each of `spots` in turn replaced by the best candidate for what the
+/// others leave, all then refined together; kept where D̄ falls.
+void replace_each(const Model& model, const SpotScreen& screen, Lighting& spots, std::vector<Rgb>& bounce, double& dbar,
+                  double visible_dbar) {
+  for (size_t s = 0; s < spots.size() && dbar > visible_dbar; ++s) {
+    std::vector<Rgb> trial_bounce;
+    Lighting trial = without(spots, bounce, s, model.samples.size(), trial_bounce);
+    double d = 1.0;
+    const auto other = best_candidate(model, screen, model.responses(trial, trial_bounce), trial.size(), d);
+    if (!other) continue;
+    trial.push_back(*other);
+    trial = model.refine(std::move(trial), {}, 0, 6, trial_bounce, d);
+    if (!(d < dbar)) continue;
+    spots = std::move(trial), bounce = std::move(trial_bounce), dbar = d;
+    show("swapped", spots, dbar);
+  }
+}
+
+/// `spots` with spot `s` in two: the best pair among the screening's
+/// candidates for what the others leave, each refined alone and then every
+/// pair together with the others held; then all refined together. A spot
+/// over two overlapping pools is the best single cone for both, so the two
+/// are looked for together. `dbar` gets the result's D̄.
+Lighting split(const Model& model, const SpotScreen& screen, const Lighting& spots, const std::vector<Rgb>& bounce, size_t s,
+               std::vector<Rgb>& split_bounce, double& dbar) {
+  Lighting others = without(spots, bounce, s, model.samples.size(), split_bounce);
+  const std::vector<Rgb> base = model.responses(others, split_bounce);
+  std::vector<Rgb> residual;
+  model.fit(base, others.size(), &residual);
+  Lighting alone;
+  for (const Light& start : screen.candidates(residual, kStarts)) {
+    std::vector<Rgb> b;
+    double d = 1.0;
+    alone.push_back(model.refine({start}, base, others.size(), 1, b, d, true)[0]);
+  }
+  Lighting best;
+  double best_dbar = 1e300;
+  for (size_t i = 0; i < alone.size(); ++i)
+    for (size_t j = i + 1; j < alone.size(); ++j) {
+      std::vector<Rgb> b;
+      double d = 1.0;
+      const Lighting pair = model.refine({alone[i], alone[j]}, base, others.size(), 1, b, d);
+      if (d < best_dbar) best_dbar = d, best = pair;
+    }
+  if (best.empty()) return {};
+  others.insert(others.end(), best.begin(), best.end());
+  return model.refine(std::move(others), {}, 0, 6, split_bounce, dbar);
 }
 
 } // namespace
@@ -93,7 +160,9 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
                        const SpotProposalSettings& settings, double& dbar) {
   const size_t m = samples.size();
   const Model model{samples, space, renderer, reference};
+  show("start", {}, 1.0);
   const SpotScreen screen(samples, space, renderer);
+  show("screen", {}, 1.0);
   Lighting spots;
   std::vector<Rgb> bounce;
   dbar = 1.0;  // no light: all of Ψ is missing
@@ -104,36 +173,38 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
     double one_dbar = 1.0;
     const auto best = best_candidate(model, screen, spots.empty() ? std::vector<Rgb>{} : model.responses(spots, bounce), spots.size(), one_dbar);
     if (!best) break;
+    show("candidates", {}, one_dbar);
     Lighting more = spots;
     more.push_back(*best);
     std::vector<Rgb> more_bounce;
     double more_dbar = one_dbar;
-    if (more.size() > 1) more = model.refine(std::move(more), {}, 0, 6, more_bounce, more_dbar);
-    else more_bounce = model.bounce_of(more);
+    more = model.refine(std::move(more), {}, 0, 6, more_bounce, more_dbar);
     show("added", more, more_dbar);
-    // Each spot re-placed given the others: the first spot over two pools
-    // that overlap is one wide cone; once a second holds one pool, the
-    // first's best place is the other pool.
-    for (size_t s = 0; more.size() > 1 && s < more.size(); ++s) {
-      Lighting others = more;
-      others.erase(others.begin() + std::ptrdiff_t(s));
-      std::vector<Rgb> others_bounce(more_bounce);
-      others_bounce.erase(others_bounce.begin() + std::ptrdiff_t(s * m), others_bounce.begin() + std::ptrdiff_t((s + 1) * m));
-      double d = 1.0;
-      const auto other = best_candidate(model, screen, model.responses(others, others_bounce), others.size(), d);
-      if (!other || !(d < 0.98 * more_dbar)) continue;
-      others.insert(others.begin() + std::ptrdiff_t(s), *other);
-      double joint = d;
-      std::vector<Rgb> joint_bounce;
-      others = model.refine(std::move(others), {}, 0, 6, joint_bounce, joint);
-      if (!(joint < more_dbar)) continue;
-      more = std::move(others), more_bounce = std::move(joint_bounce), more_dbar = joint;
-      show("swapped", more, more_dbar);
+    bool pays = dbar >= settings.eps_impro * more_dbar || dbar - more_dbar >= settings.weak_threshold;
+    if (!pays && more.size() > 1) {
+      // Re-placed given the others, each spot may do better: the first spot
+      // over pools that overlap is one wide cone; once others hold some of
+      // them, its best place is one pool. Then the spot more may pay.
+      replace_each(model, screen, more, more_bounce, more_dbar, settings.visible_dbar);
+      pays = dbar >= settings.eps_impro * more_dbar || dbar - more_dbar >= settings.weak_threshold;
     }
-    const bool pays = dbar >= settings.eps_impro * more_dbar || dbar - more_dbar >= settings.weak_threshold;
     if (!pays) break;
     spots = std::move(more), bounce = std::move(more_bounce), dbar = more_dbar;
   }
+  if (spots.empty()) return spots;
+  // Poorly explained still: a spot may hold two pools that overlap. Each
+  // spot tried as two, kept if the spot more pays (eq. 9).
+  for (size_t s = 0; dbar > settings.split_dbar && s < spots.size() && spots.size() < settings.max_spots; ++s) {
+    std::vector<Rgb> split_bounce;
+    double split_dbar = 1.0;
+    Lighting two = split(model, screen, spots, bounce, s, split_bounce, split_dbar);
+    show("split", two, split_dbar);
+    if (two.empty() || !(dbar >= settings.eps_impro * split_dbar || dbar - split_dbar >= settings.weak_threshold)) continue;
+    spots = std::move(two), bounce = std::move(split_bounce), dbar = split_dbar;
+  }
+  // The set is built: every edge free, plain least squares.
+  spots = model.refine(std::move(spots), {}, 0, 6, bounce, dbar);
+  show("freed", spots, dbar);
   // Eq. 9 backwards: the spot whose loss the others bear best (intensities
   // re-fitted) goes if, the others refined without it, the loss is less
   // than ε_impro (and less than ε_w of ‖Ψ‖), or invisible.

@@ -39,8 +39,9 @@ struct Evaluation {
 
 class Model {
 public:
-  Model(const SampleSet& samples, const std::vector<Rgb>& base_phi, size_t base_count, const std::vector<Rgb>& bounce)
-      : m_samples(samples), m_base_phi(base_phi), m_base_count(base_count), m_bounce(bounce) {}
+  Model(const SampleSet& samples, const std::vector<Rgb>& base_phi, size_t base_count, const std::vector<Rgb>& bounce,
+        double over_weight)
+      : m_samples(samples), m_base_phi(base_phi), m_base_count(base_count), m_bounce(bounce), m_over_weight(over_weight) {}
 
   /// `direct`: each spot's direct light (light-major).
   Evaluation evaluate(const std::vector<Rgb>& direct) const {
@@ -51,12 +52,23 @@ public:
       for (size_t i = 0; i < k * m; ++i) phi[m_base_count * m + i] += m_bounce[i];
     Evaluation e;
     e.intensities = fit_intensities(phi, m_base_count + k, m_samples);
-    const std::vector<Rgb> lit = combine(phi, e.intensities, m);
+    std::vector<Rgb> lit = combine(phi, e.intensities, m);
+    // Over-lighting weighs more: reweighted least squares, a few rounds.
+    std::vector<Rgb> scale;
+    for (int round = 0; round < (m_over_weight != 1.0 ? 2 : 0); ++round) {
+      scale.assign(m, Rgb(1.f));
+      for (size_t i = 0; i < m; ++i)
+        for (int c = 0; c < 3; ++c)
+          if (lit[i][c] > m_samples.target[i][c]) scale[i][c] = float(m_over_weight);
+      e.intensities = fit_intensities(phi, m_base_count + k, m_samples, scale);
+      lit = combine(phi, e.intensities, m);
+    }
     e.r.resize(Eigen::Index(3 * m));
     for (size_t i = 0; i < m; ++i) {
       const double sw = std::sqrt(double(m_samples.weight[i]));
       for (int c = 0; c < 3; ++c) {
-        const double v = sw * (double(m_samples.target[i][c]) - double(lit[i][c]));
+        double v = sw * (double(m_samples.target[i][c]) - double(lit[i][c]));
+        if (v < 0.0) v *= std::sqrt(m_over_weight);
         e.r[Eigen::Index(3 * i + size_t(c))] = v;
         e.cost += v * v;
       }
@@ -69,6 +81,7 @@ private:
   const std::vector<Rgb>& m_base_phi;
   size_t m_base_count;
   const std::vector<Rgb>& m_bounce;
+  double m_over_weight;
 };
 
 } // namespace
@@ -79,13 +92,26 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
   const size_t m = samples.size(), k = spots.size(), p = kParams * k;
   const double norm = samples.target_norm();
   const float unit = 0.01f * space.rays().scene().diagonal();
-  const Model model(samples, base_phi, base_count, bounce);
+  const Model model(samples, base_phi, base_count, bounce, settings.over_weight);
   auto direct_of = [&](const Lighting& lights) { return renderer.unit_responses(samples.points, lights, Transport::DirectOnly); };
-  auto admissible = [&](const Lighting& lights) {
-    return std::all_of(lights.begin(), lights.end(), [&](const Light& l) { return space.admissible(l.position); });
+  // A step out of the light bounds is clamped back (the spot slides along the
+  // bound instead of stopping there), then placed by the rules.
+  const Bounds& box = space.light_bounds();
+  const Vec3 inset = 1e-4f * box.extent();
+  auto place = [&](Lighting& lights) {
+    for (auto& l : lights) {
+      const auto at = space.place(glm::clamp(l.position, box.lo + inset, box.hi - inset));
+      if (!at || !space.admissible(*at)) return false;
+      l.position = *at;
+    }
+    return true;
   };
 
   Lighting current = spots;
+  for (auto& l : current) {  // the start obeys the bounds the steps keep
+    const double none[kParams] = {};
+    l = moved(l, none, unit);
+  }
   std::vector<Rgb> direct = direct_of(current);
   Evaluation now = model.evaluate(direct);
   double lambda = 1e-3;
@@ -118,7 +144,7 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
       const Eigen::VectorXd step = A.ldlt().solve(Jtr);
       Lighting trial;
       for (size_t s = 0; s < k; ++s) trial.push_back(moved(current[s], step.data() + s * kParams, unit));
-      if (admissible(trial)) {
+      if (place(trial)) {
         std::vector<Rgb> trial_direct = direct_of(trial);
         Evaluation e = model.evaluate(trial_direct);
         if (e.cost < now.cost) {

@@ -17,6 +17,8 @@ constexpr float kBin = float(kPi / 180.0);
 constexpr int kBins = 58;     // chord 1.0 = 60°
 constexpr int kMinBins = 2;   // the narrowest cone: 2°
 constexpr float kMaxChord = kBins * kBin;
+/// An annulus lighter than this share of its cone so far does not set the floor.
+constexpr double kSignificantAnnulus = 0.02;
 
 float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
@@ -75,8 +77,8 @@ std::vector<Apex> render_apexes(const std::vector<Vec3>& positions, const Sample
 }
 
 /// The best cutoff for one apex and axis against `residual`: the cone whose
-/// direct light, at its best non-negative intensity per channel, removes most
-/// of the weighted squared residual.
+/// direct light, at an intensity that keeps it under the residual annulus
+/// by annulus (per channel), removes most of the weighted squared residual.
 Cone best_cutoff(const Apex& apex, const Vec3& axis, const std::vector<Rgb>& residual, const SampleSet& samples) {
   double ar[kBins][3] = {}, aa[kBins][3] = {};
   const float max_c2 = kMaxChord * kMaxChord;
@@ -91,23 +93,28 @@ Cone best_cutoff(const Apex& apex, const Vec3& axis, const std::vector<Rgb>& res
       aa[k][c] += double(wphi[c]) * double(apex.phi[t][c]);
     }
   }
+  // The intensity is the least of the annuli's own ratios so far: a cone
+  // over a dark gap between pools, or from an apex whose falloff does not
+  // match the pool's, fits under the target only dimly.
   Cone best;
   best.axis = axis;
-  double sum_ar[3] = {}, sum_aa[3] = {};
+  double sum_ar[3] = {}, sum_aa[3] = {}, floor[3] = {1e300, 1e300, 1e300};
   for (int k = 0; k < kBins; ++k) {
     double gain = 0.0;
     Rgb intensity(0.f);
     for (int c = 0; c < 3; ++c) {
       sum_ar[c] += ar[k][c], sum_aa[c] += aa[k][c];
-      if (sum_ar[c] > 0.0 && sum_aa[c] > 0.0) gain += sum_ar[c] * sum_ar[c] / sum_aa[c], intensity[c] = float(sum_ar[c] / sum_aa[c]);
+      if (aa[k][c] > kSignificantAnnulus * sum_aa[c]) floor[c] = std::min(floor[c], ar[k][c] / aa[k][c]);
+      const double l = std::min(floor[c], sum_aa[c] > 0.0 ? sum_ar[c] / sum_aa[c] : 0.0);
+      if (l > 0.0) gain += 2.0 * l * sum_ar[c] - l * l * sum_aa[c], intensity[c] = float(l);
     }
     if (k + 1 >= kMinBins && gain > best.gain) best.gain = gain, best.bins = k + 1, best.intensity = intensity;
   }
   return best;
 }
 
-/// Aim points over the lit samples, brightest first, at least `spacing` apart.
-std::vector<Vec3> spread_aims(const SampleSet& samples, float spacing, size_t most) {
+/// Aims: lit samples, brightest first, at least `spacing` apart (indices).
+std::vector<uint32_t> spread_aims(const SampleSet& samples, float spacing, size_t most) {
   std::vector<std::pair<float, size_t>> order;
   float brightest = 0.f;
   for (size_t i = 0; i < samples.size(); ++i) {
@@ -116,13 +123,13 @@ std::vector<Vec3> spread_aims(const SampleSet& samples, float spacing, size_t mo
     if (v > 0.f) order.emplace_back(-v, i);
   }
   std::sort(order.begin(), order.end());
-  std::vector<Vec3> aims;
+  std::vector<uint32_t> aims;
   for (const auto& [v, i] : order) {
     if (aims.size() >= most || -v < 0.02f * brightest) break;  // dimmer than 2%: no pool worth a spot
     const Vec3& p = samples.points.positions[i];
     bool apart = true;
-    for (const Vec3& q : aims) apart &= glm::length(q - p) >= spacing;
-    if (apart) aims.push_back(p);
+    for (uint32_t q : aims) apart &= glm::length(samples.points.positions[q] - p) >= spacing;
+    if (apart) aims.push_back(uint32_t(i));
   }
   return aims;
 }
@@ -147,10 +154,16 @@ SpotScreen::SpotScreen(const SampleSet& samples, const LightSpace& space, Render
 SpotScreen::~SpotScreen() = default;
 
 Lighting SpotScreen::candidates(const std::vector<Rgb>& residual, size_t count) const {
+  // Aims where little is missing cannot centre the cone that is missing.
+  float most = 0.f;
+  for (uint32_t q : m_aims) most = std::max(most, luminance(residual[q]));
+  std::vector<Vec3> aims;
+  for (uint32_t q : m_aims)
+    if (luminance(residual[q]) > 0.05f * most) aims.push_back(m_samples.points.positions[q]);
   std::vector<Cone> per_apex(m_apexes.size());
   tbb::parallel_for(size_t(0), m_apexes.size(), [&](size_t a) {
     per_apex[a].apex = a;
-    for (const Vec3& aim : m_aims) {
+    for (const Vec3& aim : aims) {
       const Vec3 to = aim - m_apexes[a].position;
       const float len = glm::length(to);
       if (!(len > 0.f)) continue;

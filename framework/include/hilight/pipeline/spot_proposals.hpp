@@ -16,6 +16,7 @@ struct SpotProposalSettings {
   double weak_threshold = 0.05;  ///< ε_w (eq. 6)
   double eps_impro = 1.6;        ///< ε_impro (eq. 9)
   double visible_dbar = 5e-3;    ///< below this D̄ a light more fits noise, not a lamp
+  double split_dbar = 0.02;      ///< above this D̄ once the set is built, each spot is tried as two
 };
 
 /// Spotlights alone (intensities fitted) that explain the samples' target:

@@ -35,7 +35,7 @@ public:
 private:
   const SampleSet& m_samples;
   std::vector<Apex> m_apexes;
-  std::vector<Vec3> m_aims;
+  std::vector<uint32_t> m_aims;  ///< samples the cones aim at
   float m_apart = 0.f;
 };
 
