@@ -97,6 +97,9 @@ Outcome recovery_trials(builders::BuiltScene (*make)(), uint64_t first_seed, siz
                     << " falloff " << l.falloff_deg;
         std::cout << " I " << l.intensity.g << "\n";
       };
+      std::cout << " ";
+      for (const auto& [stage, secs] : report.seconds) std::cout << " " << stage << " " << secs << " s;";
+      std::cout << "\n";
       for (const auto& l : truth) show("true ", l);
       for (const auto& l : found) show("found", l);
     }

@@ -6,7 +6,7 @@
 
 namespace hilight {
 
-std::vector<Rgb> fit_intensities(const std::vector<Rgb>& phi, size_t n, const SampleSet& samples) {
+std::vector<Rgb> fit_intensities(const std::vector<Rgb>& phi, size_t n, const SampleSet& samples, std::span<const Rgb> scale) {
   const size_t m = samples.size();
   std::vector<Rgb> out(n, Rgb(0.f));
   if (n == 0) return out;
@@ -14,7 +14,7 @@ std::vector<Rgb> fit_intensities(const std::vector<Rgb>& phi, size_t n, const Sa
     Eigen::MatrixXd a(m, n);
     Eigen::VectorXd b(m);
     for (size_t i = 0; i < m; ++i) {
-      double sw = std::sqrt(double(samples.weight[i]));
+      double sw = std::sqrt(double(samples.weight[i]) * (scale.empty() ? 1.0 : double(scale[i][c])));
       b(Eigen::Index(i)) = sw * samples.target[i][c];
       for (size_t j = 0; j < n; ++j) a(Eigen::Index(i), Eigen::Index(j)) = sw * phi[j * m + i][c];
     }

@@ -24,7 +24,7 @@ namespace {
 /// D̄ below which a light more is noise-fitting, not a missing lamp: the same
 /// order as ε_w (a light worth keeping explains 5% of ‖Ψ‖), and invisible.
 constexpr double kVisibleDbar = 5e-3;
-/// D̄ above which spotlights are proposed for under-lit pools (issue 10 §3),
+/// D̄ above which point lights leave the target to spotlights (issue 10 §3),
 /// and how many at most.
 constexpr double kSpotDbar = 0.02;
 constexpr int kMaxSpots = 4;
@@ -409,37 +409,16 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
   return lights;
 }
 
-Lighting Solver::add_spots(const SampleSet& samples, Lighting lights, double& dbar) {
-  const size_t m = samples.size();
-  const double norm = samples.target_norm();
-  std::optional<LightCacheView> view;
-  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
-  ResponseModel model(m_renderer, samples, view ? &*view : nullptr), exact(m_renderer, samples, nullptr);
-  const float link = 0.03f * m_scene->diagonal();
-  for (int round = 0; round < kMaxSpots && dbar > kSpotDbar; ++round) {
-    if (m_progress) m_progress("trying a spotlight");
-    std::vector<Rgb> phi = model.responses(lights);
-    const std::vector<Rgb> l = fit_intensities(phi, lights.size(), samples);
-    const auto pool = underlit_pool(combine(phi, l, m), samples, link);
-    const auto spot = spot_for_pool(pool, samples, *m_space, m_renderer, phi, lights.size());
-    if (!spot) break;
-    Lighting more = lights;
-    more.push_back(*spot);
-    // Point lights that only imitated the pool go (eq. 6), then refine.
-    phi = model.responses(more);
-    const std::vector<Rgb> fitted = fit_intensities(phi, more.size(), samples);
-    Lighting kept;
-    for (size_t j = 0; j < more.size(); ++j)
-      if (more[j].type == LightType::Spot || contribution(phi, j, fitted[j], samples) >= m_settings.seeding.weak_threshold * norm)
-        kept.push_back(more[j]), kept.back().intensity = fitted[j];
-    double more_dbar = 0;
-    kept = refine_anchored(model, exact, kept, more_dbar);
-    kept = polish_with_reference(samples, kept, false, more_dbar);
-    if (!(dbar >= m_settings.eps_impro * more_dbar)) break;  // eq. 9: the spot must pay
-    lights = std::move(kept);
-    dbar = more_dbar;
-  }
-  return lights;
+Lighting Solver::add_spots(const SampleSet& samples, double& dbar) {
+  if (m_progress) m_progress("screening spotlights");
+  SpotProposalSettings settings;
+  settings.max_spots = kMaxSpots;
+  settings.weak_threshold = m_settings.seeding.weak_threshold;
+  settings.eps_impro = m_settings.eps_impro;
+  settings.visible_dbar = kVisibleDbar;
+  const Lighting spots = propose_spots(samples, *m_space, m_renderer, m_reference, settings, dbar);
+  if (spots.empty()) return spots;
+  return polish_with_reference(samples, spots, false, dbar);
 }
 
 Lighting Solver::merge_close_pairs(const SampleSet& samples, Lighting lights, double& dbar) {
@@ -687,10 +666,12 @@ Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {
     // Poorly explained by point lights: spotlights for the under-lit pools
     // compete with more point lights; the fewer lights win unless the others
     // improve D̄ by ε_impro (eq. 9).
-    double spot_dbar = report.dbar_samples;
-    Lighting with_spots = add_spots(samples, lights, spot_dbar);
+    double spot_dbar = 0;
+    Stopwatch spot_watch;
+    Lighting with_spots = add_spots(samples, spot_dbar);
+    report.seconds["spots"] += spot_watch.seconds();
     lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
-    if (std::any_of(with_spots.begin(), with_spots.end(), [](const Light& l) { return l.type == LightType::Spot; })) {
+    if (!with_spots.empty()) {
       with_spots = add_missing_lights(samples, std::move(with_spots), spot_dbar);
       const size_t n_spots = with_spots.size(), n_points = lights.size();
       const double d_spots = spot_dbar, d_points = report.dbar_samples, eps = m_settings.eps_impro;

@@ -1,152 +1,234 @@
 #include "hilight/pipeline/spot_proposals.hpp"
 
 #include "hilight/pipeline/fit.hpp"
-#include "hilight/pipeline/light_parameters.hpp"
-#include "hilight/pipeline/seeder.hpp"
-#include "hilight/pipeline/simplex.hpp"
+#include "hilight/pipeline/spot_refinement.hpp"
+#include "hilight/pipeline/spot_screening.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <tbb/parallel_for.h>
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <cstdlib>
 
 namespace hilight {
 
 namespace {
 
-float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+/// Candidates refined per round: the screening's best few from distinct apexes.
+constexpr size_t kStarts = 6;
+/// A candidate refined beside the spots found so far may light less than
+/// the target (lamps not yet found will add) but over-lighting counts this
+/// many times (refine_spots' over_weight): otherwise the best single spot
+/// for two or three pools is one wide cone over all of them.
+constexpr double kOverWeight = 100.0;
 
-constexpr float kDegrees = 180.f / 3.14159265f;
-/// The soft edge a proposal starts with (the refinement finds the real one).
-constexpr float kStartFalloffDeg = 3.f;
-/// Apexes tried: grid cells along the light space's longest axis.
-constexpr int kApexCells = 12;
+struct Model {
+  const SampleSet& samples;
+  const LightSpace& space;
+  Renderer& renderer;   ///< direct light
+  Renderer& reference;  ///< the bounce estimates
 
-/// D̄ of the base lights plus one unit spot (its responses `spot_phi`, m
-/// values), intensities by NNLS.
-double dbar_with(const std::vector<Rgb>& base_phi, size_t base_count, std::span<const Rgb> spot_phi, const SampleSet& samples) {
-  std::vector<Rgb> with = base_phi;
-  with.insert(with.end(), spot_phi.begin(), spot_phi.end());
-  const std::vector<Rgb> intensities = fit_intensities(with, base_count + 1, samples);
-  return normalized_difference(combine(with, intensities, samples.size()), samples);
+  std::vector<Rgb> bounce_of(const Lighting& spots) const {
+    return reference.unit_responses(samples.points, spots, Transport::IndirectOnly);
+  }
+  /// Each spot's direct light plus its `bounce`.
+  std::vector<Rgb> responses(const Lighting& spots, const std::vector<Rgb>& bounce) const {
+    std::vector<Rgb> phi = renderer.unit_responses(samples.points, spots, Transport::DirectOnly);
+    for (size_t i = 0; i < phi.size(); ++i) phi[i] += bounce[i];
+    return phi;
+  }
+
+  /// `spots` refined with `base` held, their bounce taken where they stand,
+  /// again and again where they went: the bounce follows the cone slowly, so
+  /// the rounds converge (measured: the error along a spot's valley falls
+  /// ~2.5x a round). `bounce` gets the last estimate.
+  Lighting refine(Lighting spots, const std::vector<Rgb>& base_phi, size_t base_count, int rounds, std::vector<Rgb>& bounce,
+                  double& dbar, bool alone = false) const {
+    double previous = 1e300;
+    SpotRefineSettings settings;
+    if (alone) settings.over_weight = kOverWeight;
+    for (int round = 0; round < rounds; ++round) {
+      bounce = bounce_of(spots);
+      spots = refine_spots(spots, bounce, samples, space, renderer, base_phi, base_count, dbar, settings);
+      if (dbar > 0.9 * previous) break;  // the bounce no longer moves the spots
+      previous = dbar;
+    }
+    bounce = bounce_of(spots);
+    return spots;
+  }
+
+  /// D̄ of lights with responses `phi` (n of them), intensities by NNLS; `residual`: Ψ − the fit.
+  double fit(const std::vector<Rgb>& phi, size_t n, std::vector<Rgb>* residual = nullptr) const {
+    const size_t m = samples.size();
+    const std::vector<Rgb> lit = combine(phi, fit_intensities(phi, n, samples), m);
+    if (residual) {
+      residual->resize(m);
+      for (size_t i = 0; i < m; ++i) (*residual)[i] = samples.target[i] - lit[i];
+    }
+    return normalized_difference(lit, samples);
+  }
+};
+
+void show(const char* what, const Lighting& spots, double dbar) {
+  static const bool debug = std::getenv("HILIGHT_SPOT_DEBUG");
+  if (!debug) return;
+  static auto t0 = std::chrono::steady_clock::now();
+  std::fprintf(stderr, "%s: D̄ %.4f at %.2f s\n", what, dbar, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  for (const auto& l : spots)
+    std::fprintf(stderr, "  (%.3f %.3f %.3f) dir (%.3f %.3f %.3f) cutoff %.2f falloff %.2f I %.2f\n", l.position.x, l.position.y,
+                 l.position.z, l.direction.x, l.direction.y, l.direction.z, l.cutoff_deg, l.falloff_deg, l.intensity.g);
+}
+
+/// The best of the screening's candidates for what `base` (responses
+/// `base_phi`, with bounce) leaves, each refined with the base held; `dbar`
+/// its D̄ beside them. Nothing when the screening has no candidate.
+/// `spots` without spot `s`; `kept_bounce` gets the others' bounce.
+Lighting without(const Lighting& spots, const std::vector<Rgb>& bounce, size_t s, size_t m, std::vector<Rgb>& kept_bounce) {
+  Lighting kept = spots;
+  kept.erase(kept.begin() + std::ptrdiff_t(s));
+  kept_bounce = bounce;
+  kept_bounce.erase(kept_bounce.begin() + std::ptrdiff_t(s * m), kept_bounce.begin() + std::ptrdiff_t((s + 1) * m));
+  return kept;
+}
+
+std::optional<Light> best_candidate(const Model& model, const SpotScreen& screen, const std::vector<Rgb>& base_phi, size_t base_count,
+                                    double& dbar) {
+  std::vector<Rgb> residual;
+  model.fit(base_phi, base_count, &residual);
+  std::optional<Light> best;
+  dbar = 1e300;
+  for (const Light& start : screen.candidates(residual, kStarts)) {
+    std::vector<Rgb> bounce;
+    double d = 1.0;
+    const Lighting one = model.refine({start}, base_phi, base_count, 1, bounce, d, true);
+    if (d < dbar) dbar = d, best = one[0];
+  }
+  return best;
+}
+
+/// Each of `spots` in turn replaced by the best candidate for what the
+/// others leave, all then refined together; kept where D̄ falls.
+void replace_each(const Model& model, const SpotScreen& screen, Lighting& spots, std::vector<Rgb>& bounce, double& dbar,
+                  double visible_dbar) {
+  for (size_t s = 0; s < spots.size() && dbar > visible_dbar; ++s) {
+    std::vector<Rgb> trial_bounce;
+    Lighting trial = without(spots, bounce, s, model.samples.size(), trial_bounce);
+    double d = 1.0;
+    const auto other = best_candidate(model, screen, model.responses(trial, trial_bounce), trial.size(), d);
+    if (!other) continue;
+    trial.push_back(*other);
+    trial = model.refine(std::move(trial), {}, 0, 6, trial_bounce, d);
+    if (!(d < dbar)) continue;
+    spots = std::move(trial), bounce = std::move(trial_bounce), dbar = d;
+    show("swapped", spots, dbar);
+  }
+}
+
+/// `spots` with spot `s` in two: the best pair among the screening's
+/// candidates for what the others leave, each refined alone and then every
+/// pair together with the others held; then all refined together. A spot
+/// over two overlapping pools is the best single cone for both, so the two
+/// are looked for together. `dbar` gets the result's D̄.
+Lighting split(const Model& model, const SpotScreen& screen, const Lighting& spots, const std::vector<Rgb>& bounce, size_t s,
+               std::vector<Rgb>& split_bounce, double& dbar) {
+  Lighting others = without(spots, bounce, s, model.samples.size(), split_bounce);
+  const std::vector<Rgb> base = model.responses(others, split_bounce);
+  std::vector<Rgb> residual;
+  model.fit(base, others.size(), &residual);
+  Lighting alone;
+  for (const Light& start : screen.candidates(residual, kStarts)) {
+    std::vector<Rgb> b;
+    double d = 1.0;
+    alone.push_back(model.refine({start}, base, others.size(), 1, b, d, true)[0]);
+  }
+  Lighting best;
+  double best_dbar = 1e300;
+  for (size_t i = 0; i < alone.size(); ++i)
+    for (size_t j = i + 1; j < alone.size(); ++j) {
+      std::vector<Rgb> b;
+      double d = 1.0;
+      const Lighting pair = model.refine({alone[i], alone[j]}, base, others.size(), 1, b, d);
+      if (d < best_dbar) best_dbar = d, best = pair;
+    }
+  if (best.empty()) return {};
+  others.insert(others.end(), best.begin(), best.end());
+  return model.refine(std::move(others), {}, 0, 6, split_bounce, dbar);
 }
 
 } // namespace
 
-std::vector<size_t> underlit_pool(const std::vector<Rgb>& lit, const SampleSet& samples, float link) {
+Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference,
+                       const SpotProposalSettings& settings, double& dbar) {
   const size_t m = samples.size();
-  size_t worst = m;
-  float worst_missing = 0.f;
-  for (size_t i = 0; i < m; ++i) {
-    const float missing = samples.weight[i] * luminance(glm::max(samples.target[i] - lit[i], Rgb(0.f)));
-    if (missing > worst_missing) worst_missing = missing, worst = i;
-  }
-  if (worst == m) return {};
-  const float floor = luminance(samples.target[worst]) / 10.f;
-  const auto& pos = samples.points.positions;
-  std::vector<char> in(m, 0);
-  std::vector<size_t> pool{worst};
-  in[worst] = 1;
-  // Breadth-first over bright samples, linked by distance.
-  for (size_t head = 0; head < pool.size(); ++head)
-    for (size_t i = 0; i < m; ++i)
-      if (!in[i] && luminance(samples.target[i]) >= floor && glm::length(pos[i] - pos[pool[head]]) <= link) {
-        in[i] = 1;
-        pool.push_back(i);
-      }
-  return pool;
-}
-
-namespace {
-
-/// Unit spots for `pool` from each apex that sees its centroid: aimed at
-/// it, cutoffs covering 50% to all of the pool's angular radius.
-std::vector<Light> aimed_spots(const std::vector<Vec3>& apexes, const std::vector<size_t>& pool, const Vec3& centroid,
-                               const SampleSet& samples, const LightSpace& space) {
-  const auto& pos = samples.points.positions;
-  const RayScene& rays = space.rays();
-  std::vector<Light> spots;
-  for (const Vec3& apex : apexes) {
-    const Vec3 to = centroid - apex;
-    const float distance = glm::length(to);
-    if (!(distance > 0.f) || !space.admissible(apex) || rays.occluded(apex, to / distance, distance * 0.999f)) continue;
-    const Vec3 axis = to / distance;
-    float widest = 0.f;
-    for (size_t i : pool) {
-      const Vec3 d = pos[i] - apex;
-      const float len = glm::length(d);
-      if (len > 0.f && !rays.occluded(apex, d / len, len * 0.999f))
-        widest = std::max(widest, std::acos(std::clamp(glm::dot(axis, d / len), -1.f, 1.f)) * kDegrees);
+  const Model model{samples, space, renderer, reference};
+  show("start", {}, 1.0);
+  const SpotScreen screen(samples, space, renderer);
+  show("screen", {}, 1.0);
+  Lighting spots;
+  std::vector<Rgb> bounce;
+  dbar = 1.0;  // no light: all of Ψ is missing
+  // One spot a round for what the others leave (eq. 9 forward, as the point
+  // lights' add_missing_lights): each of the screening's candidates refined
+  // with the others held, the best kept, then all refined together.
+  while (spots.size() < settings.max_spots && dbar > settings.visible_dbar) {
+    double one_dbar = 1.0;
+    const auto best = best_candidate(model, screen, spots.empty() ? std::vector<Rgb>{} : model.responses(spots, bounce), spots.size(), one_dbar);
+    if (!best) break;
+    show("candidates", {}, one_dbar);
+    Lighting more = spots;
+    more.push_back(*best);
+    std::vector<Rgb> more_bounce;
+    double more_dbar = one_dbar;
+    more = model.refine(std::move(more), {}, 0, 6, more_bounce, more_dbar);
+    show("added", more, more_dbar);
+    bool pays = dbar >= settings.eps_impro * more_dbar || dbar - more_dbar >= settings.weak_threshold;
+    if (!pays && more.size() > 1) {
+      // Re-placed given the others, each spot may do better: the first spot
+      // over pools that overlap is one wide cone; once others hold some of
+      // them, its best place is one pool. Then the spot more may pay.
+      replace_each(model, screen, more, more_bounce, more_dbar, settings.visible_dbar);
+      pays = dbar >= settings.eps_impro * more_dbar || dbar - more_dbar >= settings.weak_threshold;
     }
-    // The pool's far edge may be a neighbour's light: narrower cones too.
-    if (widest < 85.f)
-      for (float share : {0.5f, 0.65f, 0.8f, 0.9f, 1.f})
-        spots.push_back(Light::spot(apex, axis, std::clamp(share * widest + kStartFalloffDeg, 2.f, 80.f), Rgb(1.f), kStartFalloffDeg));
+    if (!pays) break;
+    spots = std::move(more), bounce = std::move(more_bounce), dbar = more_dbar;
+  }
+  if (spots.empty()) return spots;
+  // Poorly explained still: a spot may hold two pools that overlap. Each
+  // spot tried as two, kept if the spot more pays (eq. 9).
+  for (size_t s = 0; dbar > settings.split_dbar && s < spots.size() && spots.size() < settings.max_spots; ++s) {
+    std::vector<Rgb> split_bounce;
+    double split_dbar = 1.0;
+    Lighting two = split(model, screen, spots, bounce, s, split_bounce, split_dbar);
+    show("split", two, split_dbar);
+    if (two.empty() || !(dbar >= settings.eps_impro * split_dbar || dbar - split_dbar >= settings.weak_threshold)) continue;
+    spots = std::move(two), bounce = std::move(split_bounce), dbar = split_dbar;
+  }
+  // The set is built: every edge free, plain least squares.
+  spots = model.refine(std::move(spots), {}, 0, 6, bounce, dbar);
+  show("freed", spots, dbar);
+  // Eq. 9 backwards: the spot whose loss the others bear best (intensities
+  // re-fitted) goes if, the others refined without it, the loss is less
+  // than ε_impro (and less than ε_w of ‖Ψ‖), or invisible.
+  while (spots.size() > 1) {
+    const std::vector<Rgb> phi = model.responses(spots, bounce);
+    size_t weakest = 0;
+    double least = 1e300;
+    for (size_t s = 0; s < spots.size(); ++s) {
+      std::vector<Rgb> without;
+      for (size_t j = 0; j < spots.size(); ++j)
+        if (j != s) without.insert(without.end(), phi.begin() + std::ptrdiff_t(j * m), phi.begin() + std::ptrdiff_t((j + 1) * m));
+      if (const double d = model.fit(without, spots.size() - 1); d < least) least = d, weakest = s;
+    }
+    Lighting fewer = spots;
+    fewer.erase(fewer.begin() + std::ptrdiff_t(weakest));
+    std::vector<Rgb> fewer_bounce;
+    double fewer_dbar = least;
+    fewer = model.refine(std::move(fewer), {}, 0, 6, fewer_bounce, fewer_dbar);
+    const bool pays = fewer_dbar >= settings.eps_impro * dbar || fewer_dbar - dbar >= settings.weak_threshold;
+    if (pays && fewer_dbar > settings.visible_dbar) break;
+    spots = std::move(fewer), bounce = std::move(fewer_bounce), dbar = fewer_dbar;
+    show("pruned", spots, dbar);
   }
   return spots;
-}
-
-/// The spot (direct light, NNLS beside the base lights) that explains the samples best.
-std::optional<Light> best_spot(const std::vector<Light>& spots, const SampleSet& samples, Renderer& renderer,
-                               const std::vector<Rgb>& base_phi, size_t base_count) {
-  if (spots.empty()) return std::nullopt;
-  const size_t m = samples.size();
-  const std::vector<Rgb> phi = renderer.unit_responses(samples.points, spots, Transport::DirectOnly);
-  std::vector<double> dbar(spots.size());
-  tbb::parallel_for(size_t(0), spots.size(), [&](size_t s) {
-    dbar[s] = dbar_with(base_phi, base_count, std::span<const Rgb>(phi).subspan(s * m, m), samples);
-  });
-  return spots[size_t(std::min_element(dbar.begin(), dbar.end()) - dbar.begin())];
-}
-
-} // namespace
-
-std::optional<Light> spot_for_pool(const std::vector<size_t>& pool, const SampleSet& samples, const LightSpace& space,
-                                   Renderer& renderer, const std::vector<Rgb>& base_phi, size_t base_count) {
-  if (pool.size() < 3) return std::nullopt;
-  DVec3 sum(0.0);
-  double weight = 0.0;
-  for (size_t i : pool) {
-    const double w = luminance(samples.target[i]);
-    sum += w * DVec3(samples.points.positions[i]), weight += w;
-  }
-  if (!(weight > 0)) return std::nullopt;
-  const Vec3 centroid = Vec3(sum / weight);
-  auto spot = best_spot(aimed_spots(free_grid_points(space, kApexCells), pool, centroid, samples, space), samples, renderer,
-                        base_phi, base_count);
-  // Coarse to fine (as the seeding): apexes around the best, closer each level.
-  const Vec3 extent = space.bounds().extent();
-  float step = 0.5f * std::max({extent.x, extent.y, extent.z}) / float(kApexCells);
-  for (int level = 0; spot && level < 3; ++level, step *= 0.5f) {
-    std::vector<Vec3> apexes;
-    for (int k = 0; k < 27; ++k) apexes.push_back(spot->position + step * Vec3(float(k % 3 - 1), float(k / 3 % 3 - 1), float(k / 9 - 1)));
-    if (auto finer = best_spot(aimed_spots(apexes, pool, centroid, samples, space), samples, renderer, base_phi, base_count)) spot = finer;
-  }
-  if (spot) spot = refine_spot(*spot, samples, space, renderer, base_phi, base_count);
-  return spot;
-}
-
-Light refine_spot(const Light& start, const SampleSet& samples, const LightSpace& space, Renderer& renderer,
-                  const std::vector<Rgb>& base_phi, size_t base_count) {
-  const float scale = space.rays().scene().diagonal();
-  auto spot_of = [&](const std::vector<double>& x) {
-    Light l = start;
-    read_geometry(l, scale, x, 0);
-    return l;
-  };
-  auto objective = [&](const std::vector<double>& x) {
-    const Light l = spot_of(x);
-    if (!space.admissible(l.position)) return 1e30;
-    return dbar_with(base_phi, base_count, renderer.unit_responses(samples.points, std::span<const Light>(&l, 1), Transport::DirectOnly),
-                     samples);
-  };
-  std::vector<double> x, steps;
-  append_geometry(start, scale, x, steps);
-  for (auto& s : steps) s *= 0.5;  // the screening put it close
-  SimplexSettings settings;
-  settings.max_evaluations = 300;
-  // Restarted once: a fresh simplex escapes a collapsed one.
-  for (int restart = 0; restart < 2; ++restart) x = nelder_mead(objective, x, steps, settings).x;
-  return spot_of(x);
 }
 
 } // namespace hilight

@@ -10,8 +10,10 @@
 namespace hilight {
 
 /// Best non-negative intensities (per channel) for lights with responses
-/// `phi` (light-major, m per light) against the samples' target.
-std::vector<Rgb> fit_intensities(const std::vector<Rgb>& phi, size_t light_count, const SampleSet& samples);
+/// `phi` (light-major, m per light) against the samples' target. `scale`
+/// (one per sample, or empty) multiplies the samples' weights per channel.
+std::vector<Rgb> fit_intensities(const std::vector<Rgb>& phi, size_t light_count, const SampleSet& samples,
+                                 std::span<const Rgb> scale = {});
 
 /// Σ_j φ_j ⊙ l_j at every sample.
 std::vector<Rgb> combine(const std::vector<Rgb>& phi, std::span<const Rgb> intensities, size_t m);

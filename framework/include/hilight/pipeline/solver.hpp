@@ -158,12 +158,12 @@ private:
   /// least explained, polished, kept while it improves D̄ by ε_impro or
   /// lowers it by ε_w (lamps the hierarchy merged away).
   Lighting add_missing_lights(const SampleSet& samples, Lighting lights, double& dbar);
+  /// Spotlights alone for the target (pipeline/spot_proposals.hpp),
+  /// polished by the reference; empty when none helps.
+  Lighting add_spots(const SampleSet& samples, double& dbar);
   /// Eq. 9 once more on the final lights: the nearest two point lights merged
   /// (eq. 7) and polished, kept while D̄ grows by less than ε_impro (a lamp
   /// the hierarchy left split in two).
-  /// Spotlights for the pools the lights leave under-lit (pipeline/
-  /// spot_proposals.hpp), one at a time, each kept if D̄ improves by ε_impro.
-  Lighting add_spots(const SampleSet& samples, Lighting lights, double& dbar);
   Lighting merge_close_pairs(const SampleSet& samples, Lighting lights, double& dbar);
   /// The inverse of a merge: the point light whose share of the target is
   /// worst explained split in two (along each axis), polished, kept when eq.

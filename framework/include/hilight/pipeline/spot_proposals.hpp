@@ -1,33 +1,30 @@
 #pragma once
-/// Spotlights without hints (issue 10 §3): where the target holds a bright
-/// pool that the lights found leave under-lit (a sharp-edged cone point
-/// lights cannot paint), propose a spotlight for it. The solver keeps a
-/// proposal only when the improvement-ratio rule says it pays.
+/// Spotlights without hints (issue 10 §3): when point lights cannot explain
+/// the target, spots are screened from nothing (spot_screening.hpp), refined
+/// with a bounce estimate (spot_refinement.hpp) and kept while each pays by
+/// eq. 9. The solver compares the answer with the point lights' answer.
 #include "hilight/light_space.hpp"
 #include "hilight/pipeline/samples.hpp"
 #include "hilight/renderer.hpp"
 
-#include <optional>
 #include <vector>
 
 namespace hilight {
 
-/// The samples of the pool around the sample the fit `lit` under-explains
-/// most: linked within `link` of each other, each at least a tenth as bright
-/// (luminance) as that sample. Empty when nothing is under-lit.
-std::vector<size_t> underlit_pool(const std::vector<Rgb>& lit, const SampleSet& samples, float link);
+struct SpotProposalSettings {
+  size_t max_spots = 4;
+  double weak_threshold = 0.05;  ///< ε_w (eq. 6)
+  double eps_impro = 1.6;        ///< ε_impro (eq. 9)
+  double visible_dbar = 5e-3;    ///< below this D̄ a light more fits noise, not a lamp
+  double split_dbar = 0.02;      ///< above this D̄ once the set is built, each spot is tried as two
+};
 
-/// A unit spotlight for `pool`: among free apexes of the light space, aimed
-/// at the pool's brightness-weighted centroid, its cutoff just covering the
-/// pool; the apex whose spot (direct light, intensities by NNLS beside
-/// `base_phi`'s `base_count` lights) explains the samples best, then refined
-/// alone (refine_spot).
-std::optional<Light> spot_for_pool(const std::vector<size_t>& pool, const SampleSet& samples, const LightSpace& space,
-                                   Renderer& renderer, const std::vector<Rgb>& base_phi, size_t base_count);
-
-/// `start` refined alone (position, direction, cutoff, soft edge) by the
-/// simplex on its direct light, intensities by NNLS beside the base lights.
-Light refine_spot(const Light& start, const SampleSet& samples, const LightSpace& space, Renderer& renderer,
-                  const std::vector<Rgb>& base_phi, size_t base_count);
+/// Spotlights alone (intensities fitted) that explain the samples' target:
+/// screened by `renderer`'s direct light, refined twice with the bounce of
+/// `reference` at the cones found so far. A spot whose removal leaves D̄
+/// within ε_impro (and within ε_w of ‖Ψ‖), or below visible_dbar, goes. `dbar`: D̄ at the samples by
+/// that model. Empty when no spot helps.
+Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference,
+                       const SpotProposalSettings& settings, double& dbar);
 
 } // namespace hilight
