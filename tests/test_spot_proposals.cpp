@@ -89,3 +89,25 @@ TEST_CASE("spot screening: two overlapping pools get two cones near their lamps"
   for (const auto& l : found) CHECK(nearest(l, truth) < 0.1f);
   CHECK(dbar < 0.01);
 }
+
+TEST_CASE("spot dev", "[.][spot-dev]") {
+  Stage stage;
+  const Light truth = Light::spot(Vec3(1.86075f, 4.23514f, -0.936643f), glm::normalize(Vec3(-0.156695f, -0.905046f, 0.395397f)), 12.3772f,
+                                  Rgb(19.8f), 3.3261f);
+  const SampleSet samples = stage.samples_of({truth}, "spot_dev");
+  std::printf("%zu samples\n", samples.size());
+  Light start = Light::spot(Vec3(1.8f, 4.89f, -1.4f), glm::normalize(Vec3(-0.12f, -0.87f, 0.49f)), 11.f, Rgb(20.f), 2.2f);
+  for (double kappa : {1.0, 10.0, 100.0}) {
+    SpotRefineSettings settings;
+    settings.over_weight = kappa;
+    Lighting found = {start};
+    double dbar = 1.0;
+    for (int round = 0; round < 3; ++round) {
+      const std::vector<Rgb> bounce = stage.reference->unit_responses(samples.points, found, Transport::IndirectOnly);
+      found = refine_spots(found, bounce, samples, *stage.space, *stage.reference, {}, 0, dbar, settings);
+      std::printf("kappa %g round %d: (%.3f %.3f %.3f) dir (%.3f %.3f %.3f) c %.2f f %.2f D̄ %.5f off %.3f\n", kappa, round, found[0].position.x,
+                  found[0].position.y, found[0].position.z, found[0].direction.x, found[0].direction.y, found[0].direction.z,
+                  found[0].cutoff_deg, found[0].falloff_deg, dbar, glm::length(found[0].position - truth.position));
+    }
+  }
+}
