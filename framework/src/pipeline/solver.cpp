@@ -605,9 +605,13 @@ Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {
     Stopwatch spot_watch;
     Lighting with_spots = add_spots(samples, spot_dbar);
     report.seconds["spots"] += spot_watch.seconds();
+    Stopwatch more_points;
     lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
+    report.seconds["more points"] += more_points.seconds();
     if (!with_spots.empty()) {
+      Stopwatch more_spots;
       with_spots = add_missing_lights(samples, std::move(with_spots), spot_dbar);
+      report.seconds["more beside spots"] += more_spots.seconds();
       const size_t n_spots = with_spots.size(), n_points = lights.size();
       const double d_spots = spot_dbar, d_points = report.dbar_samples, eps = m_settings.eps_impro;
       const bool spots_win = n_spots == n_points ? d_spots < d_points
