@@ -21,21 +21,29 @@ constexpr int kRoundIterations = 15;
 
 /// How spots are refined: bounce rounds at most, whose bounce (the fast
 /// renderer's is 3x cheaper and ~25% off: enough to compare candidates, not
-/// to place the answer), and how over-lighting counts (refine_spots).
+/// to place the answer), how over-lighting counts (refine_spots), and the
+/// widest soft edge as a share of the cutoff.
 struct Pass {
   int rounds;
   bool fast_bounce;
   double over_weight;
+  double falloff_share;
 };
-/// Spots refined together toward the answer.
-constexpr Pass kJoint{12, false, 1.0};
+/// While the set is built, a spot keeps an edge (soft edge at most half its
+/// cutoff): an edgeless lobe fits under several pools at once and then
+/// holds them all.
+constexpr double kBuildingFalloffShare = 0.5;
+/// Spots refined together while the set is built...
+constexpr Pass kJoint{12, false, 1.0, kBuildingFalloffShare};
+/// ...and once it is: every edge free.
+constexpr Pass kFree{12, false, 1.0, 1.0};
 /// A candidate beside the spots found so far: it may light less than the
 /// target (lamps not yet found will add) but over-lighting counts 100
 /// times: otherwise the best single spot for two or three pools is one wide
 /// cone over all of them.
-constexpr Pass kCandidate{2, true, 100.0};
+constexpr Pass kCandidate{2, true, 100.0, kBuildingFalloffShare};
 /// Two candidates together (a spot split in two).
-constexpr Pass kPair{2, true, 1.0};
+constexpr Pass kPair{2, true, 1.0, kBuildingFalloffShare};
 
 struct Model {
   const SampleSet& samples;
@@ -62,6 +70,7 @@ struct Model {
     double previous = 1e300;
     SpotRefineSettings settings;
     settings.over_weight = pass.over_weight;
+    settings.max_falloff_share = pass.falloff_share;
     settings.iterations = kRoundIterations;
     for (int round = 0; round < pass.rounds; ++round) {
       const std::vector<Rgb> estimate = bounce_of(spots, pass.fast_bounce);
@@ -218,7 +227,7 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
     spots = std::move(two), bounce = std::move(split_bounce), dbar = split_dbar;
   }
   // The set is built: every edge free, plain least squares.
-  spots = model.refine(std::move(spots), {}, 0, kJoint, dbar, &bounce);
+  spots = model.refine(std::move(spots), {}, 0, kFree, dbar, &bounce);
   show("freed", spots, dbar);
   // Eq. 9 backwards: the spot whose loss the others bear best (intensities
   // re-fitted) goes if, the others refined without it, the loss is less
@@ -237,7 +246,7 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
     fewer.erase(fewer.begin() + std::ptrdiff_t(weakest));
     std::vector<Rgb> fewer_bounce;
     double fewer_dbar = least;
-    fewer = model.refine(std::move(fewer), {}, 0, kJoint, fewer_dbar, &fewer_bounce);
+    fewer = model.refine(std::move(fewer), {}, 0, kFree, fewer_dbar, &fewer_bounce);
     const bool pays = fewer_dbar >= settings.eps_impro * dbar || fewer_dbar - dbar >= settings.weak_threshold;
     if (pays && fewer_dbar > settings.visible_dbar) break;
     spots = std::move(fewer), bounce = std::move(fewer_bounce), dbar = fewer_dbar;

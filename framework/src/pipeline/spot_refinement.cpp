@@ -20,7 +20,7 @@ constexpr double kFiniteStep[kParams] = {0.1, 0.1, 0.1, 2e-3, 2e-3, 0.1, 0.1};
 /// A hard edge has no slope between samples: the softest edge kept is this.
 constexpr float kMinFalloffDeg = 0.25f;
 
-Light moved(const Light& s, const double* x, float position_unit) {
+Light moved(const Light& s, const double* x, float position_unit, float falloff_share) {
   Light l = s;
   l.position += position_unit * Vec3(float(x[0]), float(x[1]), float(x[2]));
   const Vec3 d = glm::normalize(s.direction);
@@ -28,7 +28,7 @@ Light moved(const Light& s, const double* x, float position_unit) {
   const Vec3 e2 = glm::cross(d, e1);
   l.direction = glm::normalize(d + float(x[3]) * e1 + float(x[4]) * e2);
   l.cutoff_deg = std::clamp(s.cutoff_deg + float(x[5]), 1.f, 89.f);
-  l.falloff_deg = std::clamp(s.falloff_deg + float(x[6]), kMinFalloffDeg, l.cutoff_deg);
+  l.falloff_deg = std::clamp(s.falloff_deg + float(x[6]), kMinFalloffDeg, std::max(kMinFalloffDeg, falloff_share * l.cutoff_deg));
   return l;
 }
 
@@ -112,10 +112,11 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
     return true;
   };
 
+  const float share = float(settings.max_falloff_share);
   Lighting current = spots;
   for (auto& l : current) {  // the start obeys the bounds the steps keep
     const double none[kParams] = {};
-    l = moved(l, none, unit);
+    l = moved(l, none, unit, share);
   }
   std::vector<Rgb> direct = direct_of(current);
   Evaluation now = model.evaluate(direct);
@@ -128,7 +129,7 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
       for (int q = 0; q < kParams; ++q) {
         double x[kParams] = {};
         x[q] = kFiniteStep[q];
-        copies.push_back(moved(current[s], x, unit));
+        copies.push_back(moved(current[s], x, unit, share));
       }
     const std::vector<Rgb> copy_direct = direct_of(copies);
     Eigen::MatrixXd J(Eigen::Index(3 * m), Eigen::Index(p));
@@ -153,7 +154,7 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
       for (Eigen::Index d = 0; d < A.rows(); ++d) A(d, d) += lambda * std::max(JtJ(d, d), 1e-12);
       const Eigen::VectorXd step = A.ldlt().solve(Jtr);
       Lighting trial;
-      for (size_t s = 0; s < k; ++s) trial.push_back(moved(current[s], step.data() + s * kParams, unit));
+      for (size_t s = 0; s < k; ++s) trial.push_back(moved(current[s], step.data() + s * kParams, unit, share));
       if (place(trial)) {
         std::vector<Rgb> trial_direct = direct_of(trial);
         Evaluation e = model.evaluate(trial_direct);
