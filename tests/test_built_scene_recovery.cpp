@@ -61,7 +61,7 @@ Outcome recovery_trials(builders::BuiltScene (*make)(), uint64_t first_seed, siz
     const Target target = read_target(dir / "target.ply", *scene, *rays);
     SolveSettings s;
     s.cache_dir = dir / "cache";
-    s.propose_spots = propose_spots;
+    s.propose_spots = std::getenv("HILIGHT_PROPOSE_SPOTS") ? std::string(std::getenv("HILIGHT_PROPOSE_SPOTS")) == "1" : propose_spots;
     Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, s);
     SolveReport report;
     const Lighting found = solver.solve(target, report);

@@ -135,7 +135,13 @@ public:
 
 private:
   /// The whole solve in the current light space: seeding to residual polish.
+  /// The point-light solve in the current light space.
   Lighting solve_in_space(const Target& target, SolveReport& report);
+  /// Spotlights from nothing in the current light space, point lights
+  /// beside them where they pay (empty when no spot helps).
+  Lighting spots_in_space(const Target& target, SolveReport& report);
+  /// Both: nearby point pairs merged, the residual polish, the report.
+  Lighting finish_in_space(const Target& target, SampleSet samples, Lighting lights, SolveReport& report);
   /// Lights may stand beyond the scene's open sides from now on (its own
   /// light cache); `open_space(false)` goes back.
   /// Removes lights with (almost) zero intensity, unless the count is fixed or at its minimum.
