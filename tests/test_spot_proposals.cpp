@@ -89,3 +89,53 @@ TEST_CASE("spot screening: two overlapping pools get two cones near their lamps"
   for (const auto& l : found) CHECK(nearest(l, truth) < 0.1f);
   CHECK(dbar < 0.01);
 }
+
+TEST_CASE("spot dev", "[.][spot-dev]") {
+  Stage stage;
+  const Light truth = Light::spot(Vec3(1.86075f, 4.23514f, -0.936643f), glm::normalize(Vec3(-0.156695f, -0.905046f, 0.395397f)), 12.3772f,
+                                  Rgb(19.8f), 3.3261f);
+  const SampleSet samples = stage.samples_of({truth}, "spot_dev");
+  std::printf("%zu samples\n", samples.size());
+  Light start = Light::spot(Vec3(1.8f, 4.89f, -1.4f), glm::normalize(Vec3(-0.12f, -0.87f, 0.49f)), 11.f, Rgb(20.f), 2.2f);
+  for (double kappa : {1.0, 10.0, 100.0}) {
+    SpotRefineSettings settings;
+    settings.over_weight = kappa;
+    Lighting found = {start};
+    double dbar = 1.0;
+    for (int round = 0; round < 3; ++round) {
+      const std::vector<Rgb> bounce = stage.reference->unit_responses(samples.points, found, Transport::IndirectOnly);
+      found = refine_spots(found, bounce, samples, *stage.space, *stage.reference, {}, 0, dbar, settings);
+      std::printf("kappa %g round %d: (%.3f %.3f %.3f) dir (%.3f %.3f %.3f) c %.2f f %.2f D̄ %.5f off %.3f\n", kappa, round, found[0].position.x,
+                  found[0].position.y, found[0].position.z, found[0].direction.x, found[0].direction.y, found[0].direction.z,
+                  found[0].cutoff_deg, found[0].falloff_deg, dbar, glm::length(found[0].position - truth.position));
+    }
+  }
+}
+
+TEST_CASE("spot dev bounce", "[.][spot-dev2]") {
+  Stage stage;
+  auto fast = test::make_renderer("embree", stage.scene, fast_renderer_settings("embree", reference_renderer_settings({}, 1)));
+  const Lighting truth = {Light::spot(Vec3(1.86075f, 4.23514f, -0.936643f), glm::normalize(Vec3(-0.156695f, -0.905046f, 0.395397f)), 12.3772f, Rgb(19.8f), 3.3261f),
+                          Light::spot(Vec3(-0.3f, 4.7f, -0.3f), glm::normalize(Vec3(0.4f, -0.9f, -0.2f)), 24.f, Rgb(60.f), 4.f),
+                          Light::spot(Vec3(1.5f, 4.6f, -0.7f), glm::normalize(Vec3(-0.73f, -0.68f, 0.04f)), 20.f, Rgb(100.f, 90.f, 80.f), 4.f)};
+  const SampleSet samples = stage.samples_of(truth, "spot_dev2");
+  for (int rep = 0; rep < 2; ++rep)
+    for (Renderer* r : {stage.reference.get(), fast.get()}) {
+      auto t0 = std::chrono::steady_clock::now();
+      const auto b1 = r->unit_responses(samples.points, std::span<const Light>(truth.data(), 1), Transport::IndirectOnly);
+      auto t1 = std::chrono::steady_clock::now();
+      const auto b3 = r->unit_responses(samples.points, truth, Transport::IndirectOnly);
+      auto t2 = std::chrono::steady_clock::now();
+      const auto d3 = r->unit_responses(samples.points, truth, Transport::DirectOnly);
+      auto t3 = std::chrono::steady_clock::now();
+      const auto ref = stage.reference->unit_responses(samples.points, truth, Transport::IndirectOnly);
+      double num = 0, den = 0, tot = 0;
+      for (size_t i = 0; i < ref.size(); ++i) {
+        const auto d = ref[i] - b3[i];
+        num += glm::dot(d, d), den += glm::dot(ref[i], ref[i]), tot += glm::dot(d3[i], d3[i]);
+      }
+      std::printf("%s: 1 spot %.3f s, 3 spots %.3f s, direct 3 %.3f s; bounce vs reference %.4f of bounce, bounce/direct %.3f\n",
+                  r == stage.reference.get() ? "reference" : "fast", std::chrono::duration<double>(t1 - t0).count(),
+                  std::chrono::duration<double>(t2 - t1).count(), std::chrono::duration<double>(t3 - t2).count(), std::sqrt(num / den), std::sqrt(den / tot));
+    }
+}

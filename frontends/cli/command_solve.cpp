@@ -111,8 +111,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
                  "when lights inside the scene's bounds leave D̄ above this, look again beyond its open sides (0: never)")
       ->check(CLI::Range(0.0, 1e9))
       ->capture_default_str();
-  app.add_flag("--propose-spots", s.propose_spots,
-               "experimental: propose spotlights (no --spot-hints) for bright pools point lights leave under-lit");
+  app.add_flag("--propose-spots,!--no-propose-spots", s.propose_spots,
+               "when point lights leave D̄ above 5%, look for spotlights without --spot-hints (default: on)");
   app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
   app.add_flag("-q,--quiet", quiet, "no progress or summary on stderr");
@@ -171,9 +171,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     const std::string over = report.dbar_points == report.target_points
                                  ? "all " + std::to_string(report.target_points) + " target points"
                                  : std::to_string(report.dbar_points) + " of " + std::to_string(report.target_points) + " target points";
-    std::fprintf(stderr, "hilight: %zu light%s, D̄ %.2f%% over %s (%zu samples), %.2f s -> %s\n", report.chosen,
-                 report.chosen == 1 ? "" : "s", 100.0 * report.dbar, over.c_str(), report.samples, report.seconds["total"],
-                 output.c_str());
+    const auto spots = std::count_if(lights.begin(), lights.end(), [](const Light& l) { return l.type == LightType::Spot; });
+    const std::string of_them = spots ? " (" + std::to_string(spots) + (spots == 1 ? " spot)" : " spots)") : "";
+    std::fprintf(stderr, "hilight: %zu light%s%s, D̄ %.2f%% over %s (%zu samples), %.2f s -> %s\n", report.chosen,
+                 report.chosen == 1 ? "" : "s", of_them.c_str(), 100.0 * report.dbar, over.c_str(), report.samples,
+                 report.seconds["total"], output.c_str());
     if (report.open_space)
       std::fprintf(stderr, "hilight: lit from outside: lights beyond the scene's bounds (inside them D̄ was %.1f%%)\n",
                    100.0 * report.dbar_closed);
@@ -188,7 +190,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   else if (report.dbar > kPoorFit)
     std::fprintf(stderr,
                  "hilight: warning: poor fit, D̄ %.1f%% with %zu light%s: parts of the target may be unreachable by any "
-                 "light, or need a spotlight (--spot-hints) or another light count (--lights N)\n",
+                 "light, or need another light count (--lights N) or spotlight hints (--spot-hints)\n",
                  100.0 * report.dbar, report.chosen, report.chosen == 1 ? "" : "s");
   if (max_dbar >= 0 && report.dbar > max_dbar) {
     std::fprintf(stderr, "hilight: %s: D̄ %.2f%% is above --max-dbar %.2f%% (lights written to %s)\n", target_path.c_str(),

@@ -24,9 +24,12 @@ namespace {
 /// D̄ below which a light more is noise-fitting, not a missing lamp: the same
 /// order as ε_w (a light worth keeping explains 5% of ‖Ψ‖), and invisible.
 constexpr double kVisibleDbar = 5e-3;
-/// D̄ above which point lights leave the target to spotlights (issue 10 §3),
-/// and how many at most.
-constexpr double kSpotDbar = 0.02;
+/// D̄ above which point lights (all the count rule would add) leave the
+/// target to spotlights (issue 10 §3), and how many at most. Point lights
+/// leave a stage's pools at 24–65%; a renderer's own floor (ism-vulkan's
+/// bounce, 2–4%) or the far lights of a product (2–4%) must not start a
+/// spot search that cannot pay.
+constexpr double kSpotDbar = 0.05;
 constexpr int kMaxSpots = 4;
 /// D̄ at the samples above which a light is tried split in two: a fit this
 /// poor is missing a lamp; below it, a light more mostly fits the remaining
@@ -409,15 +412,18 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
   return lights;
 }
 
-Lighting Solver::add_spots(const SampleSet& samples, double& dbar) {
+Lighting Solver::add_spots(const SampleSet& samples, double give_up_dbar, double& dbar) {
   if (m_progress) m_progress("screening spotlights");
   SpotProposalSettings settings;
-  settings.max_spots = kMaxSpots;
+  settings.max_spots = max_lights() ? std::min<size_t>(kMaxSpots, max_lights()) : kMaxSpots;  // the count rule
   settings.weak_threshold = m_settings.seeding.weak_threshold;
   settings.eps_impro = m_settings.eps_impro;
   settings.visible_dbar = kVisibleDbar;
   const Lighting spots = propose_spots(samples, *m_space, m_renderer, m_reference, settings, dbar);
-  if (spots.empty()) return spots;
+  // Spots that explain less than the point lights did are not what the
+  // target lacks (a painted patch no light makes): the reference polish and
+  // the point lights beside them would cost 5x the proposal to lose.
+  if (spots.empty() || dbar >= give_up_dbar) return {};
   return polish_with_reference(samples, spots, false, dbar);
 }
 
@@ -620,6 +626,29 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
       open_space(false);
     }
   }
+  // Point lights cannot explain the target, inside or beyond: spotlights
+  // from nothing (point lights beside them where they pay) compete; the
+  // fewer lights win unless the others improve D̄ by ε_impro (eq. 9).
+  if (m_settings.propose_spots && report.dbar > kSpotDbar && m_settings.spot_hints.empty() && m_settings.fixed_count == 0) {
+    if (m_progress) m_progress("looking for spotlights");
+    SolveReport spot_report;
+    spot_report.seconds = report.seconds;
+    spot_report.open_space = report.open_space;
+    spot_report.dbar_closed = report.dbar_closed;
+    Lighting spots = spots_in_space(target, report.dbar_samples, spot_report);
+    const size_t n_spots = spots.size(), n_points = lights.size();
+    const double d_spots = spot_report.dbar, d_points = report.dbar, eps = m_settings.eps_impro;
+    const bool counts = n_spots >= min_lights() && (max_lights() == 0 || n_spots <= max_lights());
+    const bool spots_win = !spots.empty() && counts && (n_spots == n_points ? d_spots < d_points
+                                              : n_spots < n_points ? d_spots < eps * d_points  // the extra point lights do not pay
+                                                                   : d_points >= eps * d_spots);  // the extra lights pay
+    if (spots_win) {
+      report = std::move(spot_report);
+      lights = std::move(spots);
+    } else {
+      report.seconds = spot_report.seconds;
+    }
+  }
   drop_idle_lights(lights);
   finish_report(target, lights, report);
   if (report.dbar > kPoorFitDbar) report.unreachable = unreachable_share(target, *m_space);
@@ -662,34 +691,31 @@ Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {
   Lighting found = solve_samples(samples, report);
   Stopwatch polish_watch;
   Lighting lights = polish_with_reference(samples, found, false, report.dbar_samples);
-  if (m_settings.propose_spots && report.dbar_samples > kSpotDbar && m_settings.spot_hints.empty() && m_settings.fixed_count == 0) {
-    // Poorly explained by point lights: spotlights for the under-lit pools
-    // compete with more point lights; the fewer lights win unless the others
-    // improve D̄ by ε_impro (eq. 9).
-    double spot_dbar = 0;
-    Stopwatch spot_watch;
-    Lighting with_spots = add_spots(samples, spot_dbar);
-    report.seconds["spots"] += spot_watch.seconds();
-    lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
-    if (!with_spots.empty()) {
-      with_spots = add_missing_lights(samples, std::move(with_spots), spot_dbar);
-      const size_t n_spots = with_spots.size(), n_points = lights.size();
-      const double d_spots = spot_dbar, d_points = report.dbar_samples, eps = m_settings.eps_impro;
-      const bool spots_win = n_spots == n_points ? d_spots < d_points
-                             : n_spots < n_points ? d_spots < eps * d_points  // the extra point lights do not pay
-                                                  : d_points >= eps * d_spots;  // the extra lights pay
-      if (spots_win) lights = std::move(with_spots), report.dbar_samples = spot_dbar;
-    }
-  } else {
-    lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
-  }
+  lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
+  report.seconds["reference polish"] += polish_watch.seconds();
+  return finish_in_space(target, std::move(samples), std::move(lights), report);
+}
+
+Lighting Solver::spots_in_space(const Target& target, double points_dbar, SolveReport& report) {
+  ensure_cache(report);
+  SampleSet samples = sample(target, report);
+  Stopwatch watch;
+  Lighting lights = add_spots(samples, points_dbar, report.dbar_samples);
+  if (!lights.empty()) lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
+  report.seconds["spots"] += watch.seconds();
+  if (lights.empty()) return lights;
+  return finish_in_space(target, std::move(samples), std::move(lights), report);
+}
+
+Lighting Solver::finish_in_space(const Target& target, SampleSet samples, Lighting lights, SolveReport& report) {
+  Stopwatch merge_watch;
   lights = merge_close_pairs(samples, std::move(lights), report.dbar_samples);
   for (int round = 0; round < 4; ++round) {  // each split must pay (eq. 9)
     const size_t before = lights.size();
     lights = split_lamps(samples, std::move(lights), report.dbar_samples);
     if (lights.size() == before) break;
   }
-  report.seconds["reference polish"] += polish_watch.seconds();
+  report.seconds["reference polish"] += merge_watch.seconds();
   lights = polish_residuals(target, std::move(samples), lights, false, report);
   finish_report(target, lights, report);
   return lights;

@@ -15,20 +15,44 @@ namespace {
 
 /// Candidates refined per round: the screening's best few from distinct apexes.
 constexpr size_t kStarts = 6;
-/// A candidate refined beside the spots found so far may light less than
-/// the target (lamps not yet found will add) but over-lighting counts this
-/// many times (refine_spots' over_weight): otherwise the best single spot
-/// for two or three pools is one wide cone over all of them.
-constexpr double kOverWeight = 100.0;
+/// Each bounce estimate serves this many Levenberg–Marquardt steps: more are
+/// spent following a bounce that is already out of date.
+constexpr int kRoundIterations = 15;
+
+/// How spots are refined: bounce rounds at most, whose bounce (the fast
+/// renderer's is 3x cheaper and ~25% off: enough to compare candidates, not
+/// to place the answer), how over-lighting counts (refine_spots), and the
+/// widest soft edge as a share of the cutoff.
+struct Pass {
+  int rounds;
+  bool fast_bounce;
+  double over_weight;
+  double falloff_share;
+};
+/// While the set is built, a spot keeps an edge (soft edge at most half its
+/// cutoff): an edgeless lobe fits under several pools at once and then
+/// holds them all.
+constexpr double kBuildingFalloffShare = 0.5;
+/// Spots refined together while the set is built...
+constexpr Pass kJoint{12, false, 1.0, kBuildingFalloffShare};
+/// ...and once it is: every edge free.
+constexpr Pass kFree{12, false, 1.0, 1.0};
+/// A candidate beside the spots found so far: it may light less than the
+/// target (lamps not yet found will add) but over-lighting counts 100
+/// times: otherwise the best single spot for two or three pools is one wide
+/// cone over all of them.
+constexpr Pass kCandidate{2, true, 100.0, kBuildingFalloffShare};
+/// Two candidates together (a spot split in two).
+constexpr Pass kPair{2, true, 1.0, kBuildingFalloffShare};
 
 struct Model {
   const SampleSet& samples;
   const LightSpace& space;
-  Renderer& renderer;   ///< direct light
+  Renderer& renderer;   ///< direct light (and the fast bounce)
   Renderer& reference;  ///< the bounce estimates
 
-  std::vector<Rgb> bounce_of(const Lighting& spots) const {
-    return reference.unit_responses(samples.points, spots, Transport::IndirectOnly);
+  std::vector<Rgb> bounce_of(const Lighting& spots, bool fast = false) const {
+    return (fast ? renderer : reference).unit_responses(samples.points, spots, Transport::IndirectOnly);
   }
   /// Each spot's direct light plus its `bounce`.
   std::vector<Rgb> responses(const Lighting& spots, const std::vector<Rgb>& bounce) const {
@@ -40,19 +64,21 @@ struct Model {
   /// `spots` refined with `base` held, their bounce taken where they stand,
   /// again and again where they went: the bounce follows the cone slowly, so
   /// the rounds converge (measured: the error along a spot's valley falls
-  /// ~2.5x a round). `bounce` gets the last estimate.
-  Lighting refine(Lighting spots, const std::vector<Rgb>& base_phi, size_t base_count, int rounds, std::vector<Rgb>& bounce,
-                  double& dbar, bool alone = false) const {
+  /// ~2.5x a round). `bounce` (if given) gets the bounce where they end.
+  Lighting refine(Lighting spots, const std::vector<Rgb>& base_phi, size_t base_count, const Pass& pass, double& dbar,
+                  std::vector<Rgb>* bounce = nullptr) const {
     double previous = 1e300;
     SpotRefineSettings settings;
-    if (alone) settings.over_weight = kOverWeight;
-    for (int round = 0; round < rounds; ++round) {
-      bounce = bounce_of(spots);
-      spots = refine_spots(spots, bounce, samples, space, renderer, base_phi, base_count, dbar, settings);
-      if (dbar > 0.9 * previous) break;  // the bounce no longer moves the spots
+    settings.over_weight = pass.over_weight;
+    settings.max_falloff_share = pass.falloff_share;
+    settings.iterations = kRoundIterations;
+    for (int round = 0; round < pass.rounds; ++round) {
+      const std::vector<Rgb> estimate = bounce_of(spots, pass.fast_bounce);
+      spots = refine_spots(spots, estimate, samples, space, renderer, base_phi, base_count, dbar, settings);
+      if (dbar > 0.98 * previous) break;  // the bounce no longer moves the spots
       previous = dbar;
     }
-    bounce = bounce_of(spots);
+    if (bounce) *bounce = bounce_of(spots);
     return spots;
   }
 
@@ -97,9 +123,9 @@ std::optional<Light> best_candidate(const Model& model, const SpotScreen& screen
   std::optional<Light> best;
   dbar = 1e300;
   for (const Light& start : screen.candidates(residual, kStarts)) {
-    std::vector<Rgb> bounce;
     double d = 1.0;
-    const Lighting one = model.refine({start}, base_phi, base_count, 1, bounce, d, true);
+    const Lighting one = model.refine({start}, base_phi, base_count, kCandidate, d);
+    if (std::getenv("HILIGHT_SPOT_DEBUG")) std::fprintf(stderr, "   start (%.2f %.2f %.2f) dir (%.2f %.2f %.2f) c %.1f -> (%.2f %.2f %.2f) c %.1f f %.1f: %.4f\n", start.position.x, start.position.y, start.position.z, start.direction.x, start.direction.y, start.direction.z, start.cutoff_deg, one[0].position.x, one[0].position.y, one[0].position.z, one[0].cutoff_deg, one[0].falloff_deg, d);
     if (d < dbar) dbar = d, best = one[0];
   }
   return best;
@@ -116,7 +142,7 @@ void replace_each(const Model& model, const SpotScreen& screen, Lighting& spots,
     const auto other = best_candidate(model, screen, model.responses(trial, trial_bounce), trial.size(), d);
     if (!other) continue;
     trial.push_back(*other);
-    trial = model.refine(std::move(trial), {}, 0, 6, trial_bounce, d);
+    trial = model.refine(std::move(trial), {}, 0, kJoint, d, &trial_bounce);
     if (!(d < dbar)) continue;
     spots = std::move(trial), bounce = std::move(trial_bounce), dbar = d;
     show("swapped", spots, dbar);
@@ -136,22 +162,20 @@ Lighting split(const Model& model, const SpotScreen& screen, const Lighting& spo
   model.fit(base, others.size(), &residual);
   Lighting alone;
   for (const Light& start : screen.candidates(residual, kStarts)) {
-    std::vector<Rgb> b;
     double d = 1.0;
-    alone.push_back(model.refine({start}, base, others.size(), 1, b, d, true)[0]);
+    alone.push_back(model.refine({start}, base, others.size(), kCandidate, d)[0]);
   }
   Lighting best;
   double best_dbar = 1e300;
   for (size_t i = 0; i < alone.size(); ++i)
     for (size_t j = i + 1; j < alone.size(); ++j) {
-      std::vector<Rgb> b;
       double d = 1.0;
-      const Lighting pair = model.refine({alone[i], alone[j]}, base, others.size(), 1, b, d);
+      const Lighting pair = model.refine({alone[i], alone[j]}, base, others.size(), kPair, d);
       if (d < best_dbar) best_dbar = d, best = pair;
     }
   if (best.empty()) return {};
   others.insert(others.end(), best.begin(), best.end());
-  return model.refine(std::move(others), {}, 0, 6, split_bounce, dbar);
+  return model.refine(std::move(others), {}, 0, kJoint, dbar, &split_bounce);
 }
 
 } // namespace
@@ -178,7 +202,7 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
     more.push_back(*best);
     std::vector<Rgb> more_bounce;
     double more_dbar = one_dbar;
-    more = model.refine(std::move(more), {}, 0, 6, more_bounce, more_dbar);
+    more = model.refine(std::move(more), {}, 0, kJoint, more_dbar, &more_bounce);
     show("added", more, more_dbar);
     bool pays = dbar >= settings.eps_impro * more_dbar || dbar - more_dbar >= settings.weak_threshold;
     if (!pays && more.size() > 1) {
@@ -203,7 +227,7 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
     spots = std::move(two), bounce = std::move(split_bounce), dbar = split_dbar;
   }
   // The set is built: every edge free, plain least squares.
-  spots = model.refine(std::move(spots), {}, 0, 6, bounce, dbar);
+  spots = model.refine(std::move(spots), {}, 0, kFree, dbar, &bounce);
   show("freed", spots, dbar);
   // Eq. 9 backwards: the spot whose loss the others bear best (intensities
   // re-fitted) goes if, the others refined without it, the loss is less
@@ -222,7 +246,7 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
     fewer.erase(fewer.begin() + std::ptrdiff_t(weakest));
     std::vector<Rgb> fewer_bounce;
     double fewer_dbar = least;
-    fewer = model.refine(std::move(fewer), {}, 0, 6, fewer_bounce, fewer_dbar);
+    fewer = model.refine(std::move(fewer), {}, 0, kFree, fewer_dbar, &fewer_bounce);
     const bool pays = fewer_dbar >= settings.eps_impro * dbar || fewer_dbar - dbar >= settings.weak_threshold;
     if (pays && fewer_dbar > settings.visible_dbar) break;
     spots = std::move(fewer), bounce = std::move(fewer_bounce), dbar = fewer_dbar;

@@ -5,6 +5,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <tbb/parallel_for.h>
 
 namespace hilight {
@@ -18,7 +20,7 @@ constexpr double kFiniteStep[kParams] = {0.1, 0.1, 0.1, 2e-3, 2e-3, 0.1, 0.1};
 /// A hard edge has no slope between samples: the softest edge kept is this.
 constexpr float kMinFalloffDeg = 0.25f;
 
-Light moved(const Light& s, const double* x, float position_unit) {
+Light moved(const Light& s, const double* x, float position_unit, float falloff_share) {
   Light l = s;
   l.position += position_unit * Vec3(float(x[0]), float(x[1]), float(x[2]));
   const Vec3 d = glm::normalize(s.direction);
@@ -26,7 +28,7 @@ Light moved(const Light& s, const double* x, float position_unit) {
   const Vec3 e2 = glm::cross(d, e1);
   l.direction = glm::normalize(d + float(x[3]) * e1 + float(x[4]) * e2);
   l.cutoff_deg = std::clamp(s.cutoff_deg + float(x[5]), 1.f, 89.f);
-  l.falloff_deg = std::clamp(s.falloff_deg + float(x[6]), kMinFalloffDeg, l.cutoff_deg);
+  l.falloff_deg = std::clamp(s.falloff_deg + float(x[6]), kMinFalloffDeg, std::max(kMinFalloffDeg, falloff_share * l.cutoff_deg));
   return l;
 }
 
@@ -35,6 +37,7 @@ struct Evaluation {
   Eigen::VectorXd r;
   std::vector<Rgb> intensities;
   double cost = 0.0;
+  std::vector<Rgb> scale;  ///< per sample and channel: over_weight where over-lit, else 1 (empty: all 1)
 };
 
 class Model {
@@ -43,24 +46,26 @@ public:
         double over_weight)
       : m_samples(samples), m_base_phi(base_phi), m_base_count(base_count), m_bounce(bounce), m_over_weight(over_weight) {}
 
-  /// `direct`: each spot's direct light (light-major).
-  Evaluation evaluate(const std::vector<Rgb>& direct) const {
+  /// `direct`: each spot's direct light (light-major). With over_weight,
+  /// the over-lit samples are found by a few rounds of reweighting, unless
+  /// `mask` gives them (a Jacobian's moved copies keep the point's own, so
+  /// the slopes are of one smooth function).
+  Evaluation evaluate(const std::vector<Rgb>& direct, const std::vector<Rgb>* mask = nullptr) const {
     const size_t m = m_samples.size(), k = direct.size() / std::max<size_t>(1, m);
     std::vector<Rgb> phi = m_base_phi;
     phi.insert(phi.end(), direct.begin(), direct.end());
     if (!m_bounce.empty())
       for (size_t i = 0; i < k * m; ++i) phi[m_base_count * m + i] += m_bounce[i];
     Evaluation e;
-    e.intensities = fit_intensities(phi, m_base_count + k, m_samples);
+    if (mask) e.scale = *mask;
+    e.intensities = fit_intensities(phi, m_base_count + k, m_samples, e.scale);
     std::vector<Rgb> lit = combine(phi, e.intensities, m);
-    // Over-lighting weighs more: reweighted least squares, a few rounds.
-    std::vector<Rgb> scale;
-    for (int round = 0; round < (m_over_weight != 1.0 ? 2 : 0); ++round) {
-      scale.assign(m, Rgb(1.f));
+    for (int round = 0; round < (m_over_weight != 1.0 && !mask ? 2 : 0); ++round) {
+      e.scale.assign(m, Rgb(1.f));
       for (size_t i = 0; i < m; ++i)
         for (int c = 0; c < 3; ++c)
-          if (lit[i][c] > m_samples.target[i][c]) scale[i][c] = float(m_over_weight);
-      e.intensities = fit_intensities(phi, m_base_count + k, m_samples, scale);
+          if (lit[i][c] > m_samples.target[i][c]) e.scale[i][c] = float(m_over_weight);
+      e.intensities = fit_intensities(phi, m_base_count + k, m_samples, e.scale);
       lit = combine(phi, e.intensities, m);
     }
     e.r.resize(Eigen::Index(3 * m));
@@ -68,7 +73,7 @@ public:
       const double sw = std::sqrt(double(m_samples.weight[i]));
       for (int c = 0; c < 3; ++c) {
         double v = sw * (double(m_samples.target[i][c]) - double(lit[i][c]));
-        if (v < 0.0) v *= std::sqrt(m_over_weight);
+        if (!e.scale.empty()) v *= std::sqrt(double(e.scale[i][c]));
         e.r[Eigen::Index(3 * i + size_t(c))] = v;
         e.cost += v * v;
       }
@@ -107,10 +112,11 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
     return true;
   };
 
+  const float share = float(settings.max_falloff_share);
   Lighting current = spots;
   for (auto& l : current) {  // the start obeys the bounds the steps keep
     const double none[kParams] = {};
-    l = moved(l, none, unit);
+    l = moved(l, none, unit, share);
   }
   std::vector<Rgb> direct = direct_of(current);
   Evaluation now = model.evaluate(direct);
@@ -123,17 +129,22 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
       for (int q = 0; q < kParams; ++q) {
         double x[kParams] = {};
         x[q] = kFiniteStep[q];
-        copies.push_back(moved(current[s], x, unit));
+        copies.push_back(moved(current[s], x, unit, share));
       }
     const std::vector<Rgb> copy_direct = direct_of(copies);
     Eigen::MatrixXd J(Eigen::Index(3 * m), Eigen::Index(p));
     tbb::parallel_for(size_t(0), p, [&](size_t col) {
       const size_t s = col / kParams;
       std::vector<Rgb> d = direct;
-      std::copy(copy_direct.begin() + std::ptrdiff_t(col * m), copy_direct.begin() + std::ptrdiff_t((col + 1) * m),
-                d.begin() + std::ptrdiff_t(s * m));
+      for (size_t i = 0; i < m; ++i) {
+        // A sample crossing a shadow edge jumps: no slope, and its spike
+        // would swamp the others' (the fit then stalls a spot's length off).
+        const Rgb& moved_value = copy_direct[col * m + i];
+        const bool was_lit = direct[s * m + i] != Rgb(0.f), is_lit = moved_value != Rgb(0.f);
+        if (was_lit == is_lit) d[s * m + i] = moved_value;
+      }
       // Sign: J is the derivative of the model's light, −∂r.
-      J.col(Eigen::Index(col)) = (now.r - model.evaluate(d).r) / kFiniteStep[col % kParams];
+      J.col(Eigen::Index(col)) = (now.r - model.evaluate(d, &now.scale).r) / kFiniteStep[col % kParams];
     });
     const Eigen::MatrixXd JtJ = J.transpose() * J;
     const Eigen::VectorXd Jtr = J.transpose() * now.r;
@@ -143,7 +154,7 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
       for (Eigen::Index d = 0; d < A.rows(); ++d) A(d, d) += lambda * std::max(JtJ(d, d), 1e-12);
       const Eigen::VectorXd step = A.ldlt().solve(Jtr);
       Lighting trial;
-      for (size_t s = 0; s < k; ++s) trial.push_back(moved(current[s], step.data() + s * kParams, unit));
+      for (size_t s = 0; s < k; ++s) trial.push_back(moved(current[s], step.data() + s * kParams, unit, share));
       if (place(trial)) {
         std::vector<Rgb> trial_direct = direct_of(trial);
         Evaluation e = model.evaluate(trial_direct);
@@ -157,6 +168,7 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
       }
       lambda *= 4.0;
     }
+    if (std::getenv("HILIGHT_LM_DEBUG")) std::fprintf(stderr, "LM k=%zu it %d accepted %d lambda %g cost %g\n", k, iteration, int(accepted), lambda, now.cost);
     if (!accepted || small_gains >= 2) break;
   }
   for (size_t s = 0; s < k; ++s) current[s].intensity = now.intensities[base_count + s];

@@ -47,10 +47,10 @@ struct SolveSettings {
   /// (open_light_bounds(): a product lit from outside) and keeps the better
   /// answer. 0: never.
   double open_space_dbar = 0.05;
-  /// Propose spotlights (no hints) for bright pools point lights leave
-  /// under-lit (pipeline/spot_proposals.hpp). Off by default: on the stage
-  /// sweep it lowers D̄ but does not yet recover the spots (docs/solve.md).
-  bool propose_spots = false;
+  /// When point lights (inside and beyond the open sides) leave D̄ above 5%,
+  /// look for spotlights from nothing (no hints; pipeline/spot_proposals.hpp)
+  /// and keep them if they win by eq. 9 (docs/solve.md, "Spotlights").
+  bool propose_spots = true;
 };
 
 /// The automatic sample count: one sample per 14 target points, within
@@ -77,7 +77,6 @@ struct SolveReport {
   std::vector<double> improvement;   ///< eq. 9 between consecutive cuts
   size_t samples = 0, target_points = 0;
   size_t seed_lights = 0, seeds_tried = 0;
-  size_t light_evaluations = 0;      ///< lights whose φ was computed
   std::string cache_state;           ///< "loaded", "built", "off"
   bool open_space = false;           ///< lights were sought beyond the scene's bounds (open_light_bounds())
   double dbar_closed = -1;           ///< when that was tried: D̄ of the best answer inside the bounds
@@ -135,7 +134,15 @@ public:
 
 private:
   /// The whole solve in the current light space: seeding to residual polish.
+  /// The point-light solve in the current light space.
   Lighting solve_in_space(const Target& target, SolveReport& report);
+  /// Spotlights from nothing in the current light space, point lights
+  /// beside them where they pay (empty when no spot helps, or when the spots
+  /// alone explain less than `points_dbar`, D̄ at the samples of the point
+  /// lights they compete with).
+  Lighting spots_in_space(const Target& target, double points_dbar, SolveReport& report);
+  /// Both: nearby point pairs merged, the residual polish, the report.
+  Lighting finish_in_space(const Target& target, SampleSet samples, Lighting lights, SolveReport& report);
   /// Lights may stand beyond the scene's open sides from now on (its own
   /// light cache); `open_space(false)` goes back.
   /// Removes lights with (almost) zero intensity, unless the count is fixed or at its minimum.
@@ -159,8 +166,9 @@ private:
   /// lowers it by ε_w (lamps the hierarchy merged away).
   Lighting add_missing_lights(const SampleSet& samples, Lighting lights, double& dbar);
   /// Spotlights alone for the target (pipeline/spot_proposals.hpp),
-  /// polished by the reference; empty when none helps.
-  Lighting add_spots(const SampleSet& samples, double& dbar);
+  /// polished by the reference; empty when none helps or when they leave
+  /// D̄ at or above `give_up_dbar` before the polish.
+  Lighting add_spots(const SampleSet& samples, double give_up_dbar, double& dbar);
   /// Eq. 9 once more on the final lights: the nearest two point lights merged
   /// (eq. 7) and polished, kept while D̄ grows by less than ε_impro (a lamp
   /// the hierarchy left split in two).

@@ -26,6 +26,8 @@ struct SpotRefineSettings {
   /// beside others not yet found must not over-light the dark gaps between
   /// their pools to cover them all. 1: plain least squares.
   double over_weight = 1.0;
+  /// The soft edge at most this share of the cutoff.
+  double max_falloff_share = 1.0;
 };
 
 /// `spots` refined (never worse by the model below). The model at the
