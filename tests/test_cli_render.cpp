@@ -186,7 +186,7 @@ TEST_CASE("info and render: --max-edge bounds every edge of the tessellation", "
   CHECK(coarse.at("vertices").get<size_t>() >= coarse.at("vertices_input").get<size_t>());
 
   fs::path dir = test::output_dir("cli_render_max_edge");
-  render({(dir / "coarse.ply").string()}, {"--max-edge", "0.5", "--bounces", "0"});
+  render({(dir / "coarse.ply").string()}, {"--max-edge", "0.5", "--bounces", "0", "--refine-shadows", "0"});
   Ply ply = read_ply(dir / "coarse.ply");
   CHECK(ply.vertices.size() == coarse.at("vertices").get<size_t>());
   CHECK(ply.faces.size() == coarse.at("triangles").get<size_t>());
@@ -210,7 +210,7 @@ TEST_CASE("info and render: --max-edge bounds every edge of the tessellation", "
 
 TEST_CASE("render: OUT writes a per-vertex PLY and a PNG of the requested size", "[cli][render]") {
   fs::path dir = test::output_dir("cli_render_ply_png");
-  auto r = render({(dir / "out").string()}, {"--bounces", "0", "--width", "64", "--height", "48"});
+  auto r = render({(dir / "out").string()}, {"--bounces", "0", "--width", "64", "--height", "48", "--refine-shadows", "0"});
   CHECK_THAT(r.err, Contains("out.ply") && Contains("out.png"));
   CHECK(r.out.empty());
   REQUIRE(fs::exists(dir / "out.ply"));

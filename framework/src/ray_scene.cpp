@@ -288,8 +288,8 @@ void query_triangles_near(RTCScene scene, const Vec3& p, float radius, RTCPointQ
 
 } // namespace
 
-Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& normal_hint) const {
-  ClosestQuery q{&m_scene, &m_face_normals, p, normal_hint, m_epsilon, Hit{}, max_distance * max_distance};
+Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& normal_hint, float tie) const {
+  ClosestQuery q{&m_scene, &m_face_normals, p, normal_hint, tie >= 0.f ? tie : m_epsilon, Hit{}, max_distance * max_distance};
   query_triangles_near(m_rtc_scene, p, max_distance, closest_callback, &q);
   return q.best;
 }

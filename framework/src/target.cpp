@@ -64,8 +64,13 @@ Target bind_target(const std::string& source, const std::vector<Vec3>& positions
   const std::vector<int32_t> vertex = match_vertices(scene, positions, normals);
   const float tolerance = kTargetSurfaceTolerance * scene.diagonal();
   std::vector<Hit> hits(n);
+  // Ties within a float's rounding at the scene's size, not the ray epsilon:
+  // a refined render's vertex lies on its own surface, and a second sheet a
+  // hair away (the Wuson's doubled mid-plane, 4e-6 of the diagonal) must not
+  // win it by a better-agreeing normal.
+  const float tie = 1e-7f * scene.diagonal();
   tbb::parallel_for(size_t(0), n, [&](size_t i) {
-    if (vertex[i] < 0) hits[i] = rays.closest_point(positions[i], tolerance, normals.empty() ? Vec3(0.f) : normals[i]);
+    if (vertex[i] < 0) hits[i] = rays.closest_point(positions[i], tolerance, normals.empty() ? Vec3(0.f) : normals[i], tie);
   });
   size_t off = 0;
   for (size_t i = 0; i < n; ++i) off += vertex[i] < 0 && !hits[i].valid();

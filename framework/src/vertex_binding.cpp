@@ -49,9 +49,11 @@ private:
   std::unordered_map<uint64_t, std::vector<uint32_t>> m_cells;
 };
 
-bool same_in_order(const Scene& scene, const std::vector<Vec3>& positions, float tolerance) {
-  if (positions.size() != scene.positions.size()) return false;
-  for (size_t i = 0; i < positions.size(); ++i)
+/// The file starts with the scene's vertices in order (a render; a refined
+/// render appends its new vertices after them).
+bool starts_in_order(const Scene& scene, const std::vector<Vec3>& positions, float tolerance) {
+  if (positions.size() < scene.positions.size()) return false;
+  for (size_t i = 0; i < scene.positions.size(); ++i)
     if (!(glm::length(positions[i] - scene.positions[i]) <= tolerance)) return false;
   return true;
 }
@@ -64,17 +66,20 @@ std::vector<int32_t> match_vertices(const Scene& scene, const std::vector<Vec3>&
   std::vector<int32_t> vertex(n, -1);
   // A target written by `render` (or kept in vertex order by another tool):
   // point i is vertex i. This also settles split vertices without normals.
-  if (same_in_order(scene, positions, tolerance)) {
-    for (size_t i = 0; i < n; ++i) vertex[i] = int32_t(i);
-    return vertex;
+  // A refined render's vertices after those are new points on the surface
+  // (matched below: none is on a scene vertex but by coincidence).
+  size_t first = 0;
+  if (starts_in_order(scene, positions, tolerance)) {
+    for (; first < scene.positions.size(); ++first) vertex[first] = int32_t(first);
+    if (first == n) return vertex;
   }
   VertexGrid grid(scene, tolerance);
   std::vector<std::vector<uint32_t>> candidates(n);
-  tbb::parallel_for(size_t(0), n, [&](size_t i) { candidates[i] = grid.near(positions[i], tolerance); });
+  tbb::parallel_for(first, n, [&](size_t i) { candidates[i] = grid.near(positions[i], tolerance); });
   // Without a normal, points at one place take that place's vertices in
   // turn, in file order (the k-th point gets the k-th vertex).
   std::unordered_map<uint32_t, size_t> taken;  // first candidate -> points bound so far
-  for (size_t i = 0; i < n; ++i) {
+  for (size_t i = first; i < n; ++i) {
     const auto& c = candidates[i];
     if (c.empty()) continue;
     const Vec3 normal = normals.empty() ? Vec3(0.f) : normals[i];

@@ -44,7 +44,9 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   std::vector<std::string> outputs;
   float max_edge = 0.f, exposure = 0.f;
   int width = 960, height = 720;
-  long long refine_budget = 0;
+  // Off by default: a refined mesh depends on the lights, so two renders of
+  // one scene would no longer add up vertex by vertex (superposition).
+  std::string refine_text = "0";
   RendererOptions ropts;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
   app.add_option("--lights", lights_path, "lights JSON file")->required();
@@ -53,9 +55,21 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--camera", camera_text, "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (default frames the scene)");
   app.add_option("--width", width, "image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
-  app.add_option("--refine-shadows", refine_budget,
-                 "split triangles at shadow and spot edges for .ply outputs, up to this many vertices in all (0: off)")
-      ->check(CLI::Range(0, 50000000));
+  app.add_option("--refine-shadows", refine_text,
+                 "split triangles at shadow and spot edges for .ply outputs, up to this many vertices in all "
+                 "(auto: 4x the scene's; 0: off, the default)")
+      ->check([](const std::string& text) -> std::string {
+        if (text == "auto") return "";
+        long long n = -1;
+        try {
+          size_t used = 0;
+          n = std::stoll(text, &used);
+          if (used != text.size()) n = -1;
+        } catch (const std::exception&) {
+        }
+        return n >= 0 && n <= 50000000 ? "" : "must be auto or a vertex count from 0 to 50000000";
+      })
+      ->capture_default_str();
   app.add_option("--exposure", exposure, "PNG exposure multiplier (default: automatic)")->check(FiniteNonNegative);
   ropts.add_to(app);
   if (auto code = parse_arguments(app, args)) return *code;
@@ -70,7 +84,9 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
 
   auto start = std::chrono::steady_clock::now();
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
-  if (refine_budget > 0) {
+  const bool any_ply = std::any_of(paths.begin(), paths.end(), [](const fs::path& p) { return p.extension() == ".ply"; });
+  const long long refine_budget = refine_text == "auto" ? 4 * (long long)scene->positions.size() : std::stoll(refine_text);
+  if (any_ply && refine_budget > (long long)scene->positions.size()) {
     // The direct light alone decides where shadow and spot edges run.
     RendererOptions direct = ropts;
     direct.bounces = 0;

@@ -96,8 +96,9 @@ public:
   /// The surface point nearest to `p` within `max_distance` (t = distance),
   /// or an invalid Hit.
   /// With a non-zero `normal_hint`, among surfaces equally near (a point on a
-  /// crease touches several) the one whose normal agrees best wins.
-  Hit closest_point(const Vec3& p, float max_distance, const Vec3& normal_hint = Vec3(0.f)) const;
+  /// crease touches several) the one whose normal agrees best wins. "Equally
+  /// near": within `tie`, by default the ray epsilon.
+  Hit closest_point(const Vec3& p, float max_distance, const Vec3& normal_hint = Vec3(0.f), float tie = -1.f) const;
   /// True if `p` is enclosed by geometry that faces away from it: rays in
   /// 14 directions all hit, and most of them hit a back face (so inside a
   /// closed, outward-wound object; inside an inward-wound room is free space).
