@@ -23,7 +23,7 @@ TEST_CASE("light bounds: a closed room has no open side and no space outside", "
   CHECK(same(open_light_bounds(room), room.light_bounds()));
 }
 
-TEST_CASE("light bounds: a product and a stage are open; their open space reaches beyond", "[light-bounds]") {
+TEST_CASE("light bounds: a product and a stage are open, their open space reaches beyond", "[light-bounds]") {
   const Scene product = finish_scene(builders::product_on_turntable().scene, {});
   for (float open : side_openness(product)) CHECK(open >= kOpenSide);
   const Bounds b = open_light_bounds(product);

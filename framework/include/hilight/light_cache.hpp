@@ -35,8 +35,6 @@ public:
 
   size_t node_count() const { return m_node_valid.size(); }
   size_t valid_node_count() const;
-  glm::ivec3 dims() const { return m_dims; }
-  size_t bytes() const { return m_data.size() * sizeof(Rgb); }
 
 private:
   friend class LightCacheView;

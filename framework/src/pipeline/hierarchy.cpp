@@ -113,7 +113,6 @@ LightHierarchy LightHierarchy::build(ResponseModel& model, const Lighting& leave
     if (best_k == 0) merged.position = h.m_nodes[ia].position, merged.phi = h.m_nodes[ia].phi;
     else if (best_k == 1) merged.position = h.m_nodes[ib].position, merged.phi = h.m_nodes[ib].phi;
     else merged.position = weighted_pos[best_p], merged.phi = weighted_phi.at(pairs[best_p]);
-    merged.difference_after = std::sqrt(cost[best_p][best_k]);
     subtract(h.m_nodes[ia].phi, h.m_nodes[ia].intensity, -1.0);
     subtract(h.m_nodes[ib].phi, h.m_nodes[ib].intensity, -1.0);
     subtract(merged.phi, merged.intensity, 1.0);

@@ -32,7 +32,6 @@ struct Cluster {
   Rgb intensity;
   std::vector<Rgb> phi;  ///< unit response at the samples
   int left = -1, right = -1;  ///< children (-1: a leaf)
-  double difference_after = 0.0;  ///< ‖Ψ − I‖ right after this merge (internal nodes)
 };
 
 class LightHierarchy {
