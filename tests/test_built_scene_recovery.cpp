@@ -57,7 +57,7 @@ Outcome recovery_trials(builders::BuiltScene (*make)(), uint64_t first_seed, siz
   auto rays = std::make_shared<const RayScene>(*scene);
   const auto settings = reference_renderer_settings({}, 1);
   auto reference = test::make_renderer("embree", scene, settings);
-  auto fast = test::make_renderer("embree", scene, fast_renderer_settings("embree", settings));
+  auto fast = test::make_renderer("embree", scene, fast_renderer_settings(test::registry().renderer_traits("embree"), settings));
   auto sampler = test::registry().create_sampler("importance", {});
   auto optimizer = test::registry().create_optimizer("varpro", {});
   const auto dir = test::output_dir("built_recovery_" + built.name);

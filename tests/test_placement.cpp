@@ -41,7 +41,7 @@ PatchSolve floor_patch() {
 }
 
 Lighting solve(const PatchSolve& p, PlacementRules rules, SolveReport& report) {
-  auto renderer = test::make_renderer("embree", p.scene, fast_renderer_settings("embree", {}));
+  auto renderer = test::make_renderer("embree", p.scene, fast_renderer_settings(test::registry().renderer_traits("embree"), {}));
   auto reference = test::make_renderer("embree", p.scene, reference_renderer_settings({}, 1));
   auto sampler = test::registry().create_sampler("importance", {});
   auto optimizer = test::registry().create_optimizer("varpro", {});

@@ -63,7 +63,7 @@ TEST_CASE("regions: region:K and not-region:K hold in every result", "[regions][
   REQUIRE(left >= 0);
   REQUIRE(right >= 0);
   auto reference = test::make_renderer("embree", scene, reference_renderer_settings({}, 1));
-  auto fast = test::make_renderer("embree", scene, fast_renderer_settings("embree", {}));
+  auto fast = test::make_renderer("embree", scene, fast_renderer_settings(test::registry().renderer_traits("embree"), {}));
   const Lighting truth = {Light::point({1.4f, 2.5f, 1.8f}, Rgb(2.f)), Light::point({4.4f, 2.4f, 2.3f}, Rgb(1.5f, 1.8f, 2.f))};
   const std::vector<Rgb> values = reference->illuminate(SurfacePoints::from_vertices(*scene), truth);
   const Target target = bind_target("two rooms", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);

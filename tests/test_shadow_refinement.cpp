@@ -201,7 +201,7 @@ TEST_CASE("a refined render of real curved models is a fixed point of the solve"
                           test::make_renderer("embree", refined.scene, settings)->illuminate(SurfacePoints::from_vertices(*refined.scene), truth));
     const Target target = read_target(dir / "target.ply", *scene, *rays);
     auto reference = test::make_renderer("embree", scene, settings);
-    auto fast = test::make_renderer("embree", scene, fast_renderer_settings("embree", settings));
+    auto fast = test::make_renderer("embree", scene, fast_renderer_settings(test::registry().renderer_traits("embree"), settings));
     auto sampler = test::registry().create_sampler("importance", {});
     auto optimizer = test::registry().create_optimizer("varpro", {});
     SolveSettings s;

@@ -70,7 +70,7 @@ std::unique_ptr<SolveRig> rig(const RealCase& c, const std::string& renderer, in
   auto r = std::make_unique<SolveRig>();
   const auto settings = reference_renderer_settings({"bounces=" + std::to_string(bounces)}, 1);
   r->reference = test::make_renderer(renderer, c.scene, settings);
-  r->fast = test::make_renderer(renderer, c.scene, fast_renderer_settings(renderer, settings));
+  r->fast = test::make_renderer(renderer, c.scene, fast_renderer_settings(test::registry().renderer_traits(renderer), settings));
   r->sampler = test::registry().create_sampler("importance", {});
   r->optimizer = test::registry().create_optimizer("varpro", {});
   // Its own folder per process: ctest runs the fixed-point cases side by side.
@@ -239,7 +239,7 @@ TEST_CASE("the light cache's bounce under ceiling lamps: its error, and what anc
   // between grid nodes. Anchored: the refinement's view, the cache corrected
   // by the exact bounce at the lamp, moved 2 cm away.
   const RealCase c = room_case(21);
-  auto fast = test::make_renderer("embree", c.scene, fast_renderer_settings("embree", reference_renderer_settings({}, 1)));
+  auto fast = test::make_renderer("embree", c.scene, fast_renderer_settings(test::registry().renderer_traits("embree"), reference_renderer_settings({}, 1)));
   const LightCache cache = LightCache::build(*c.scene, *c.rays, *fast, {});
   const Target target = bind_target("vertices", c.scene->positions, std::vector<Rgb>(c.scene->positions.size(), Rgb(1.f)),
                                     std::vector<float>(c.scene->positions.size(), 1.f), *c.scene, *c.rays, c.scene->normals);

@@ -114,7 +114,7 @@ TEST_CASE("spot dev", "[.][spot-dev]") {
 
 TEST_CASE("spot dev bounce", "[.][spot-dev2]") {
   Stage stage;
-  auto fast = test::make_renderer("embree", stage.scene, fast_renderer_settings("embree", reference_renderer_settings({}, 1)));
+  auto fast = test::make_renderer("embree", stage.scene, fast_renderer_settings(test::registry().renderer_traits("embree"), reference_renderer_settings({}, 1)));
   const Lighting truth = {Light::spot(Vec3(1.86075f, 4.23514f, -0.936643f), glm::normalize(Vec3(-0.156695f, -0.905046f, 0.395397f)), 12.3772f, Rgb(19.8f), 3.3261f),
                           Light::spot(Vec3(-0.3f, 4.7f, -0.3f), glm::normalize(Vec3(0.4f, -0.9f, -0.2f)), 24.f, Rgb(60.f), 4.f),
                           Light::spot(Vec3(1.5f, 4.6f, -0.7f), glm::normalize(Vec3(-0.73f, -0.68f, 0.04f)), 20.f, Rgb(100.f, 90.f, 80.f), 4.f)};

@@ -20,6 +20,11 @@ void PluginRegistrar::renderer(RendererFactory create, ProbeFunction probe, Prob
   m_record.detail = std::move(detail);
 }
 
+void PluginRegistrar::renderer_traits(RendererTraits traits) {
+  if (m_record.kind != "renderer") throw std::logic_error("module " + m_record.name + " declares renderer traits but says it is a " + m_record.kind);
+  m_record.renderer_traits = std::move(traits);
+}
+
 void PluginRegistrar::frontend(FrontendFactory create) {
   if (m_record.kind != "frontend") throw std::logic_error("module " + m_record.name + " registers a frontend but says it is a " + m_record.kind);
   m_record.create_frontend = std::move(create);
@@ -133,6 +138,8 @@ std::string Registry::renderer_unavailable_reason(const std::string& name) const
   const ModuleRecord& m = require("renderer", name);
   return m.probe ? m.probe() : std::string();
 }
+
+const RendererTraits& Registry::renderer_traits(const std::string& name) const { return require("renderer", name).renderer_traits; }
 
 std::unique_ptr<Renderer> Registry::create_renderer(const std::string& name, const Properties& properties) const {
   const ModuleRecord& m = require("renderer", name);

@@ -29,11 +29,20 @@ void RendererOptions::add_to(CLI::App& app) {
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
 }
 
+std::vector<std::string> RendererOptions::assignments() const {
+  std::vector<std::string> out;
+  for (const auto& kv : settings) {
+    const std::string key = kv.substr(0, kv.find('='));
+    if (key != "bounces" && !(key == "bounce_samples" && bounce_samples > 0)) out.push_back(kv);
+  }
+  out.push_back("bounces=" + std::to_string(bounces));
+  if (bounce_samples > 0) out.push_back("bounce_samples=" + std::to_string(bounce_samples));
+  return out;
+}
+
 std::unique_ptr<Renderer> RendererOptions::create(const Registry& registry, std::shared_ptr<const Scene> scene) const {
   set_thread_limit(threads);
-  Properties props = Properties::from_assignments(settings);
-  props.set("bounces", std::to_string(bounces));
-  if (bounce_samples > 0) props.set("bounce_samples", std::to_string(bounce_samples));
+  const Properties props = Properties::from_assignments(assignments());
   auto renderer = registry.create_renderer(name, props);
   renderer->set_scene(std::move(scene));
   return renderer;

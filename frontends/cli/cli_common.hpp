@@ -19,13 +19,15 @@ using hilight::parse_arguments;
 
 /// Renderer choice and its settings, as every rendering command takes them.
 struct RendererOptions {
-  std::string name = "embree";
+  std::string name = PluginDefaults::renderer;
   int bounces = 1;
   int bounce_samples = 0;  ///< 0: the renderer's default
   std::vector<std::string> settings;  ///< --set key=value, passed through
   int threads = 0;
 
   void add_to(CLI::App& app);
+  /// --set's settings with --bounces and --bounce-samples (which win).
+  std::vector<std::string> assignments() const;
   /// Creates and binds the renderer; InputError for unknown/unavailable ones.
   std::unique_ptr<Renderer> create(const Registry& registry, std::shared_ptr<const Scene> scene) const;
 };

@@ -66,7 +66,7 @@ int run_bench(const std::vector<std::string>& args, Registry& registry) {
     return run_bench_renderers(std::vector<std::string>(args.begin() + 1, args.end()), registry);
   if (!args.empty() && args[0] == "render") return run_bench(std::vector<std::string>(args.begin() + 1, args.end()), registry);
   CLI::App app("Measure renderer throughput; prints one JSON object per line (hilight bench solve: the inverse solve; hilight bench renderers: renderers side by side)", "bench");
-  std::string renderer_name = "embree";
+  std::string renderer_name = PluginDefaults::renderer;
   int min_triangles = 100000, light_count = 32, repeat = 5, bounce_points = 2000, threads = 0;
   app.add_option("--renderer", renderer_name, "renderer plugin")->capture_default_str();
   app.add_option("--triangles", min_triangles, "minimum triangles of the benchmark scene")->check(CLI::Range(1000, 20000000))->capture_default_str();

@@ -4,11 +4,10 @@
 // medians over --repeat runs, all in one process so the figures compare.
 #include "cli_common.hpp"
 #include "commands.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
 #include "hilight/built_scenes.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/light_cache_store.hpp"
-#include "hilight/pipeline/solver.hpp"
+#include "hilight/pipeline/solve_session.hpp"
 #include "hilight/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
@@ -37,15 +36,18 @@ double mean_position_error(const Lighting& truth, const Lighting& found) {
 }
 
 /// Seconds of a solve that builds the light cache (the folder emptied first).
-double cold_solve_seconds(const std::shared_ptr<const Scene>& scene, const std::shared_ptr<const RayScene>& rays, Renderer& renderer,
-                          Renderer& reference, Sampler& sampler, Optimizer& optimizer, const Target& target,
-                          const std::string& cache_root) {
+/// The solve as `hilight solve` assembles it, its light cache kept in `cache_root`.
+SolveSpec bench_spec(const std::string& cache_root, const std::string& optimizer = PluginDefaults::optimizer) {
+  SolveSpec spec;
+  spec.optimizer = optimizer;
+  spec.settings.cache_dir = cache_root;
+  return spec;
+}
+
+double cold_solve_seconds(const SolveSession& session, const Target& target, const std::string& cache_root) {
   std::filesystem::remove_all(cache_root);
-  SolveSettings settings;
-  settings.cache_dir = cache_root;
-  Solver solver(scene, rays, renderer, reference, sampler, optimizer, settings);
   SolveReport report;
-  solver.solve(target, report);
+  session.make_solver()->solve(target, report);
   return report.seconds["total"];
 }
 
@@ -59,30 +61,20 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
   builders::RandomLightRules rules;
   rules.min_count = rules.max_count = lights;
   const Lighting truth = builders::random_lights(built, *rays, rng, rules);
-  auto reference = registry.create_renderer("embree", {});
-  reference->set_scene(scene);
-  const std::vector<Rgb> values = reference->illuminate(SurfacePoints::from_vertices(*scene), truth);
+  SolveSession session(registry, bench_spec(cache_root), scene, rays);
+  const std::vector<Rgb> values = session.reference().illuminate(SurfacePoints::from_vertices(*scene), truth);
   const Target target = bind_target("bench", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
-  // The solve's fast twin exactly as `hilight solve` sets it up.
-  const Properties solve_props = Properties::from_assignments(fast_renderer_settings("embree", {}));
-  auto renderer = registry.create_renderer("embree", solve_props);
-  renderer->set_scene(scene);
-  auto sampler = registry.create_sampler("importance", {});
-  auto optimizer = registry.create_optimizer("varpro", {});
   std::vector<double> cold, warm, dbar, pos_err;
   std::map<std::string, std::vector<double>> stages;
   size_t found_count = 0;
   double cache_mb = 0;
   for (int r = 0; r < repeat; ++r) {
-    cold.push_back(cold_solve_seconds(scene, rays, *renderer, *reference, *sampler, *optimizer, target, cache_root));
-    SolveSettings settings;
-    settings.cache_dir = cache_root;
+    cold.push_back(cold_solve_seconds(session, target, cache_root));
     uint64_t bytes = 0;
     for (const auto& f : list_cache(cache_root)) bytes += f.bytes;
     cache_mb = double(bytes) / (1024.0 * 1024.0);
-    Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);
     SolveReport report;
-    const Lighting found = solver.solve(target, report);
+    const Lighting found = session.make_solver()->solve(target, report);  // a new Solver: the cache from disk
     warm.push_back(report.seconds["total"]);
     for (const auto& [stage, seconds] : report.seconds) stages[stage].push_back(seconds);
     dbar.push_back(report.dbar);
@@ -132,43 +124,32 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   auto rays = std::make_shared<const RayScene>(*scene);
   const Lighting truth = {Light::point({1.5f, 2.5f, 1.1f}, Rgb(2.f)), Light::point({4.6f, 2.4f, 1.4f}, Rgb(2.f, 1.9f, 1.7f)),
                           Light::point({2.3f, 1.6f, 3.9f}, Rgb(1.6f, 1.7f, 2.f)), Light::point({4.8f, 2.2f, 3.8f}, Rgb(1.8f))};
-  // The target comes from the reference settings (exact bounce), the solve
-  // from its own fast settings: the figures include that model difference.
-  Properties reference_props;
-  auto reference = registry.create_renderer("embree", reference_props);
-  reference->set_scene(scene);
-  std::vector<Rgb> values = reference->illuminate(SurfacePoints::from_vertices(*scene), truth);
+  // The target comes from the solve's reference renderer, as `hilight
+  // render` would make it; the solve evaluates with its fast twin.
+  std::vector<Rgb> values = SolveSession(registry, bench_spec(cache_root), scene, rays).reference().illuminate(SurfacePoints::from_vertices(*scene), truth);
   Target target = bind_target("bench", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
   // A small edit for fine-tune: 10% brighter on the floor's left half.
   Target edited = target;
   for (size_t i = 0; i < edited.size(); ++i)
     if (edited.points.positions[i].y < 0.01f && edited.points.positions[i].x < 3.f) edited.value[i] *= 1.1f;
 
-  auto sampler = registry.create_sampler("importance", {});
-  // The solve's fast twin exactly as `hilight solve` sets it up.
-  const Properties solve_props = Properties::from_assignments(fast_renderer_settings("embree", {}));
-  auto renderer = registry.create_renderer("embree", solve_props);
-  renderer->set_scene(scene);
-
   for (const auto& name : optimizers) {
-    auto optimizer = registry.create_optimizer(name, {});
+    SolveSession session(registry, bench_spec(cache_root, name), scene, rays);
     std::vector<double> cold, warm, fine, dbar, pos_err;
     std::map<std::string, std::vector<double>> stages;
     size_t count = 0;
     for (int r = 0; r < repeat; ++r) {
-      cold.push_back(cold_solve_seconds(scene, rays, *renderer, *reference, *sampler, *optimizer, target, cache_root));
-      SolveSettings settings;
-      settings.cache_dir = cache_root;
-      Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);  // new session: cache from disk
+      cold.push_back(cold_solve_seconds(session, target, cache_root));
+      const auto solver = session.make_solver();  // a new Solver: the cache from disk
       SolveReport report;
-      Lighting found = solver.solve(target, report);
+      Lighting found = solver->solve(target, report);
       warm.push_back(report.seconds["total"]);
       for (const auto& [stage, s] : report.seconds) stages[stage].push_back(s);
       dbar.push_back(report.dbar);
       pos_err.push_back(mean_position_error(truth, found) / scene->diagonal());
       count = found.size();
       SolveReport tune;
-      solver.fine_tune(edited, found, tune);
+      solver->fine_tune(edited, found, tune);
       fine.push_back(tune.seconds["total"]);
     }
     nlohmann::json j = {{"figure", "solve"}, {"optimizer", name}, {"vertices", scene->positions.size()},
@@ -182,12 +163,10 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   }
   // Does the light cache pay? The same solve with every φ from the renderer.
   if (!no_cache_figure) {
-    auto optimizer = registry.create_optimizer(optimizers.front(), {});
-    SolveSettings settings;
-    settings.use_cache = false;
-    Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, settings);
+    SolveSpec spec = bench_spec(cache_root, optimizers.front());
+    spec.settings.use_cache = false;
     SolveReport report;
-    Lighting found = solver.solve(target, report);
+    Lighting found = SolveSession(registry, spec, scene, rays).make_solver()->solve(target, report);
     nlohmann::json j = {{"figure", "solve_without_cache"}, {"optimizer", optimizers.front()}, {"found_lights", found.size()},
                         {"dbar", report.dbar}, {"position_error_over_diagonal", mean_position_error(truth, found) / scene->diagonal()},
                         {"seconds", report.seconds["total"]}, {"stage_seconds", report.seconds}};

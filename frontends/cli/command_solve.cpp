@@ -5,8 +5,7 @@
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/light_cache_store.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
-#include "hilight/pipeline/solver.hpp"
+#include "hilight/pipeline/solve_session.hpp"
 #include "hilight/threads.hpp"
 
 #include <algorithm>
@@ -62,23 +61,22 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
 
 int run_solve(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Find the lights that produce a target illumination", "solve");
-  std::string scene_path, target_path, output, report_path, optimizer_name = "varpro", initial_path, mode = "solve",
-                                                                      hints_path, cache_dir;
-  std::vector<std::string> optimizer_settings, place_rules;
-  std::string sampler_name = "importance";
+  std::string scene_path, target_path, output, report_path, initial_path, mode = "solve", hints_path, cache_dir;
+  std::vector<std::string> place_rules;
+  SolveSpec spec;
   float max_edge = 0.f;
   bool no_cache = false, quiet = false;
   double max_dbar = -1;
   unsigned long long seed = 1;
-  SolveSettings s;
+  SolveSettings& s = spec.settings;
   RendererOptions ropts;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
   app.add_option("--target", target_path, "target PLY: x y z red green blue [weight]")->required();
   app.add_option("-o,--output", output, "lights JSON to write")->required();
   app.add_option("--report", report_path, "write a JSON report (D̄, cuts, timings) here");
-  app.add_option("--optimizer", optimizer_name, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
-  app.add_option("--sampler", sampler_name, "surface sampling plugin (importance, uniform)")->capture_default_str();
-  app.add_option("--opt", optimizer_settings, "optimizer setting key=value (repeatable)");
+  app.add_option("--optimizer", spec.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
+  app.add_option("--sampler", spec.sampler, "surface sampling plugin (importance, uniform)")->capture_default_str();
+  app.add_option("--opt", spec.optimizer_settings, "optimizer setting key=value (repeatable)");
   app.add_option("--lights", s.fixed_count, "fix the number of point lights (default: automatic)")->check(CLI::Range(1, 10000));
   app.add_option("--initial", initial_path, "lights to start from (with --mode)");
   app.add_option("--mode", mode, "solve | fine-tune (re-optimize --initial) | add (append lights for what --initial misses)")
@@ -132,36 +130,32 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       h.intensity = Rgb(1.f);
     }
   }
-  registry.renderer_unavailable_reason(ropts.name);  // throws for an unknown renderer, before the scene loads
-  auto optimizer = registry.create_optimizer(optimizer_name, Properties::from_assignments(optimizer_settings));
-  auto sampler = registry.create_sampler(sampler_name, {});
+  spec.renderer = ropts.name;
+  spec.renderer_settings = ropts.assignments();
+  SolveSession::check_names(registry, spec);  // unknown plugins fail before the scene loads
 
   const bool progress = !quiet && ::isatty(2);
+  set_thread_limit(ropts.threads);
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
   auto rays = std::make_shared<const RayScene>(*scene);
-  // D̄ is measured with the renderer as the user set it up (as `hilight
-  // render` would use it); the solve itself evaluates thousands of light
-  // positions with the renderer's fast twin (pipeline/solve_renderers.hpp).
-  ropts.settings = reference_renderer_settings(ropts.settings, seed);
-  auto reference = ropts.create(registry, scene);
-  ropts.settings = fast_renderer_settings(ropts.name, ropts.settings);
-  auto renderer = ropts.create(registry, scene);
   Target target = read_target(target_path, *scene, *rays);
   s.seed = seed;
   s.use_cache = !no_cache;
   s.cache_dir = no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
   s.cache_cap_bytes = default_cache_cap_bytes();
 
-  Solver solver(scene, rays, *renderer, *reference, *sampler, *optimizer, s, [&](const std::string& stage) {
+  SolveSession session(registry, spec, scene, rays);
+  const auto solver_owned = session.make_solver([&](const std::string& stage) {
     if (progress) std::fprintf(stderr, "hilight: %s...\n", stage.c_str());
   });
+  Solver& solver = *solver_owned;
   SolveReport report;
   Lighting lights = mode == "fine-tune" ? solver.fine_tune(target, initial, report)
                     : mode == "add"     ? solver.add_lights(target, initial, report)
                                         : solver.solve(target, report);
   write_lights_json(output, lights);
   if (!report_path.empty()) {
-    std::string text = report_json(report, ropts.name, optimizer_name, sampler_name, mode).dump(2) + "\n";
+    std::string text = report_json(report, spec.renderer, spec.optimizer, spec.sampler, mode).dump(2) + "\n";
     write_atomically(report_path, [&](const std::filesystem::path& temp) {
       std::ofstream out(temp, std::ios::binary);
       out << text;

@@ -60,11 +60,11 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--optimizer", o.job.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
   app.add_option("--opt", o.job.optimizer_settings, "optimizer setting key=value (repeatable)");
   app.add_option("--sampler", o.job.sampler, "surface sampling plugin")->capture_default_str();
-  app.add_option("--samples", o.job.solve.samples, "surface samples used by the solve (default: target points / 14, within 3000-10000)")
+  app.add_option("--samples", o.job.settings.samples, "surface samples used by the solve (default: target points / 14, within 3000-10000)")
       ->check(CLI::Range(10, 10000000));
   // D̄ is only reported after a fine-tune; on fewer points it costs less of the stroke's latency.
-  o.job.solve.evaluation_points = 256;
-  app.add_option("--evaluation-points", o.job.solve.evaluation_points, "target points D-bar is reported on (0: all)")
+  o.job.settings.evaluation_points = 256;
+  app.add_option("--evaluation-points", o.job.settings.evaluation_points, "target points D-bar is reported on (0: all)")
       ->check(CLI::Range(0, 100000000))
       ->capture_default_str();
   std::vector<std::string> place_rules;
@@ -73,7 +73,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
                  "exclude:X0,Y0,Z0,X1,Y1,Z1 (as hilight solve)");
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
   app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
-  app.add_option("--cache-cells", o.job.solve.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")
+  app.add_option("--cache-cells", o.job.settings.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")
       ->check(CLI::Range(1, 24))
       ->capture_default_str();
   app.add_option("--script", script, "session JSON to replay ({\"actions\": [...]}, docs/painter.md)");
@@ -104,10 +104,10 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   o.auto_fine_tune = !no_auto;
   o.job.renderer_settings.push_back("bounces=" + std::to_string(bounces));
   if (bounce_samples > 0) o.job.renderer_settings.push_back("bounce_samples=" + std::to_string(bounce_samples));
-  for (const auto& rule : place_rules) o.job.solve.placement.add(rule);
-  o.job.solve.use_cache = !no_cache;
-  o.job.solve.cache_dir = no_cache ? std::filesystem::path() : cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir);
-  o.job.solve.cache_cap_bytes = default_cache_cap_bytes();
+  for (const auto& rule : place_rules) o.job.settings.placement.add(rule);
+  o.job.settings.use_cache = !no_cache;
+  o.job.settings.cache_dir = no_cache ? std::filesystem::path() : cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir);
+  o.job.settings.cache_cap_bytes = default_cache_cap_bytes();
   if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty() && window_screenshot.empty())
     throw InputError("paint: --exit without --script, --screenshot or --bench would do nothing");
   set_thread_limit(threads);

@@ -2,7 +2,6 @@
 
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
 #include "ui/gl.hpp"
 #include "ui/light_markers.hpp"
 #include "ui/screenshot.hpp"
@@ -20,26 +19,12 @@ namespace {
 
 /// The display renderers, quick to exact. The exact one is the solve job's
 /// reference (same renderer, settings and seed), so the result view shows
-/// what the solve measures; for Embree with the bounce, a quick stage with
-/// few gather rays and interpolated direct light comes first (a stroke's
-/// fine-tune shows in a fraction of the exact render's time).
-std::vector<std::unique_ptr<Renderer>> display_renderers(const Registry& registry, const SolveJob& job,
-                                                         const std::shared_ptr<const Scene>& scene) {
-  const SolveJobOptions& options = job.options();
-  bool direct_only = false, user_bounce = false;
-  for (const auto& kv : options.renderer_settings) {
-    direct_only |= kv == "bounces=0";
-    user_bounce |= kv.rfind("bounce_samples=", 0) == 0 || kv.rfind("bounce_direct=", 0) == 0;
-  }
+/// what the solve measures; where the renderer declares a preview (Embree:
+/// 16 gather rays, interpolated direct light), a quick stage comes first (a
+/// stroke's fine-tune shows in a fraction of the exact render's time).
+std::vector<std::unique_ptr<Renderer>> display_renderers(const SolveJob& job) {
   std::vector<std::unique_ptr<Renderer>> stages;
-  if (options.renderer == "embree" && !direct_only && !user_bounce) {
-    // The solve's fast twin (seed, interpolated direct light), with fewer gather rays.
-    Properties quick = Properties::from_assignments(
-        fast_renderer_settings(options.renderer, reference_renderer_settings(options.renderer_settings, options.solve.seed)));
-    quick.set("bounce_samples", "16");
-    stages.push_back(registry.create_renderer(options.renderer, quick));
-    stages.back()->set_scene(scene);
-  }
+  if (const auto quick = job.session().preview_settings(); !quick.empty()) stages.push_back(job.session().make_renderer(quick));
   stages.push_back(job.make_renderer());
   return stages;
 }
@@ -63,8 +48,8 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_preview = preview_radiance(*m_scene, m_scene->vertex_albedo());
   m_document = std::make_unique<Document>(m_scene, m_rays);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
-  std::snprintf(m_place_text, sizeof(m_place_text), "%s", m_options.job.solve.placement.describe().c_str());
-  auto renderers = display_renderers(registry, *m_job, m_scene);
+  std::snprintf(m_place_text, sizeof(m_place_text), "%s", m_options.job.settings.placement.describe().c_str());
+  auto renderers = display_renderers(*m_job);
   if (!m_options.no_record || !m_options.record.empty()) {
     const bool interactive = !m_options.exit_after_script;
     if (!m_options.record.empty()) m_record_path = m_options.record;

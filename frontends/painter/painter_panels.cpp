@@ -216,7 +216,7 @@ void PainterApp::panel_solve() {
 
 void PainterApp::panel_placement() {
   if (!ImGui::CollapsingHeader("Placement")) return;
-  const std::string now = m_job->options().solve.placement.describe();
+  const std::string now = m_job->options().settings.placement.describe();
   ImGui::SetNextItemWidth(300);
   ImGui::InputTextWithHint("##place", "ceiling:0.2 height:1:2.5 count:1:4", m_place_text, sizeof(m_place_text));
   tip("Where the next solves may put lights, as hilight solve --place: ceiling[:OFFSET], height:MIN:MAX, "

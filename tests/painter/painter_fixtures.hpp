@@ -36,8 +36,8 @@ inline World floor_with_boxes(const std::vector<std::pair<Vec3, Vec3>>& boxes, f
 inline painter::SolveJobOptions quick_options() {
   painter::SolveJobOptions o;
   o.renderer_settings = {"bounce_samples=16"};
-  o.solve.samples = 800;
-  o.solve.cache.cells_along_longest_axis = 6;
+  o.settings.samples = 800;
+  o.settings.cache.cells_along_longest_axis = 6;
   return o;
 }
 

@@ -22,6 +22,26 @@ using FrontendFactory = std::function<std::unique_ptr<Frontend>()>;
 using OptimizerFactory = std::function<std::unique_ptr<Optimizer>(const Properties&)>;
 using SamplerFactory = std::function<std::unique_ptr<Sampler>(const Properties&)>;
 
+/// The plugins a solve uses when the user names none: the one place in the
+/// framework that names a backend, an optimizer or a sampler.
+struct PluginDefaults {
+  static constexpr const char* renderer = "embree";
+  static constexpr const char* optimizer = "varpro";
+  static constexpr const char* sampler = "importance";
+};
+
+/// What a renderer declares about itself at registration, so that the core
+/// asks it rather than testing its name. Settings are `key=value`; each one
+/// applies unless the caller set that key.
+struct RendererTraits {
+  /// The solve's fast twin, which evaluates thousands of light positions
+  /// (the reference, as the user set it up, measures D̄ and polishes).
+  std::vector<std::string> fast_twin;
+  /// On top of the fast twin: a quick preview for interactive display (the
+  /// painter shows it before the exact render). Empty: no preview stage.
+  std::vector<std::string> preview;
+};
+
 struct ModuleRecord {
   std::filesystem::path path;
   std::string kind, name, version, description;
@@ -31,6 +51,7 @@ struct ModuleRecord {
   RendererFactory create_renderer;
   ProbeFunction probe;
   ProbeFunction detail;  ///< extra status text when available (may be empty)
+  RendererTraits renderer_traits;
   FrontendFactory create_frontend;
   OptimizerFactory create_optimizer;
   SamplerFactory create_sampler;
@@ -42,6 +63,8 @@ public:
   explicit PluginRegistrar(ModuleRecord& record) : m_record(record) {}
   /// `detail` (optional) says more for `hilight plugins`, e.g. which device a renderer uses.
   void renderer(RendererFactory create, ProbeFunction probe = {}, ProbeFunction detail = {});
+  /// Declares the renderer's fast twin and preview settings (RendererTraits).
+  void renderer_traits(RendererTraits traits);
   void frontend(FrontendFactory create);
   void optimizer(OptimizerFactory create);
   void sampler(SamplerFactory create);
@@ -67,6 +90,8 @@ public:
 
   /// Why the renderer cannot run here ("" if it can); throws on an unknown name.
   std::string renderer_unavailable_reason(const std::string& name) const;
+  /// What the renderer declared about itself; InputError for an unknown one.
+  const RendererTraits& renderer_traits(const std::string& name) const;
   /// Creates a renderer; InputError for an unknown or unavailable one, or an
   /// option it did not read.
   std::unique_ptr<Renderer> create_renderer(const std::string& name, const Properties& properties) const;

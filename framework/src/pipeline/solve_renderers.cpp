@@ -6,8 +6,10 @@ namespace hilight {
 
 namespace {
 
+std::string key_of(const std::string& kv) { return kv.substr(0, kv.find('=')); }
+
 bool has_setting(const std::vector<std::string>& settings, const std::string& key) {
-  return std::any_of(settings.begin(), settings.end(), [&](const std::string& kv) { return kv.rfind(key + "=", 0) == 0; });
+  return std::any_of(settings.begin(), settings.end(), [&](const std::string& kv) { return key_of(kv) == key; });
 }
 
 } // namespace
@@ -18,17 +20,15 @@ std::vector<std::string> reference_renderer_settings(std::vector<std::string> se
   return settings;
 }
 
-std::vector<std::string> fast_renderer_settings(const std::string& renderer, std::vector<std::string> settings) {
-  if (renderer == "embree" && !has_setting(settings, "bounce_direct")) settings.push_back("bounce_direct=vertex");
-  // Hot patches cost the vertex mode 1.6x per light even with one shadow ray
-  // for all of them (and a cold start 1.6x); the fast twin's fireflies are
-  // the reference polish's to remove, so it gathers alone.
-  if (renderer == "embree" && !has_setting(settings, "hot_spots")) settings.push_back("hot_spots=off");
-  if (renderer == "ism-vulkan") {
-    std::erase_if(settings, [](const std::string& kv) { return kv.rfind("vpls=", 0) == 0; });
-    settings.push_back("vpls=64");
-  }
+std::vector<std::string> with_defaults(std::vector<std::string> settings, const std::vector<std::string>& defaults) {
+  const std::vector<std::string> chosen = settings;
+  for (const auto& kv : defaults)
+    if (!has_setting(chosen, key_of(kv))) settings.push_back(kv);
   return settings;
+}
+
+std::vector<std::string> fast_renderer_settings(const RendererTraits& traits, std::vector<std::string> reference_settings) {
+  return with_defaults(std::move(reference_settings), traits.fast_twin);
 }
 
 } // namespace hilight

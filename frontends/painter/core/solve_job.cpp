@@ -2,7 +2,6 @@
 
 #include "core/cancellable_renderer.hpp"
 #include "hilight/error.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
 
 #include <stdexcept>
 
@@ -30,17 +29,11 @@ Lighting hint_shapes(Lighting hints) {
 SolveJob::SolveJob(const Registry& registry, std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays,
                    SolveJobOptions options)
     : m_registry(registry), m_scene(std::move(scene)), m_rays(std::move(rays)), m_options(std::move(options)) {
-  // As `hilight solve` does (hilight/pipeline/solve_renderers.hpp).
-  m_reference_settings = reference_renderer_settings(m_options.renderer_settings, m_options.solve.seed);
-  m_reference = make_renderer();
-  m_fast = registry.create_renderer(m_options.renderer,
-                                    Properties::from_assignments(fast_renderer_settings(m_options.renderer, m_reference_settings)));
-  m_fast->set_scene(m_scene);
-  m_fast_guarded = std::make_unique<CancellableRenderer>(*m_fast, m_cancel);
-  m_reference_guarded = std::make_unique<CancellableRenderer>(*m_reference, m_cancel);
-  m_sampler = registry.create_sampler(m_options.sampler, {});
-  m_optimizer = registry.create_optimizer(m_options.optimizer, Properties::from_assignments(m_options.optimizer_settings));
-  m_options.solve.spot_hints.clear();
+  m_options.settings.spot_hints.clear();
+  // As `hilight solve` assembles it; the Solver's renderers throw on cancel.
+  m_session = std::make_unique<SolveSession>(registry, m_options, m_scene, m_rays, [this](Renderer& inner) -> std::unique_ptr<Renderer> {
+    return std::make_unique<CancellableRenderer>(inner, m_cancel);
+  });
 }
 
 SolveJob::~SolveJob() {
@@ -50,14 +43,13 @@ SolveJob::~SolveJob() {
 
 Solver& SolveJob::solver_for(const Lighting& spot_hints) {
   if (!m_solver || hint_shapes(spot_hints) != m_solver_hints) {
-    SolveSettings settings = m_options.solve;
+    SolveSettings settings = m_options.settings;
     settings.spot_hints = hint_shapes(spot_hints);
-    m_solver = std::make_unique<Solver>(m_scene, m_rays, *m_fast_guarded, *m_reference_guarded, *m_sampler, *m_optimizer, settings,
-                                        [this](const std::string& stage) {
-                                          if (m_cancel) throw SolveCancelled();
-                                          std::lock_guard<std::mutex> lock(m_mutex);
-                                          m_progress = stage;
-                                        });
+    m_solver = m_session->make_solver(settings, [this](const std::string& stage) {
+      if (m_cancel) throw SolveCancelled();
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_progress = stage;
+    });
     m_solver_hints = settings.spot_hints;
     m_cuts_valid = false;
   }
@@ -161,7 +153,7 @@ size_t SolveJob::cut_count() const {
 
 void SolveJob::set_placement(PlacementRules rules) {
   if (m_busy) throw std::logic_error("SolveJob::set_placement while busy");
-  m_options.solve.placement = std::move(rules);
+  m_options.settings.placement = std::move(rules);
   m_solver.reset();  // the next job makes a Solver with the new rules
   m_cuts_valid = false;
 }
@@ -176,15 +168,11 @@ void SolveJob::discard_cuts() {
   m_cuts_valid = false;
 }
 
-std::unique_ptr<Renderer> SolveJob::make_renderer() const {
-  auto renderer = m_registry.create_renderer(m_options.renderer, Properties::from_assignments(m_reference_settings));
-  renderer->set_scene(m_scene);
-  return renderer;
-}
+std::unique_ptr<Renderer> SolveJob::make_renderer() const { return m_session->make_renderer(m_session->reference_settings()); }
 
 Renderer& SolveJob::renderer() {
   if (m_busy) throw std::logic_error("SolveJob: the renderer is in use by a running job");
-  return *m_reference;
+  return m_session->reference();
 }
 
 } // namespace hilight::painter

@@ -13,7 +13,7 @@
 /// SolveCancelled before the next batch of φ once cancel() was called (and
 /// the Solver's stage reports check too), so a cancel takes effect within one
 /// renderer batch; the light cache's build is one batch.
-#include "hilight/pipeline/solver.hpp"
+#include "hilight/pipeline/solve_session.hpp"
 #include "hilight/registry.hpp"
 
 #include <atomic>
@@ -35,14 +35,9 @@ public:
   SolveCancelled() : std::runtime_error("solve cancelled") {}
 };
 
-struct SolveJobOptions {
-  std::string renderer = "embree";
-  std::vector<std::string> renderer_settings;   ///< "key=value", as `--set`
-  std::string optimizer = "varpro";
-  std::vector<std::string> optimizer_settings;  ///< "key=value", as `--opt`
-  std::string sampler = "importance";
-  SolveSettings solve;                          ///< spot_hints are ignored: pass them per solve
-};
+/// Which plugins and settings, as `hilight solve` takes them (the spec's
+/// spot_hints are ignored: pass them per solve).
+using SolveJobOptions = SolveSpec;
 
 enum class JobKind { Solve, FineTune, AddLights };
 const char* to_string(JobKind kind);
@@ -113,6 +108,7 @@ public:
   /// the window's own evaluations while a job runs (each thread its own).
   std::unique_ptr<Renderer> make_renderer() const;
   const SolveJobOptions& options() const { return m_options; }
+  const SolveSession& session() const { return *m_session; }
 
 private:
   void start(JobKind kind, Target target, Lighting lights, Lighting spot_hints);
@@ -122,11 +118,7 @@ private:
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
   SolveJobOptions m_options;
-  std::vector<std::string> m_reference_settings;
-  std::unique_ptr<Renderer> m_fast, m_reference;
-  std::unique_ptr<Renderer> m_fast_guarded, m_reference_guarded;  ///< what the Solver sees: they throw on cancel
-  std::unique_ptr<Sampler> m_sampler;
-  std::unique_ptr<Optimizer> m_optimizer;
+  std::unique_ptr<SolveSession> m_session;  ///< its Solvers' renderers throw on cancel (CancellableRenderer)
   std::unique_ptr<Solver> m_solver;
   Lighting m_solver_hints;
   Lighting m_cut_base;  ///< lights an add kept (cut_lights puts them first)
