@@ -13,6 +13,9 @@ struct GaussNewtonSettings {
   int iterations = 12;           ///< Jacobians evaluated at most
   double relative_step = 1e-4;   ///< finite-difference step, fraction of the diagonal
   double min_improvement = 1e-4; ///< stop when an accepted step gains less (relative)
+  /// A sample whose response changes by more than this share over one
+  /// finite-difference step crosses a shadow edge: it gives no slope.
+  double jump = 0.25;
 };
 
 /// Refined `start`: never worse than it by the problem's objective. Spot

@@ -64,7 +64,12 @@ Lighting gauss_newton_polish(SampleRefineProblem& problem, const Lighting& start
         for (size_t q = 0; q < movable.size(); ++q) {
           const size_t j = movable[q];
           for (int k = 0; k < 3; ++k) {
-            const double d = double(moved_phi[(3 * q + size_t(k)) * m + i][c]) - double(phi[j * m + i][c]);
+            const double before = double(phi[j * m + i][c]), after = double(moved_phi[(3 * q + size_t(k)) * m + i][c]);
+            // A sample whose light jumps over a step of 10⁻⁴ of the diagonal
+            // crosses a shadow edge: no slope there, and its spike would
+            // swamp the smooth falloff of all the others (a far light then
+            // stalls a metre off: the glTF engine's key lights).
+            const double d = std::abs(after - before) > settings.jump * std::max(std::abs(before), std::abs(after)) ? 0.0 : after - before;
             J(row, Eigen::Index(3 * q + size_t(k))) = -sw * double(current[j].intensity[c]) * d;
           }
         }
