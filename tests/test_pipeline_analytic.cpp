@@ -4,12 +4,17 @@
 // failure here is the pipeline's (seeding, hierarchy, cuts, refinement,
 // polish), not a renderer's. Random lights, seeded.
 #include "analytic_renderer.hpp"
+#include "hilight/light_space.hpp"
+#include "hilight/pipeline/hierarchy.hpp"
+#include "hilight/pipeline/responses.hpp"
+#include "hilight/pipeline/seeder.hpp"
 #include "hilight/pipeline/solver.hpp"
 #include "hilight/scene_builders.hpp"
 #include "hilight/target.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
+#include <cstdio>
 #include <random>
 
 using namespace hilight;
@@ -105,4 +110,51 @@ TEST_CASE("pipeline alone (analytic test double): add finds the light the design
   CHECK(glm::length(added[0].position - truth[0].position) < 1e-3f * corner.scene->diagonal());  // kept first
   CHECK(nearest(added, truth[1].position) < 1e-3f * corner.scene->diagonal());
   CHECK(report.dbar < 1e-3);
+}
+
+TEST_CASE("pipeline alone (analytic test double): the seeding keeps a light near each true one, eq. 6 deletes the rest",
+          "[pipeline][analytic][seeding]") {
+  Corner corner;
+  std::mt19937_64 rng(1204);
+  const Lighting truth = corner.random_lights(rng, 3);
+  const Target target = corner.target(truth);
+  const SampleSet samples = all_samples(target);
+  ResponseModel model(corner.renderer, samples, nullptr);
+  const LightSpace space(*corner.rays);
+  const SeedResult seeds = seed_lights(model, space, {}, SeedSettings{});
+  CAPTURE(seeds.lights.size(), seeds.lights_tried, seeds.dbar);
+  std::printf("analytic seeding: %zu of %zu unit lights kept, D-bar %.4f\n", seeds.lights.size(), seeds.lights_tried, seeds.dbar);
+  CHECK(seeds.lights.size() >= truth.size());
+  CHECK(seeds.lights.size() < seeds.lights_tried / 4);  // weak lights deleted (eq. 6)
+  // The seeding's cells are 10/6 wide at the first level, half that at the second.
+  for (const auto& t : truth) CHECK(nearest(seeds.lights, t.position) < 1.2f);
+  CHECK(seeds.dbar < 0.1);
+}
+
+TEST_CASE("pipeline alone (analytic test double): the hierarchy's cut of the true count sits on the true lights",
+          "[pipeline][analytic][hierarchy]") {
+  Corner corner;
+  std::mt19937_64 rng(1205);
+  const Lighting truth = corner.random_lights(rng, 2);
+  const Target target = corner.target(truth);
+  const SampleSet samples = all_samples(target);
+  ResponseModel model(corner.renderer, samples, nullptr);
+  // Leaves: each true light split into three nearby copies of a third of it.
+  Lighting leaves;
+  for (const auto& t : truth)
+    for (const Vec3 offset : {Vec3(0.1f, 0.f, 0.f), Vec3(-0.1f, 0.05f, 0.f), Vec3(0.f, -0.05f, 0.1f)})
+      leaves.push_back(Light::point(t.position + offset, t.intensity / 3.f));
+  const std::vector<Rgb> phi = model.responses(leaves);
+  const LightHierarchy h = LightHierarchy::build(model, leaves, phi, {}, {});
+  const auto cut = h.cut(2);
+  REQUIRE(cut.size() == 2);
+  Lighting merged;
+  for (int node : cut) merged.push_back(Light::point(h.nodes()[size_t(node)].position, h.nodes()[size_t(node)].intensity));
+  for (const auto& t : truth) CHECK(nearest(merged, t.position) < 0.15f);
+  // l_new = l_a + l_b: each merged light carries its three thirds.
+  for (const auto& m : merged) {
+    const bool first = glm::length(m.intensity - truth[0].intensity) < 1e-4f * glm::length(truth[0].intensity);
+    const bool second = glm::length(m.intensity - truth[1].intensity) < 1e-4f * glm::length(truth[1].intensity);
+    CHECK((first || second));
+  }
 }
