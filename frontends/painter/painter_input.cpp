@@ -88,9 +88,10 @@ void PainterApp::handle_keys() {
   if (pressed(GLFW_KEY_X)) select("erase_shadow");
   if (pressed(GLFW_KEY_P)) select("spot");
   if (pressed(GLFW_KEY_A)) select("adjust");
-  if (pressed(GLFW_KEY_1)) { m_view = ui::ViewMode::Result; m_colours_dirty = true; }
-  if (pressed(GLFW_KEY_2)) { m_view = ui::ViewMode::Target; m_colours_dirty = true; }
-  if (pressed(GLFW_KEY_3)) { m_view = ui::ViewMode::Difference; m_colours_dirty = true; }
+  // Views are recorded actions, so a replay's screenshots show what the designer saw.
+  if (pressed(GLFW_KEY_1)) perform(Action{"view", {{"show", "result"}}});
+  if (pressed(GLFW_KEY_2)) perform(Action{"view", {{"show", "target"}}});
+  if (pressed(GLFW_KEY_3)) perform(Action{"view", {{"show", "difference"}}});
   if (pressed(GLFW_KEY_L)) m_show_lights = !m_show_lights;
   if (pressed(GLFW_KEY_F1) || pressed(GLFW_KEY_H)) m_show_help = !m_show_help;
   if ((pressed(GLFW_KEY_ENTER) || pressed(GLFW_KEY_KP_ENTER)) && m_player->tool() == Tool::Shadow) lights_from_shadows();
@@ -154,10 +155,7 @@ void PainterApp::handle_tool_input() {
   if (tool == Tool::Brush || tool == Tool::Eraser) {
     if (pressed) {
       m_stroke = std::make_unique<Stroke>(*m_document, m_player->brush(), tool == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint);
-      if (m_view == ui::ViewMode::Result) {
-        m_view = ui::ViewMode::Target;  // paint is seen in the target view
-        m_colours_dirty = true;
-      }
+      if (m_view == ui::ViewMode::Result) perform(Action{"view", {{"show", "target"}}});  // paint is seen in the target view
       if (m_hover) m_stroke->dab(*m_hover);
     } else if (m_stroke && down && m_hover && (io.MouseDelta.x != 0.f || io.MouseDelta.y != 0.f)) {
       if (m_stroke->points().empty()) m_stroke->dab(*m_hover);

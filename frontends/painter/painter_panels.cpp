@@ -148,8 +148,8 @@ void PainterApp::panel_view() {
   changed |= ImGui::RadioButton("|diff| (3)", &mode, int(ui::ViewMode::Difference));
   tip("|target - result| as a heat map (black, blue, red, yellow = full white)");
   if (changed) {
-    m_view = ui::ViewMode(mode);
-    m_colours_dirty = true;
+    const ui::ViewMode chosen = ui::ViewMode(mode);
+    perform(Action{"view", {{"show", chosen == ui::ViewMode::Target ? "target" : chosen == ui::ViewMode::Difference ? "difference" : "result"}}});
   }
   if (ImGui::SliderFloat("exposure", &m_exposure_stops, -6.f, 6.f, "%+.1f stops")) m_colours_dirty = true;
   tip("Display brightness only; does not change lights or target");

@@ -29,6 +29,10 @@ PlayerHooks PainterApp::make_hooks() {
     return ui::pick_pixel(*m_rays, m_camera, xy[0], xy[1], float(w), float(h));
   };
   hooks.screenshot = [this](const std::filesystem::path& path) { screenshot(path); };
+  hooks.view = [this](const std::string& show) {
+    m_view = show == "target" ? ui::ViewMode::Target : show == "difference" ? ui::ViewMode::Difference : ui::ViewMode::Result;
+    m_colours_dirty = true;
+  };
   hooks.log = [this](const std::string& line) { status(line); };
   return hooks;
 }

@@ -55,6 +55,7 @@ const std::map<std::string, Spec>& specs() {
          {"target", Kind::Vec3}, {"fov", Kind::Positive}},
         {}, {}, {{"eye", "target"}}, true}},
       {"tool", {{{"tool", Kind::String}}, {"tool"}, {}, {}, false}},
+      {"view", {{{"show", Kind::String}}, {"show"}, {}, {}, false}},
       {"brush",
        {{{"radius", Kind::Positive}, {"colour", Kind::Colour}, {"brightness", Kind::NonNegative}, {"hardness", Kind::Unit}},
         {}, {}, {}, true}},
@@ -162,7 +163,7 @@ std::string join(const std::vector<const char*>& names) {
 } // namespace
 
 const std::vector<std::string>& action_types() {
-  static const std::vector<std::string> types = {"camera",      "tool",         "brush",       "stroke",      "erase",
+  static const std::vector<std::string> types = {"camera",      "tool",         "view",        "brush",       "stroke",      "erase",
                                                  "shadow",      "erase_shadow", "spot_region", "adjust_region", "solve",
                                                  "fine_tune",   "add_lights",   "cut",         "place",       "undo",        "redo",
                                                  "save_target", "save_lights",  "load_target", "load_lights", "screenshot"};
@@ -203,6 +204,11 @@ void validate_action(const Action& action, const std::string& source, size_t ind
     const std::string name = action.params["tool"].get<std::string>();
     if (std::find(tools.begin(), tools.end(), name) == tools.end())
       fail("tool: unknown tool '" + name + "' (brush, eraser, shadow, erase_shadow, spot, adjust)");
+  }
+  if (action.type == "view") {
+    const std::string show = action.params["show"].get<std::string>();
+    if (show != "result" && show != "target" && show != "difference")
+      fail("view: 'show' must be result, target or difference, not '" + show + "'");
   }
   if (action.type == "stroke" && action.params.contains("mode")) {
     const std::string mode = action.params["mode"].get<std::string>();

@@ -143,6 +143,8 @@ void SessionPlayer::apply(const Action& action, size_t index) {
       if (p.contains("eye")) check_near_scene(vec3(p["eye"]), "camera: eye");
       if (p.contains("target")) check_near_scene(vec3(p["target"]), "camera: target");
       if (m_hooks.camera) m_hooks.camera(action);
+    } else if (type == "view") {
+      if (m_hooks.view) m_hooks.view(p["show"].get<std::string>());
     } else if (type == "tool") {
       m_tool = *tool_from_string(p["tool"].get<std::string>());
       if (m_hooks.tool_changed) m_hooks.tool_changed(action);

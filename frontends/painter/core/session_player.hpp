@@ -57,6 +57,8 @@ struct PlayerHooks {
   /// Several occluder–light pairs shadow an erase_shadow click and the action
   /// has no "pick": returns the index to erase (default: the first).
   std::function<size_t(const std::vector<ShadowPair>&)> choose_shadow_pair;
+  /// Shows the result, the target or their difference (a `view` action; ignored headless).
+  std::function<void(const std::string&)> view;
   /// A tool or brush change (the UI updates its panels); after the player's own state changed.
   std::function<void(const Action&)> tool_changed;
   /// One line per finished action or solve result, for a log panel / stderr.
