@@ -158,3 +158,29 @@ TEST_CASE("pipeline alone (analytic test double): the hierarchy's cut of the tru
     CHECK((first || second));
   }
 }
+
+TEST_CASE("pipeline alone (analytic test double): a stop token stops a solve at its next stage or renderer batch",
+          "[pipeline][analytic][cancel]") {
+  Corner corner;
+  std::mt19937_64 rng(1206);
+  const Target target = corner.target(corner.random_lights(rng, 2));
+  {
+    std::stop_source stop;
+    stop.request_stop();
+    SolveReport report;
+    CHECK_THROWS_AS(corner.solver()->solve(target, report, stop.get_token()), SolveCancelled);
+  }
+  // Requested mid-solve (here from the seeding's stage report): no result, then a new call runs.
+  static auto sampler = test::registry().create_sampler(PluginDefaults::sampler, {});
+  static auto optimizer = test::registry().create_optimizer(PluginDefaults::optimizer, {});
+  std::stop_source stop;
+  SolveSettings s;
+  s.use_cache = false;
+  Solver solver(corner.scene, corner.rays, corner.renderer, corner.renderer, *sampler, *optimizer, s, [&](const std::string& stage) {
+    if (stage == "seeding") stop.request_stop();
+  });
+  SolveReport report;
+  CHECK_THROWS_AS(solver.solve(target, report, stop.get_token()), SolveCancelled);
+  SolveReport again;
+  CHECK(solver.solve(target, again).size() == 2);
+}

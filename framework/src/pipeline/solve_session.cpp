@@ -13,7 +13,7 @@ void SolveSession::check_names(const Registry& registry, const SolveSpec& spec) 
 }
 
 SolveSession::SolveSession(const Registry& registry, SolveSpec spec, std::shared_ptr<const Scene> scene,
-                           std::shared_ptr<const RayScene> rays, const RendererWrapper& wrap)
+                           std::shared_ptr<const RayScene> rays)
     : m_registry(registry), m_spec(std::move(spec)), m_scene(std::move(scene)), m_rays(std::move(rays)) {
   m_optimizer = registry.create_optimizer(m_spec.optimizer, Properties::from_assignments(m_spec.optimizer_settings));
   m_sampler = registry.create_sampler(m_spec.sampler, Properties::from_assignments(m_spec.sampler_settings));
@@ -25,12 +25,6 @@ SolveSession::SolveSession(const Registry& registry, SolveSpec spec, std::shared
   m_reference = make_renderer(m_reference_settings);
   m_fast = make_renderer(m_fast_settings);
   if (!m_rays) m_rays = std::make_shared<const RayScene>(*m_scene);
-  if (wrap) {
-    m_reference_wrapped = wrap(*m_reference);
-    m_fast_wrapped = wrap(*m_fast);
-  }
-  m_reference_used = m_reference_wrapped ? m_reference_wrapped.get() : m_reference.get();
-  m_fast_used = m_fast_wrapped ? m_fast_wrapped.get() : m_fast.get();
 }
 
 std::unique_ptr<Renderer> SolveSession::make_renderer(const std::vector<std::string>& settings) const {
@@ -59,7 +53,7 @@ std::vector<std::string> SolveSession::preview_settings() const {
 }
 
 std::unique_ptr<Solver> SolveSession::make_solver(const SolveSettings& settings, ProgressFn progress) const {
-  return std::make_unique<Solver>(m_scene, m_rays, *m_fast_used, *m_reference_used, *m_sampler, *m_optimizer, settings,
+  return std::make_unique<Solver>(m_scene, m_rays, *m_fast, *m_reference, *m_sampler, *m_optimizer, settings,
                                   std::move(progress));
 }
 

@@ -50,9 +50,16 @@ size_t sample_count_for(size_t target_points) { return std::clamp<size_t>((targe
 Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
                Renderer& reference, Sampler& sampler, Optimizer& optimizer, SolveSettings settings, ProgressFn progress)
     : m_scene(std::move(scene)), m_rays(std::move(rays)), m_closed_bounds(m_scene->light_bounds()),
-      m_open_bounds(open_light_bounds(*m_scene)), m_space(std::in_place, *m_rays, settings.placement, m_closed_bounds), m_renderer(renderer), m_reference(reference), m_sampler(sampler),
+      m_open_bounds(open_light_bounds(*m_scene)), m_space(std::in_place, *m_rays, settings.placement, m_closed_bounds),
+      m_stoppable_renderer(renderer, m_stop), m_stoppable_reference(reference, m_stop), m_renderer(m_stoppable_renderer),
+      m_reference(m_stoppable_reference), m_sampler(sampler),
       m_optimizer(optimizer),
       m_settings(std::move(settings)), m_progress(std::move(progress)) {}
+
+void Solver::stage(const std::string& name) const {
+  if (m_stop.stop_requested()) throw SolveCancelled();
+  if (m_progress) m_progress(name);
+}
 
 float Solver::neighbourhood_radius() const {
   // Two tessellation edges, within [diagonal/1000, diagonal/20]: a coarse
@@ -81,7 +88,7 @@ void Solver::ensure_cache(SolveReport& report) {
     report.cache_state = "loaded";
     touch_cache_file(file);  // recently used: evicted last
   } else {
-    if (m_progress) m_progress("building the light cache");
+    stage("building the light cache");
     m_cache = LightCache::build(*m_scene, *m_rays, m_renderer, m_settings.cache);
     report.cache_state = "built";
     if (!file.empty()) {
@@ -104,7 +111,7 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   if (m_cache) view.emplace(*m_cache, *m_scene, samples);
   ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
 
-  if (m_progress) m_progress("seeding");
+  stage("seeding");
   Stopwatch seed_watch;
   SeedResult seed = seed_lights(model, *m_space, m_settings.spot_hints, m_settings.seeding);
   report.seconds["seeding"] += seed_watch.seconds();
@@ -123,7 +130,7 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
     return spots_only;
   }
 
-  if (m_progress) m_progress("building the light hierarchy");
+  stage("building the light hierarchy");
   Stopwatch hierarchy_watch;
   Lighting leaves(seed.lights.begin(), seed.lights.begin() + std::ptrdiff_t(n_points));
   std::vector<Rgb> leaf_phi(seed.phi.begin(), seed.phi.begin() + std::ptrdiff_t(n_points * m));
@@ -169,7 +176,7 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   ResponseModel exact(m_renderer, samples, nullptr);
   auto refine_cut = [&](size_t k) {
     if (report.cuts[k - 1].refined) return;
-    if (m_progress) m_progress("refining the cut with " + std::to_string(k) + " lights");
+    stage("refining the cut with " + std::to_string(k) + " lights");
     CutRecord& rec = report.cuts[k - 1];
     rec.refined_lights = refine_anchored(model, exact, starts[k - 1], rec.dbar_refined);
     rec.refined = true;
@@ -261,7 +268,7 @@ void Solver::require_admissible(const Lighting& lights, const std::string& what)
 }
 
 SampleSet Solver::sample(const Target& target, SolveReport& report) {
-  if (m_progress) m_progress("sampling");
+  stage("sampling");
   Stopwatch watch;
   const size_t count = m_settings.samples ? m_settings.samples : sample_count_for(target.size());
   SampleSet samples = m_sampler.draw(target, {count, neighbourhood_radius(), m_settings.seed});
@@ -273,7 +280,8 @@ SampleSet Solver::sample(const Target& target, SolveReport& report) {
   return samples;
 }
 
-Lighting Solver::solve(const Target& target, SolveReport& report) {
+Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_token stop) {
+  m_stop = std::move(stop);
   Stopwatch total;
   open_space_for(m_settings.spot_hints);
   require_admissible(m_settings.spot_hints, "spot hints");
@@ -284,7 +292,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
                         (m_open_bounds.lo != m_closed_bounds.lo || m_open_bounds.hi != m_closed_bounds.hi);
   if (m_settings.open_space_dbar > 0 && report.dbar > m_settings.open_space_dbar && can_open &&
       !m_settings.placement.ceiling_offset) {
-    if (m_progress) m_progress("looking beyond the scene's bounds");
+    stage("looking beyond the scene's bounds");
     SolveReport open_report;
     open_report.seconds = report.seconds;
     open_space(true);
@@ -304,7 +312,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report) {
   // from nothing (point lights beside them where they pay) compete; the
   // fewer lights win unless the others improve D̄ by ε_impro (eq. 9).
   if (m_settings.propose_spots && report.dbar > kSpotDbar && m_settings.spot_hints.empty() && m_settings.fixed_count == 0) {
-    if (m_progress) m_progress("looking for spotlights");
+    stage("looking for spotlights");
     SolveReport spot_report;
     spot_report.seconds = report.seconds;
     spot_report.open_space = report.open_space;
@@ -395,7 +403,8 @@ Lighting Solver::finish_in_space(const Target& target, SampleSet samples, Lighti
   return lights;
 }
 
-Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveReport& report) {
+Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveReport& report, std::stop_token stop) {
+  m_stop = std::move(stop);
   Stopwatch total;
   open_space_for(lights);
   require_admissible(lights, "lights to fine-tune");
@@ -412,7 +421,8 @@ Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveRe
   return refined;
 }
 
-Lighting Solver::add_lights(const Target& target, const Lighting& lights, SolveReport& report) {
+Lighting Solver::add_lights(const Target& target, const Lighting& lights, SolveReport& report, std::stop_token stop) {
+  m_stop = std::move(stop);
   Stopwatch total;
   open_space_for(lights);
   open_space_for(m_settings.spot_hints);

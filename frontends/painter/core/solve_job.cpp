@@ -1,6 +1,5 @@
 #include "core/solve_job.hpp"
 
-#include "core/cancellable_renderer.hpp"
 #include "hilight/error.hpp"
 
 #include <stdexcept>
@@ -30,14 +29,11 @@ SolveJob::SolveJob(const Registry& registry, std::shared_ptr<const Scene> scene,
                    SolveJobOptions options)
     : m_registry(registry), m_scene(std::move(scene)), m_rays(std::move(rays)), m_options(std::move(options)) {
   m_options.settings.spot_hints.clear();
-  // As `hilight solve` assembles it; the Solver's renderers throw on cancel.
-  m_session = std::make_unique<SolveSession>(registry, m_options, m_scene, m_rays, [this](Renderer& inner) -> std::unique_ptr<Renderer> {
-    return std::make_unique<CancellableRenderer>(inner, m_cancel);
-  });
+  m_session = std::make_unique<SolveSession>(registry, m_options, m_scene, m_rays);  // as `hilight solve` assembles it
 }
 
 SolveJob::~SolveJob() {
-  m_cancel = true;
+  m_stop.request_stop();
   if (m_worker.joinable()) m_worker.join();
 }
 
@@ -46,7 +42,6 @@ Solver& SolveJob::solver_for(const Lighting& spot_hints) {
     SolveSettings settings = m_options.settings;
     settings.spot_hints = hint_shapes(spot_hints);
     m_solver = m_session->make_solver(settings, [this](const std::string& stage) {
-      if (m_cancel) throw SolveCancelled();
       std::lock_guard<std::mutex> lock(m_mutex);
       m_progress = stage;
     });
@@ -78,15 +73,15 @@ void SolveJob::start(JobKind kind, Target target, Lighting lights, Lighting spot
     m_result.reset();
     m_progress = "starting";
   }
-  m_cancel = false;
+  m_stop = std::stop_source();
   m_busy = true;
-  m_worker = std::thread([this, kind, &solver, target = std::move(target), lights = std::move(lights)]() {
+  m_worker = std::thread([this, kind, &solver, target = std::move(target), lights = std::move(lights), stop = m_stop.get_token()]() {
     JobResult result;
     result.kind = kind;
     try {
-      result.lights = kind == JobKind::Solve      ? solver.solve(target, result.report)
-                      : kind == JobKind::FineTune ? solver.fine_tune(target, lights, result.report)
-                                                  : solver.add_lights(target, lights, result.report);
+      result.lights = kind == JobKind::Solve      ? solver.solve(target, result.report, stop)
+                      : kind == JobKind::FineTune ? solver.fine_tune(target, lights, result.report, stop)
+                                                  : solver.add_lights(target, lights, result.report, stop);
       result.outcome = JobOutcome::Done;
     } catch (const SolveCancelled&) {
       result.outcome = JobOutcome::Cancelled;

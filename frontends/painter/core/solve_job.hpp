@@ -6,13 +6,12 @@
 /// are built once; only a change of spot hints (a Solver setting) makes a
 /// new Solver (the light cache then comes back from `cache_dir` on disk when set).
 ///
-/// Renderers are made as the CLI makes them: the reference as configured,
-/// and for Embree a fast twin with `bounce_direct=vertex` for φ.
+/// The solve is assembled as the CLI assembles it (SolveSession): the
+/// reference as configured and the renderer's declared fast twin for φ.
 ///
-/// Cancelling: the Solver sees its renderers through a wrapper that throws
-/// SolveCancelled before the next batch of φ once cancel() was called (and
-/// the Solver's stage reports check too), so a cancel takes effect within one
-/// renderer batch; the light cache's build is one batch.
+/// Cancelling: each job gets a stop token; cancel() requests it, and the
+/// Solver throws SolveCancelled at its next stage or renderer batch
+/// (pipeline/stoppable_renderer.hpp); the light cache's build is one batch.
 #include "hilight/pipeline/solve_session.hpp"
 #include "hilight/registry.hpp"
 
@@ -24,16 +23,11 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <stop_token>
 #include <thread>
 #include <vector>
 
 namespace hilight::painter {
-
-/// Thrown inside the worker when a cancel was requested.
-class SolveCancelled : public std::runtime_error {
-public:
-  SolveCancelled() : std::runtime_error("solve cancelled") {}
-};
 
 /// Which plugins and settings, as `hilight solve` takes them (the spec's
 /// spot_hints are ignored: pass them per solve).
@@ -76,7 +70,7 @@ public:
   /// The stage the running job is in ("" when idle).
   std::string progress() const;
   /// Asks the running job to stop at its next stage (no-op when idle).
-  void cancel() { m_cancel = true; }
+  void cancel() { m_stop.request_stop(); }
   /// Called on the worker thread when a job has finished and its result is
   /// ready (the window wakes its event loop with it). Set while idle.
   void set_on_finished(std::function<void()> callback);
@@ -118,14 +112,15 @@ private:
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
   SolveJobOptions m_options;
-  std::unique_ptr<SolveSession> m_session;  ///< its Solvers' renderers throw on cancel (CancellableRenderer)
+  std::unique_ptr<SolveSession> m_session;
   std::unique_ptr<Solver> m_solver;
   Lighting m_solver_hints;
   Lighting m_cut_base;  ///< lights an add kept (cut_lights puts them first)
   bool m_cuts_valid = false;
 
   std::thread m_worker;
-  std::atomic<bool> m_busy{false}, m_cancel{false};
+  std::atomic<bool> m_busy{false};
+  std::stop_source m_stop;  ///< the running job's: cancel() requests it, the Solver stops
   mutable std::mutex m_mutex;
   std::condition_variable m_done;
   std::string m_progress;

@@ -24,16 +24,12 @@ struct SolveSpec {
   SolveSettings settings;  ///< its seed also seeds the renderers' sample streams
 };
 
-/// Wraps a renderer the session made (the painter: cancellation); the
-/// wrapper must not outlive `inner`.
-using RendererWrapper = std::function<std::unique_ptr<Renderer>(Renderer& inner)>;
-
 class SolveSession {
 public:
   /// Unknown or unavailable plugins, and settings they do not read, are
   /// InputErrors here, before any work.
   SolveSession(const Registry& registry, SolveSpec spec, std::shared_ptr<const Scene> scene,
-               std::shared_ptr<const RayScene> rays = nullptr, const RendererWrapper& wrap = {});
+               std::shared_ptr<const RayScene> rays = nullptr);
 
   /// Checks the plugin names of `spec` without a scene (fail before loading one).
   static void check_names(const Registry& registry, const SolveSpec& spec);
@@ -55,7 +51,6 @@ public:
 
   const std::shared_ptr<const Scene>& scene() const { return m_scene; }
   const std::shared_ptr<const RayScene>& rays() const { return m_rays; }
-  /// The renderers themselves (Solvers see them through the wrapper, if any).
   Renderer& reference() { return *m_reference; }
   Renderer& fast() { return *m_fast; }
 
@@ -65,9 +60,7 @@ private:
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
   std::vector<std::string> m_reference_settings, m_fast_settings;
-  std::unique_ptr<Renderer> m_reference, m_fast, m_reference_wrapped, m_fast_wrapped;
-  Renderer* m_reference_used = nullptr;
-  Renderer* m_fast_used = nullptr;
+  std::unique_ptr<Renderer> m_reference, m_fast;
   std::unique_ptr<Sampler> m_sampler;
   std::unique_ptr<Optimizer> m_optimizer;
 };

@@ -8,6 +8,7 @@
 #include "hilight/sampler.hpp"
 #include "hilight/pipeline/hierarchy.hpp"
 #include "hilight/pipeline/seeder.hpp"
+#include "hilight/pipeline/stoppable_renderer.hpp"
 #include "hilight/target.hpp"
 
 #include <filesystem>
@@ -95,14 +96,17 @@ public:
   /// them; may be the same object). Both bound to `scene`.
   Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
          Renderer& reference, Sampler& sampler, Optimizer& optimizer, SolveSettings settings, ProgressFn progress = {});
+  Solver(const Solver&) = delete;  // its renderers hold a reference to its stop token
+  Solver& operator=(const Solver&) = delete;
 
-  /// Full solve: the lights for `target`.
-  Lighting solve(const Target& target, SolveReport& report);
+  /// Full solve: the lights for `target`. Each of these calls throws
+  /// SolveCancelled once `stop` is requested (pipeline/stoppable_renderer.hpp).
+  Lighting solve(const Target& target, SolveReport& report, std::stop_token stop = {});
   /// Re-optimizes `lights` against `target` without adding or removing any
   /// (a polish: after an edit the lights start near their new optimum).
-  Lighting fine_tune(const Target& target, const Lighting& lights, SolveReport& report);
+  Lighting fine_tune(const Target& target, const Lighting& lights, SolveReport& report, std::stop_token stop = {});
   /// Solves for max(Ψ − I(lights), 0) and returns `lights` followed by the new ones.
-  Lighting add_lights(const Target& target, const Lighting& lights, SolveReport& report);
+  Lighting add_lights(const Target& target, const Lighting& lights, SolveReport& report, std::stop_token stop = {});
 
   /// Illumination of `lights` at every target point from the solve's renderer
   /// (no light cache).
@@ -183,13 +187,17 @@ private:
   /// Points D̄ is measured on (all, or evenly spaced when evaluation_points is set).
   SampleSet evaluation_set(const Target& target) const;
   float neighbourhood_radius() const;
+  /// Reports a stage to the progress callback; SolveCancelled if stop was requested.
+  void stage(const std::string& name) const;
 
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
   Bounds m_closed_bounds, m_open_bounds;  ///< light_bounds() and open_light_bounds(), computed once
   std::optional<LightSpace> m_space;  ///< where lights may stand now (closed or open)
-  Renderer& m_renderer;
-  Renderer& m_reference;
+  std::stop_token m_stop;  ///< the running call's (its renderers below check it)
+  StoppableRenderer m_stoppable_renderer, m_stoppable_reference;
+  Renderer& m_renderer;   ///< = m_stoppable_renderer
+  Renderer& m_reference;  ///< = m_stoppable_reference
   Sampler& m_sampler;
   Optimizer& m_optimizer;
   SolveSettings m_settings;

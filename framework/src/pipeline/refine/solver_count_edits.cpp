@@ -78,7 +78,7 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
 }
 
 Lighting Solver::add_spots(const SampleSet& samples, double give_up_dbar, double& dbar) {
-  if (m_progress) m_progress("screening spotlights");
+  stage("screening spotlights");
   SpotProposalSettings settings;
   settings.max_spots = max_lights() ? std::min<size_t>(kMaxSpots, max_lights()) : kMaxSpots;  // the count rule
   settings.weak_threshold = m_settings.seeding.weak_threshold;
