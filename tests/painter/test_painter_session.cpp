@@ -421,3 +421,13 @@ TEST_CASE("painter: a replayed patch-and-shadow script yields a light in the sha
   CHECK(lit[0].g > 0.3f);
   CHECK(lit[1].g < 0.2f * lit[0].g);
 }
+
+TEST_CASE("painter session: every action type is documented in docs/painter.md and validates", "[painter]") {
+  const std::string docs = test::read_file(std::filesystem::path(HILIGHT_SOURCE_DIR) / "docs/painter.md");
+  REQUIRE(!hilight::painter::action_types().empty());
+  for (const std::string& type : hilight::painter::action_types()) {
+    INFO(type);
+    CHECK(docs.find("`" + type + "`") != std::string::npos);
+  }
+  CHECK_THROWS_AS(hilight::painter::validate_action({"no_such_action", {}}, "s", 0), hilight::InputError);
+}

@@ -48,8 +48,10 @@ struct Spec {
   bool needs_some = false;  ///< at least one field (camera, brush)
 };
 
-const std::map<std::string, Spec>& specs() {
-  static const std::map<std::string, Spec> table = {
+/// Every action's fields, in the order docs/painter.md lists them: the one
+/// list of action types (action_types() reads it).
+const std::vector<std::pair<std::string, Spec>>& specs() {
+  static const std::vector<std::pair<std::string, Spec>> table = {
       {"camera",
        {{{"orbit", Kind::Vec2}, {"pan", Kind::Vec2}, {"zoom", Kind::Positive}, {"eye", Kind::Vec3},
          {"target", Kind::Vec3}, {"fov", Kind::Positive}},
@@ -163,10 +165,11 @@ std::string join(const std::vector<const char*>& names) {
 } // namespace
 
 const std::vector<std::string>& action_types() {
-  static const std::vector<std::string> types = {"camera",      "tool",         "view",        "brush",       "stroke",      "erase",
-                                                 "shadow",      "erase_shadow", "spot_region", "adjust_region", "solve",
-                                                 "fine_tune",   "add_lights",   "cut",         "place",       "undo",        "redo",
-                                                 "save_target", "save_lights",  "load_target", "load_lights", "screenshot"};
+  static const std::vector<std::string> types = [] {
+    std::vector<std::string> out;
+    for (const auto& [type, spec] : specs()) out.push_back(type);
+    return out;
+  }();
   return types;
 }
 
@@ -174,7 +177,7 @@ void validate_action(const Action& action, const std::string& source, size_t ind
   auto fail = [&](const std::string& problem) {
     throw InputError(source, "action " + std::to_string(index) + ": " + problem);
   };
-  auto it = specs().find(action.type);
+  auto it = std::find_if(specs().begin(), specs().end(), [&](const auto& entry) { return entry.first == action.type; });
   if (it == specs().end()) fail("unknown type '" + action.type + "'");
   const Spec& spec = it->second;
   if (!action.params.is_object() && !action.params.is_null()) fail(action.type + ": parameters must be an object");
