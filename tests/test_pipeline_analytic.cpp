@@ -49,6 +49,9 @@ struct Corner {
     return lights;
   }
 
+  /// Every vertex a sample, for stages tested on their own.
+  SampleSet samples(const Lighting& lights) { return all_samples(target(lights)); }
+
   Target target(const Lighting& lights) {
     const std::vector<Rgb> values = renderer.illuminate(SurfacePoints::from_vertices(*scene), lights);
     return bind_target("analytic", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
@@ -117,8 +120,7 @@ TEST_CASE("pipeline alone (analytic test double): the seeding keeps a light near
   Corner corner;
   std::mt19937_64 rng(1204);
   const Lighting truth = corner.random_lights(rng, 3);
-  const Target target = corner.target(truth);
-  const SampleSet samples = all_samples(target);
+  const SampleSet samples = corner.samples(truth);
   ResponseModel model(corner.renderer, samples, nullptr);
   const LightSpace space(*corner.rays);
   const SeedResult seeds = seed_lights(model, space, {}, SeedSettings{});
@@ -136,8 +138,7 @@ TEST_CASE("pipeline alone (analytic test double): the hierarchy's cut of the tru
   Corner corner;
   std::mt19937_64 rng(1205);
   const Lighting truth = corner.random_lights(rng, 2);
-  const Target target = corner.target(truth);
-  const SampleSet samples = all_samples(target);
+  const SampleSet samples = corner.samples(truth);
   ResponseModel model(corner.renderer, samples, nullptr);
   // Leaves: each true light split into three nearby copies of a third of it.
   Lighting leaves;

@@ -6,13 +6,13 @@ namespace hilight {
 
 namespace {
 
-std::string key_of(const std::string& kv) { return kv.substr(0, kv.find('=')); }
-
 bool has_setting(const std::vector<std::string>& settings, const std::string& key) {
-  return std::any_of(settings.begin(), settings.end(), [&](const std::string& kv) { return key_of(kv) == key; });
+  return std::any_of(settings.begin(), settings.end(), [&](const std::string& kv) { return setting_key(kv) == key; });
 }
 
 } // namespace
+
+std::string setting_key(const std::string& assignment) { return assignment.substr(0, assignment.find('=')); }
 
 std::vector<std::string> reference_renderer_settings(std::vector<std::string> settings, uint64_t seed) {
   // Renderer seeds are signed 64-bit settings: fold the solve's seed into range.
@@ -23,7 +23,7 @@ std::vector<std::string> reference_renderer_settings(std::vector<std::string> se
 std::vector<std::string> with_defaults(std::vector<std::string> settings, const std::vector<std::string>& defaults) {
   const std::vector<std::string> chosen = settings;
   for (const auto& kv : defaults)
-    if (!has_setting(chosen, key_of(kv))) settings.push_back(kv);
+    if (!has_setting(chosen, setting_key(kv))) settings.push_back(kv);
   return settings;
 }
 

@@ -37,16 +37,14 @@ std::vector<std::string> SolveSession::preview_settings() const {
   const RendererTraits& traits = m_registry.renderer_traits(m_spec.renderer);
   if (traits.preview.empty()) return {};
   for (const auto& kv : m_spec.renderer_settings) {
-    const std::string key = kv.substr(0, kv.find('='));
-    auto same_key = [&](const std::string& d) { return d.substr(0, d.find('=')) == key; };
+    auto same_key = [&](const std::string& d) { return setting_key(d) == setting_key(kv); };
     if (std::any_of(traits.preview.begin(), traits.preview.end(), same_key) ||
         std::any_of(traits.fast_twin.begin(), traits.fast_twin.end(), same_key))
       return {};  // the user tuned what the preview would change: show only the exact render
   }
   std::vector<std::string> settings = m_fast_settings;
   for (const auto& kv : traits.preview) {
-    const std::string key = kv.substr(0, kv.find('='));
-    std::erase_if(settings, [&](const std::string& s) { return s.substr(0, s.find('=')) == key; });
+    std::erase_if(settings, [&](const std::string& s) { return setting_key(s) == setting_key(kv); });
     settings.push_back(kv);
   }
   return settings;

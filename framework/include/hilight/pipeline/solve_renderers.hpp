@@ -16,6 +16,9 @@ namespace hilight {
 /// `settings` (key=value) with the solve's seed added unless one is given.
 std::vector<std::string> reference_renderer_settings(std::vector<std::string> settings, uint64_t seed);
 
+/// The key of a `key=value` setting.
+std::string setting_key(const std::string& assignment);
+
 /// `settings` with each of `defaults` (key=value) added whose key they do not set.
 std::vector<std::string> with_defaults(std::vector<std::string> settings, const std::vector<std::string>& defaults);
 
