@@ -1,4 +1,5 @@
 #include "cli_common.hpp"
+#include "hilight/pipeline/solve_renderers.hpp"
 
 #include "hilight/error.hpp"
 #include "hilight/threads.hpp"
@@ -32,7 +33,7 @@ void RendererOptions::add_to(CLI::App& app) {
 std::vector<std::string> RendererOptions::assignments() const {
   std::vector<std::string> out;
   for (const auto& kv : settings) {
-    const std::string key = kv.substr(0, kv.find('='));
+    const std::string key = setting_key(kv);
     if (key != "bounces" && !(key == "bounce_samples" && bounce_samples > 0)) out.push_back(kv);
   }
   out.push_back("bounces=" + std::to_string(bounces));
