@@ -60,6 +60,10 @@ Outcome recovery_trials(builders::BuiltScene (*make)(), uint64_t first_seed, siz
   auto fast = test::make_renderer("embree", scene, fast_renderer_settings(test::registry().renderer_traits("embree"), settings));
   auto sampler = test::registry().create_sampler("importance", {});
   auto optimizer = test::registry().create_optimizer("varpro", {});
+  // Sweeps may compare light caches: HILIGHT_CACHE=grid|adaptive|none.
+  const char* cache_name = std::getenv("HILIGHT_CACHE");
+  const std::string cache_choice = cache_name ? cache_name : PluginDefaults::cache;
+  auto cache = cache_choice == PluginDefaults::no_cache ? nullptr : test::registry().create_cache(cache_choice, {});
   const auto dir = test::output_dir("built_recovery_" + built.name);
   Outcome out;
   for (size_t t = 0; t < trials; ++t) {
@@ -75,7 +79,7 @@ Outcome recovery_trials(builders::BuiltScene (*make)(), uint64_t first_seed, siz
     SolveSettings s;
     s.cache_dir = dir / "cache";
     if (const char* spots = std::getenv("HILIGHT_PROPOSE_SPOTS")) s.propose_spots = std::string(spots) == "1";  // sweeps: on/off
-    Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, s);
+    Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, cache.get(), s);
     SolveReport report;
     const Lighting found = solver.solve(target, report);
     const bool right = found.size() == truth.size();

@@ -59,3 +59,35 @@ TEST_CASE("hilight cache list and clear", "[cache][cli]") {
   CHECK(bad.exit_code == 2);
   CHECK(test::line_count(bad.err) == 1);
 }
+
+TEST_CASE("hilight solve --cache picks the light cache plugin, and a wrong one is one line and exit 2", "[cache][cli]") {
+  const auto dir = test::output_dir("cache_choice_cli");
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  const auto target = dir / "target.ply";
+  REQUIRE(test::run_hilight({"render", room, "--lights", std::string(HILIGHT_SOURCE_DIR) + "/scenes/room-4lights.json", "-o",
+                             target.string(), "--max-edge", "0.6"})
+              .exit_code == 0);
+  auto solve = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"solve", room, "--target", target.string(), "-o", (dir / "lights.json").string(),
+                                     "--max-edge", "0.6", "--cache-dir", (dir / "cache").string(), "--report",
+                                     (dir / "report.json").string(), "--evaluation-points", "2000"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return test::run_hilight(args);
+  };
+  const auto adaptive = solve({"--cache", "adaptive", "--cache-setting", "growth=1.2"});
+  INFO(adaptive.err);
+  CHECK(adaptive.exit_code == 0);
+  CHECK_THAT(test::read_file(dir / "report.json"), Catch::Contains("\"light_cache\": \"built\""));
+  const auto none = solve({"--cache", "none"});
+  CHECK(none.exit_code == 0);
+  CHECK_THAT(test::read_file(dir / "report.json"), Catch::Contains("\"light_cache\": \"off\""));
+  for (const auto& wrong : std::vector<std::vector<std::string>>{{"--cache", "octree"},
+                                                                 {"--cache", "grid", "--cache-setting", "cellz=4"},
+                                                                 {"--cache", "none", "--cache-setting", "cells=4"},
+                                                                 {"--cache", "adaptive", "--cache-setting", "growth=0.5"}}) {
+    const auto r = solve(wrong);
+    INFO(wrong[1] << " " << (wrong.size() > 2 ? wrong[3] : ""));
+    CHECK(r.exit_code == 2);
+    CHECK(test::line_count(r.err) == 1);
+  }
+}

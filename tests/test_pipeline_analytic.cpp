@@ -61,9 +61,8 @@ struct Corner {
     static auto sampler = test::registry().create_sampler(PluginDefaults::sampler, {});
     static auto optimizer = test::registry().create_optimizer(PluginDefaults::optimizer, {});
     SolveSettings s;
-    s.use_cache = false;  // no bounce to cache
     s.evaluation_points = 0;
-    return std::make_unique<Solver>(scene, rays, renderer, renderer, *sampler, *optimizer, s);
+    return std::make_unique<Solver>(scene, rays, renderer, renderer, *sampler, *optimizer, nullptr, s);
   }
 };
 
@@ -176,8 +175,7 @@ TEST_CASE("pipeline alone (analytic test double): a stop token stops a solve at 
   static auto optimizer = test::registry().create_optimizer(PluginDefaults::optimizer, {});
   std::stop_source stop;
   SolveSettings s;
-  s.use_cache = false;
-  Solver solver(corner.scene, corner.rays, corner.renderer, corner.renderer, *sampler, *optimizer, s, [&](const std::string& stage) {
+  Solver solver(corner.scene, corner.rays, corner.renderer, corner.renderer, *sampler, *optimizer, nullptr, s, [&](const std::string& stage) {
     if (stage == "seeding") stop.request_stop();
   });
   SolveReport report;

@@ -1,6 +1,5 @@
 // Pieces of the solve pipeline on small constructed cases: the hierarchy's
-// cuts, the sampler's importance, the light cache against the exact bounce.
-#include "hilight/light_cache.hpp"
+// cuts, the sampler's importance.
 #include "hilight/pipeline/fit.hpp"
 #include "hilight/pipeline/hierarchy.hpp"
 #include "hilight/pipeline/solver.hpp"
@@ -90,49 +89,6 @@ TEST_CASE("the sampler favours shadow edges and keeps each point at most once", 
   CHECK(importance->draw(target, request).target_index == s.target_index);
 }
 
-TEST_CASE("the light cache's bounce is close to the exact bounce and survives a disk round trip", "[cache]") {
-  // (stored in half floats over each node's largest value, zero runs skipped: see light_cache.cpp)
-  auto scene = test::finish(builders::furnished_room(), 0.3f);
-  RayScene rays(*scene);
-  auto renderer = test::make_renderer("embree", scene, {"bounce_samples=64", "bounce_direct=vertex"});
-  LightCache cache = LightCache::build(*scene, rays, *renderer, {});
-  CHECK(cache.valid_node_count() > 100);
-  CHECK(cache.valid_node_count() < cache.node_count());  // nodes inside furniture are left out
-
-  auto dir = test::output_dir("cache_roundtrip");
-  cache.save(dir / "c.bin");
-  uint64_t key = LightCache::key(*scene, renderer->settings_key(), {});
-  auto loaded = LightCache::load(dir / "c.bin", key, scene->positions.size());
-  REQUIRE(loaded);
-  CHECK_FALSE(LightCache::load(dir / "c.bin", key + 1, scene->positions.size()));
-  CHECK_FALSE(LightCache::load(dir / "missing.bin", key, scene->positions.size()));
-
-  Target target = vertex_target(*scene, std::vector<Rgb>(scene->positions.size(), Rgb(1.f)));
-  SampleSet samples = all_samples(target);
-  LightCacheView view(*loaded, *scene, samples);
-  Lighting probes = {Light::point({2.1f, 1.7f, 3.1f}, Rgb(1.f)), Light::point({3.9f, 2.3f, 1.2f}, Rgb(1.f))};
-  auto exact = renderer->unit_responses(samples.points, probes, Transport::IndirectOnly);
-  const size_t m = samples.size();
-  LightCacheView built_view(cache, *scene, samples);
-  for (size_t j = 0; j < probes.size(); ++j) {
-    std::vector<Rgb> cached(m, Rgb(0.f)), built(m, Rgb(0.f));
-    view.add_indirect(probes[j].position, cached.data());
-    // The built cache holds what the file holds (half floats): a cold solve
-    // and a warm one see the same numbers.
-    built_view.add_indirect(probes[j].position, built.data());
-    CHECK(built == cached);
-    double num = 0, den = 0;
-    for (size_t i = 0; i < m; ++i) {
-      num += glm::dot(DVec3(cached[i] - exact[j * m + i]), DVec3(cached[i] - exact[j * m + i]));
-      den += glm::dot(DVec3(exact[j * m + i]), DVec3(exact[j * m + i]));
-    }
-    double error = std::sqrt(num / den);
-    INFO("probe " << j << ": normalized L2 error of the cached bounce " << error);
-    // Trilinear interpolation between nodes ~0.6 apart; refinement removes
-    // the rest by anchoring (solver.cpp).
-    CHECK(error < 0.10);
-  }
-}
 
 TEST_CASE("after a solve, the light count moves up and down the hierarchy's cuts without a new solve", "[solver][cuts]") {
   auto scene = test::finish(builders::furnished_room(), 0.4f);
@@ -145,7 +101,8 @@ TEST_CASE("after a solve, the light count moves up and down the hierarchy's cuts
   auto sampler = test::registry().create_sampler("importance", {});
   auto optimizer = test::registry().create_optimizer("varpro", {});
   SolveSettings settings;  // cache in memory only
-  Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, settings);
+  auto cache = test::registry().create_cache(PluginDefaults::cache, {});
+  Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, cache.get(), settings);
   CHECK_THROWS(solver.cut_lights(1));
   SolveReport report;
   Lighting found = solver.solve(target, report);

@@ -46,9 +46,8 @@ Lighting solve(const PatchSolve& p, PlacementRules rules, SolveReport& report) {
   auto sampler = test::registry().create_sampler("importance", {});
   auto optimizer = test::registry().create_optimizer("varpro", {});
   SolveSettings s;
-  s.use_cache = false;
   s.placement = std::move(rules);
-  Solver solver(p.scene, p.rays, *renderer, *reference, *sampler, *optimizer, s);
+  Solver solver(p.scene, p.rays, *renderer, *reference, *sampler, *optimizer, nullptr, s);
   return solver.solve(p.target, report);
 }
 } // namespace

@@ -72,9 +72,8 @@ TEST_CASE("regions: region:K and not-region:K hold in every result", "[regions][
   for (const std::string& rule : {"not-region:" + std::to_string(right), "region:" + std::to_string(left)}) {
     INFO(rule);
     SolveSettings s;
-    s.use_cache = false;
     s.placement.add(rule);
-    Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, s);
+    Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, nullptr, s);
     SolveReport report;
     const Lighting lights = solver.solve(target, report);
     REQUIRE_FALSE(lights.empty());
@@ -84,8 +83,7 @@ TEST_CASE("regions: region:K and not-region:K hold in every result", "[regions][
   }
   // Unlimited, both lights are found.
   SolveSettings s;
-  s.use_cache = false;
-  Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, s);
+  Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, nullptr, s);
   SolveReport report;
   CHECK(solver.solve(target, report).size() == 2);
   CHECK(report.dbar < 0.01);

@@ -205,9 +205,8 @@ TEST_CASE("a refined render of real curved models is a fixed point of the solve"
     auto sampler = test::registry().create_sampler("importance", {});
     auto optimizer = test::registry().create_optimizer("varpro", {});
     SolveSettings s;
-    s.use_cache = false;
     s.evaluation_points = 0;
-    Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, s);
+    Solver solver(scene, rays, *fast, *reference, *sampler, *optimizer, nullptr, s);
     SolveReport report;
     const Lighting tuned = solver.fine_tune(target, truth, report);
     std::printf("refined curved models (%zu -> %zu vertices), bounces %d: fine-tune from the true lights reports D-bar %.3f%%\n",

@@ -62,6 +62,7 @@ struct SolveRig {
   std::unique_ptr<Renderer> reference, fast;
   std::unique_ptr<Sampler> sampler;
   std::unique_ptr<Optimizer> optimizer;
+  std::unique_ptr<LightCacheBuilder> cache;  ///< null: no light cache
   std::unique_ptr<Solver> solver;
   Target target;
 };
@@ -77,11 +78,11 @@ std::unique_ptr<SolveRig> rig(const RealCase& c, const std::string& renderer, in
   const auto dir = test::output_dir("fixed_point_" + renderer + "_" + std::to_string(::getpid()));
   write_illuminated_ply(dir / "target.ply", *c.scene, r->reference->illuminate(SurfacePoints::from_vertices(*c.scene), c.truth));
   r->target = read_target(dir / "target.ply", *c.scene, *c.rays);
+  if (cache) r->cache = test::registry().create_cache(PluginDefaults::cache, {});
   SolveSettings s;
-  s.use_cache = cache;
   s.evaluation_points = 0;  // every point: the fixed point is asserted over the whole target
   if (samples) s.samples = samples;
-  r->solver = std::make_unique<Solver>(c.scene, c.rays, *r->fast, *r->reference, *r->sampler, *r->optimizer, s);
+  r->solver = std::make_unique<Solver>(c.scene, c.rays, *r->fast, *r->reference, *r->sampler, *r->optimizer, r->cache.get(), s);
   return r;
 }
 
@@ -179,7 +180,7 @@ TrialOutcome ceiling_lamp_trials(uint64_t first_seed, size_t trials,
     SolveSettings s;
     s.cache_dir = cache_dir;
     if (const char* n = std::getenv("HILIGHT_SAMPLES")) s.samples = std::stoul(n);
-    r->solver = std::make_unique<Solver>(c.scene, c.rays, *r->fast, *r->reference, *r->sampler, *r->optimizer, s);
+    r->solver = std::make_unique<Solver>(c.scene, c.rays, *r->fast, *r->reference, *r->sampler, *r->optimizer, r->cache.get(), s);
     SolveReport report;
     const Lighting found = r->solver->solve(r->target, report);
     const bool right = found.size() == c.truth.size();
@@ -240,11 +241,11 @@ TEST_CASE("the light cache's bounce under ceiling lamps: its error, and what anc
   // by the exact bounce at the lamp, moved 2 cm away.
   const RealCase c = room_case(21);
   auto fast = test::make_renderer("embree", c.scene, fast_renderer_settings(test::registry().renderer_traits("embree"), reference_renderer_settings({}, 1)));
-  const LightCache cache = LightCache::build(*c.scene, *c.rays, *fast, {});
+  const auto cache = test::registry().create_cache(PluginDefaults::cache, {})->build({*c.scene, *c.rays, *fast, c.scene->light_bounds()});
   const Target target = bind_target("vertices", c.scene->positions, std::vector<Rgb>(c.scene->positions.size(), Rgb(1.f)),
                                     std::vector<float>(c.scene->positions.size(), 1.f), *c.scene, *c.rays, c.scene->normals);
   const SampleSet samples = all_samples(target);
-  const LightCacheView view(cache, *c.scene, samples);
+  const auto view = cache->view(*c.scene, samples);
   const size_t m = samples.size();
   auto error_of = [&](const std::vector<Rgb>& a, const std::vector<Rgb>& exact) { return test::dbar(a, exact); };
   for (size_t j = 0; j < c.truth.size(); ++j) {
@@ -254,8 +255,8 @@ TEST_CASE("the light cache's bounce under ceiling lamps: its error, and what anc
     const auto exact = fast->unit_responses(samples.points, std::span<const Light>(&lamp, 1), Transport::IndirectOnly);
     const auto exact_moved = fast->unit_responses(samples.points, std::span<const Light>(&moved, 1), Transport::IndirectOnly);
     std::vector<Rgb> cached(m, Rgb(0.f)), cached_moved(m, Rgb(0.f));
-    view.add_indirect(lamp.position, cached.data());
-    view.add_indirect(moved.position, cached_moved.data());
+    view->add_indirect(lamp.position, cached.data());
+    view->add_indirect(moved.position, cached_moved.data());
     std::vector<Rgb> anchored(m);
     for (size_t i = 0; i < m; ++i) anchored[i] = cached_moved[i] + (exact[i] - cached[i]);
     const double raw = error_of(cached, exact), after = error_of(anchored, exact_moved);

@@ -8,6 +8,13 @@ namespace fs = std::filesystem;
 
 namespace hilight {
 
+fs::path default_cache_dir() {
+  if (const char* d = std::getenv("HILIGHT_CACHE_DIR"); d && *d) return d;
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "hilight";
+  if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".cache" / "hilight";
+  return fs::temp_directory_path() / "hilight-cache";
+}
+
 uint64_t default_cache_cap_bytes() {
   uint64_t megabytes = 1024;
   if (const char* v = std::getenv("HILIGHT_CACHE_MAX_MB"); v && *v) {

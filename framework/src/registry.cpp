@@ -40,6 +40,11 @@ void PluginRegistrar::sampler(SamplerFactory create) {
   m_record.create_sampler = std::move(create);
 }
 
+void PluginRegistrar::cache(CacheFactory create) {
+  if (m_record.kind != "cache") throw std::logic_error("module " + m_record.name + " registers a light cache but says it is a " + m_record.kind);
+  m_record.create_cache = std::move(create);
+}
+
 std::vector<fs::path> Registry::default_search_dirs(const fs::path& executable) {
   std::vector<fs::path> dirs;
   std::error_code ec;
@@ -96,7 +101,8 @@ const ModuleRecord& Registry::load_module(const fs::path& file) {
   record->name = entry->name ? entry->name : record->name;
   record->version = entry->version ? entry->version : "";
   record->description = entry->description ? entry->description : "";
-  if (record->kind != "renderer" && record->kind != "frontend" && record->kind != "optimizer" && record->kind != "sampler")
+  if (record->kind != "renderer" && record->kind != "frontend" && record->kind != "optimizer" && record->kind != "sampler" &&
+      record->kind != "cache")
     return fail("unknown plugin kind '" + record->kind + "'");
   if (const ModuleRecord* other = find(record->kind, record->name))
     return fail("duplicate " + record->kind + " '" + record->name + "', already loaded from " + other->path.string());
@@ -162,6 +168,13 @@ std::unique_ptr<Sampler> Registry::create_sampler(const std::string& name, const
   auto sampler = m.create_sampler(properties);
   properties.expect_all_queried("sampler " + name);
   return sampler;
+}
+
+std::unique_ptr<LightCacheBuilder> Registry::create_cache(const std::string& name, const Properties& properties) const {
+  const ModuleRecord& m = require("cache", name);
+  auto cache = m.create_cache(properties);
+  properties.expect_all_queried("cache " + name);
+  return cache;
 }
 
 Frontend* Registry::frontend_for(const std::string& command) {

@@ -164,7 +164,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   // Does the light cache pay? The same solve with every φ from the renderer.
   if (!no_cache_figure) {
     SolveSpec spec = bench_spec(cache_root, optimizers.front());
-    spec.settings.use_cache = false;
+    spec.cache = PluginDefaults::no_cache;
     SolveReport report;
     Lighting found = SolveSession(registry, spec, scene, rays).make_solver()->solve(target, report);
     nlohmann::json j = {{"figure", "solve_without_cache"}, {"optimizer", optimizers.front()}, {"found_lights", found.size()},

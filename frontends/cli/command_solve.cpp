@@ -97,9 +97,6 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--weak-threshold", s.seeding.weak_threshold, "ε_w: weak-light deletion threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
   app.add_option("--seed-cells", s.seeding.coarse_cells, "seeding cells along the longest axis")->check(CLI::Range(1, 16))->capture_default_str();
   app.add_option("--seed-iterations", s.seeding.iterations, "seeding levels")->check(CLI::Range(1, 6))->capture_default_str();
-  app.add_option("--cache-cells", s.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")
-      ->check(CLI::Range(1, 24))
-      ->capture_default_str();
   app.add_option("--place", place_rules,
                  "where lights may stand (repeatable): ceiling[:OFFSET] (mounted OFFSET below the ceiling, default 0.2), "
                  "height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1 (inside one of the boxes), exclude:X0,Y0,Z0,X1,Y1,Z1");
@@ -111,7 +108,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       ->capture_default_str();
   app.add_flag("--propose-spots,!--no-propose-spots", s.propose_spots,
                "when point lights leave D̄ above 5%, look for spotlights without --spot-hints (default: on)");
-  app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
+  app.add_option("--cache", spec.cache, "light cache plugin (grid, adaptive) or none: every response from the renderer")
+      ->capture_default_str();
+  app.add_option("--cache-setting", spec.cache_settings, "light cache setting key=value (repeatable; grid: cells, adaptive: cells depth tolerance nodes)");
+  app.add_option_function<int>("--cache-cells", [&](int cells) { spec.cache_settings.push_back("cells=" + std::to_string(cells)); },
+                               "the same as --cache-setting cells=N");
+  app.add_flag("--no-cache", no_cache, "the same as --cache none");
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
   app.add_flag("-q,--quiet", quiet, "no progress or summary on stderr");
   ropts.add_to(app);
@@ -130,6 +132,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       h.intensity = Rgb(1.f);
     }
   }
+  if (no_cache) spec.cache = PluginDefaults::no_cache;
   spec.renderer = ropts.name;
   spec.renderer_settings = ropts.assignments();
   SolveSession::check_names(registry, spec);  // unknown plugins fail before the scene loads
@@ -140,8 +143,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   auto rays = std::make_shared<const RayScene>(*scene);
   Target target = read_target(target_path, *scene, *rays);
   s.seed = seed;
-  s.use_cache = !no_cache;
-  s.cache_dir = no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
+  s.cache_dir = spec.cache == PluginDefaults::no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
   s.cache_cap_bytes = default_cache_cap_bytes();
 
   SolveSession session(registry, spec, scene, rays);

@@ -72,10 +72,12 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
                  "where lights may stand (repeatable): ceiling[:OFFSET], height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1, "
                  "exclude:X0,Y0,Z0,X1,Y1,Z1 (as hilight solve)");
   app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
-  app.add_flag("--no-cache", no_cache, "no light cache: every response from the renderer");
-  app.add_option("--cache-cells", o.job.settings.cache.cells_along_longest_axis, "light cache grid cells along the longest axis")
-      ->check(CLI::Range(1, 24))
+  app.add_option("--cache", o.job.cache, "light cache plugin (grid, adaptive) or none: every response from the renderer")
       ->capture_default_str();
+  app.add_option("--cache-setting", o.job.cache_settings, "light cache setting key=value (repeatable, as hilight solve)");
+  app.add_option_function<int>("--cache-cells", [&](int cells) { o.job.cache_settings.push_back("cells=" + std::to_string(cells)); },
+                               "the same as --cache-setting cells=N");
+  app.add_flag("--no-cache", no_cache, "the same as --cache none");
   app.add_option("--script", script, "session JSON to replay ({\"actions\": [...]}, docs/painter.md)");
   app.add_option("--screenshot", screenshot, "write the final frame (after the script) as PNG");
   app.add_option("--window-screenshot", window_screenshot, "the final frame with the panels, as PNG (for bug reports)");
@@ -105,8 +107,8 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   o.job.renderer_settings.push_back("bounces=" + std::to_string(bounces));
   if (bounce_samples > 0) o.job.renderer_settings.push_back("bounce_samples=" + std::to_string(bounce_samples));
   for (const auto& rule : place_rules) o.job.settings.placement.add(rule);
-  o.job.settings.use_cache = !no_cache;
-  o.job.settings.cache_dir = no_cache ? std::filesystem::path() : cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir);
+  if (no_cache) o.job.cache = PluginDefaults::no_cache;
+  o.job.settings.cache_dir = o.job.cache == PluginDefaults::no_cache ? std::filesystem::path() : cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir);
   o.job.settings.cache_cap_bytes = default_cache_cap_bytes();
   if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty() && window_screenshot.empty())
     throw InputError("paint: --exit without --script, --screenshot or --bench would do nothing");

@@ -37,7 +37,7 @@ inline painter::SolveJobOptions quick_options() {
   painter::SolveJobOptions o;
   o.renderer_settings = {"bounce_samples=16"};
   o.settings.samples = 800;
-  o.settings.cache.cells_along_longest_axis = 6;
+  o.cache_settings = {"cells=6"};
   return o;
 }
 

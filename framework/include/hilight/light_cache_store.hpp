@@ -8,6 +8,10 @@
 
 namespace hilight {
 
+/// The default folder for cache files: $HILIGHT_CACHE_DIR, else
+/// $XDG_CACHE_HOME/hilight, else ~/.cache/hilight.
+std::filesystem::path default_cache_dir();
+
 /// Default cap on the folder's size: $HILIGHT_CACHE_MAX_MB megabytes, else 1024.
 uint64_t default_cache_cap_bytes();
 

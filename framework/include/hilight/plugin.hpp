@@ -4,7 +4,7 @@
 /// build_key *before* any C++ type crosses the module boundary.
 #include <cstdint>
 
-#define HILIGHT_ABI_VERSION 2u
+#define HILIGHT_ABI_VERSION 3u  // 3: light cache plugins
 
 #define HILIGHT_STRINGIFY2(x) #x
 #define HILIGHT_STRINGIFY(x) HILIGHT_STRINGIFY2(x)
@@ -32,7 +32,7 @@ extern "C" {
 struct HilightPluginEntry {
   uint32_t abi_version;     ///< HILIGHT_ABI_VERSION the module was built against
   const char* build_key;    ///< HILIGHT_BUILD_KEY the module was built with
-  const char* kind;         ///< "renderer", "optimizer" or "frontend"
+  const char* kind;         ///< "renderer", "optimizer", "sampler", "cache" or "frontend"
   const char* name;         ///< registered name == folder name
   const char* version;      ///< the module's own version string
   const char* description;  ///< one line for `hilight plugins`

@@ -2,6 +2,7 @@
 /// Finds, checks and loads plugin modules, and creates plugins by name.
 /// Modules are never unloaded: objects they created may outlive any scope.
 #include "hilight/frontend.hpp"
+#include "hilight/light_cache.hpp"
 #include "hilight/optimizer.hpp"
 #include "hilight/properties.hpp"
 #include "hilight/renderer.hpp"
@@ -21,6 +22,7 @@ using ProbeFunction = std::function<std::string()>;
 using FrontendFactory = std::function<std::unique_ptr<Frontend>()>;
 using OptimizerFactory = std::function<std::unique_ptr<Optimizer>(const Properties&)>;
 using SamplerFactory = std::function<std::unique_ptr<Sampler>(const Properties&)>;
+using CacheFactory = std::function<std::unique_ptr<LightCacheBuilder>(const Properties&)>;
 
 /// The plugins a solve uses when the user names none: the one place in the
 /// framework that names a backend, an optimizer or a sampler.
@@ -28,6 +30,9 @@ struct PluginDefaults {
   static constexpr const char* renderer = "embree";
   static constexpr const char* optimizer = "varpro";
   static constexpr const char* sampler = "importance";
+  static constexpr const char* cache = "grid";
+  /// Not a plugin: the cache choice that solves without a light cache.
+  static constexpr const char* no_cache = "none";
 };
 
 /// What a renderer declares about itself at registration, so that the core
@@ -55,6 +60,7 @@ struct ModuleRecord {
   FrontendFactory create_frontend;
   OptimizerFactory create_optimizer;
   SamplerFactory create_sampler;
+  CacheFactory create_cache;
 };
 
 /// Handed to a module's register function; binds what it registers to its record.
@@ -68,6 +74,7 @@ public:
   void frontend(FrontendFactory create);
   void optimizer(OptimizerFactory create);
   void sampler(SamplerFactory create);
+  void cache(CacheFactory create);
 
 private:
   ModuleRecord& m_record;
@@ -99,6 +106,8 @@ public:
   std::unique_ptr<Optimizer> create_optimizer(const std::string& name, const Properties& properties) const;
   /// Creates a sampler; InputError for an unknown one or an unread option.
   std::unique_ptr<Sampler> create_sampler(const std::string& name, const Properties& properties) const;
+  /// Creates a light cache plugin; InputError for an unknown one or an unread option.
+  std::unique_ptr<LightCacheBuilder> create_cache(const std::string& name, const Properties& properties) const;
 
   /// The frontend that owns `command`, created on first use; nullptr if none.
   Frontend* frontend_for(const std::string& command);

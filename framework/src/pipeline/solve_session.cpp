@@ -2,6 +2,8 @@
 
 #include "hilight/pipeline/solve_renderers.hpp"
 
+#include "hilight/error.hpp"
+
 #include <algorithm>
 
 namespace hilight {
@@ -10,6 +12,9 @@ void SolveSession::check_names(const Registry& registry, const SolveSpec& spec) 
   registry.renderer_unavailable_reason(spec.renderer);  // throws for an unknown one
   if (!registry.find("optimizer", spec.optimizer)) registry.create_optimizer(spec.optimizer, {});  // throws naming the known ones
   if (!registry.find("sampler", spec.sampler)) registry.create_sampler(spec.sampler, {});
+  if (spec.cache != PluginDefaults::no_cache && !registry.find("cache", spec.cache)) registry.create_cache(spec.cache, {});
+  if (spec.cache == PluginDefaults::no_cache && !spec.cache_settings.empty())
+    throw InputError("cache settings given with no light cache (--cache " + spec.cache + ")");
 }
 
 SolveSession::SolveSession(const Registry& registry, SolveSpec spec, std::shared_ptr<const Scene> scene,
@@ -17,6 +22,9 @@ SolveSession::SolveSession(const Registry& registry, SolveSpec spec, std::shared
     : m_registry(registry), m_spec(std::move(spec)), m_scene(std::move(scene)), m_rays(std::move(rays)) {
   m_optimizer = registry.create_optimizer(m_spec.optimizer, Properties::from_assignments(m_spec.optimizer_settings));
   m_sampler = registry.create_sampler(m_spec.sampler, Properties::from_assignments(m_spec.sampler_settings));
+  check_names(registry, m_spec);
+  if (m_spec.cache != PluginDefaults::no_cache)
+    m_cache = registry.create_cache(m_spec.cache, Properties::from_assignments(m_spec.cache_settings));
   // D̄ is measured with the renderer as the user set it up (as `hilight
   // render` uses it); thousands of light positions are evaluated with its
   // fast twin, whose cheaper settings the plugin declares.
@@ -51,7 +59,7 @@ std::vector<std::string> SolveSession::preview_settings() const {
 }
 
 std::unique_ptr<Solver> SolveSession::make_solver(const SolveSettings& settings, ProgressFn progress) const {
-  return std::make_unique<Solver>(m_scene, m_rays, *m_fast, *m_reference, *m_sampler, *m_optimizer, settings,
+  return std::make_unique<Solver>(m_scene, m_rays, *m_fast, *m_reference, *m_sampler, *m_optimizer, m_cache.get(), settings,
                                   std::move(progress));
 }
 

@@ -2,6 +2,7 @@
 
 #include "hilight/error.hpp"
 #include "hilight/light_bounds.hpp"
+#include "hilight/light_cache_file.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/pipeline/cuts.hpp"
 #include "hilight/pipeline/diagnosis.hpp"
@@ -48,12 +49,13 @@ Lighting lights_of_cut(const LightHierarchy& h, size_t k, const Lighting& spots,
 size_t sample_count_for(size_t target_points) { return std::clamp<size_t>((target_points + 7) / 14, 3000, 10000); }
 
 Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
-               Renderer& reference, Sampler& sampler, Optimizer& optimizer, SolveSettings settings, ProgressFn progress)
+               Renderer& reference, Sampler& sampler, Optimizer& optimizer, const LightCacheBuilder* cache,
+               SolveSettings settings, ProgressFn progress)
     : m_scene(std::move(scene)), m_rays(std::move(rays)), m_closed_bounds(m_scene->light_bounds()),
       m_open_bounds(open_light_bounds(*m_scene)), m_space(std::in_place, *m_rays, settings.placement, m_closed_bounds),
       m_stoppable_renderer(renderer, m_stop), m_stoppable_reference(reference, m_stop), m_renderer(m_stoppable_renderer),
       m_reference(m_stoppable_reference), m_sampler(sampler),
-      m_optimizer(optimizer),
+      m_optimizer(optimizer), m_cache_builder(cache),
       m_settings(std::move(settings)), m_progress(std::move(progress)) {}
 
 void Solver::stage(const std::string& name) const {
@@ -69,7 +71,7 @@ float Solver::neighbourhood_radius() const {
 }
 
 void Solver::ensure_cache(SolveReport& report) {
-  if (!m_settings.use_cache) {
+  if (!m_cache_builder) {
     report.cache_state = "off";
     return;
   }
@@ -78,22 +80,27 @@ void Solver::ensure_cache(SolveReport& report) {
     return;
   }
   Stopwatch watch;
-  uint64_t key = LightCache::key(*m_scene, m_renderer.settings_key(), m_settings.cache);
+  const Bounds bounds = m_open ? m_open_bounds : m_closed_bounds;
+  const uint64_t key = light_cache_key(*m_scene, m_renderer.settings_key(), m_cache_builder->settings_key(), bounds);
   std::filesystem::path file;
   if (!m_settings.cache_dir.empty()) {
     file = m_settings.cache_dir / ("lightcache-" + hex(key) + ".bin");
-    m_cache = LightCache::load(file, key, m_scene->positions.size());
+    LoadedCache loaded = load_light_cache(file, key, *m_cache_builder, m_scene->positions.size());
+    m_cache = std::move(loaded.cache);
+    if (!loaded.damage.empty())
+      std::fprintf(stderr, "hilight: warning: light cache %s is unusable: %s; building it again\n", file.c_str(),
+                   loaded.damage.c_str());
   }
   if (m_cache) {
     report.cache_state = "loaded";
     touch_cache_file(file);  // recently used: evicted last
   } else {
     stage("building the light cache");
-    m_cache = LightCache::build(*m_scene, *m_rays, m_renderer, m_settings.cache);
+    m_cache = m_cache_builder->build({*m_scene, *m_rays, m_renderer, bounds});
     report.cache_state = "built";
     if (!file.empty()) {
       try {
-        m_cache->save(file);
+        save_light_cache(file, key, *m_cache);
         evict_cache(m_settings.cache_dir, m_settings.cache_cap_bytes, file);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "hilight: warning: light cache not saved to %s: %s\n", file.c_str(), e.what());
@@ -103,13 +110,16 @@ void Solver::ensure_cache(SolveReport& report) {
   report.seconds["cache"] += watch.seconds();
 }
 
+std::unique_ptr<LightCacheView> Solver::cache_view(const SampleSet& samples) const {
+  return m_cache ? m_cache->view(*m_scene, samples) : nullptr;
+}
+
 Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   const size_t m = samples.size();
   m_cuts.clear();
   m_hierarchy.reset();
-  std::optional<LightCacheView> view;
-  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
-  ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
+  const auto view = cache_view(samples);
+  ResponseModel model(m_renderer, samples, view.get());
 
   stage("seeding");
   Stopwatch seed_watch;
@@ -288,7 +298,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
   Lighting lights = solve_in_space(target, report);
   // Lights inside cannot explain the target: perhaps it is lit from outside
   // (a product, a facade). Look again beyond the open sides; keep the better.
-  const bool can_open = !m_settings.cache.open_space &&
+  const bool can_open = !m_open &&
                         (m_open_bounds.lo != m_closed_bounds.lo || m_open_bounds.hi != m_closed_bounds.hi);
   if (m_settings.open_space_dbar > 0 && report.dbar > m_settings.open_space_dbar && can_open &&
       !m_settings.placement.ceiling_offset) {
@@ -352,11 +362,10 @@ void Solver::drop_idle_lights(Lighting& lights) const {
 }
 
 void Solver::open_space(bool open) {
-  const bool is_open = m_settings.cache.open_space;
-  if (open == is_open) return;
+  if (open == m_open) return;
   std::shared_ptr<const Regions> regions = m_space->shared_regions();  // copied: emplace destroys the old space first
   m_space.emplace(*m_rays, m_settings.placement, open ? m_open_bounds : m_closed_bounds, std::move(regions));
-  m_settings.cache.open_space = open;
+  m_open = open;
   std::swap(m_cache, m_other_cache);
   m_hierarchy.reset();
   m_cuts.clear();

@@ -1,7 +1,8 @@
 #pragma once
 /// The one way to assemble a solve: from a registry, a SolveSpec (which
 /// plugins, their settings, the solve's settings) and a scene, the reference
-/// renderer, its fast twin, the sampler and the optimizer, and the Solvers
+/// renderer, its fast twin, the sampler, the optimizer and the light cache
+/// plugin, and the Solvers
 /// over them. `hilight solve`, `hilight bench solve` and the painter all
 /// build their solve here, so the same input gives the same lights anywhere.
 #include "hilight/pipeline/solver.hpp"
@@ -21,6 +22,8 @@ struct SolveSpec {
   std::vector<std::string> optimizer_settings;
   std::string sampler = PluginDefaults::sampler;
   std::vector<std::string> sampler_settings;
+  std::string cache = PluginDefaults::cache;  ///< PluginDefaults::no_cache: every φ from the renderer
+  std::vector<std::string> cache_settings;
   SolveSettings settings;  ///< its seed also seeds the renderers' sample streams
 };
 
@@ -63,6 +66,7 @@ private:
   std::unique_ptr<Renderer> m_reference, m_fast;
   std::unique_ptr<Sampler> m_sampler;
   std::unique_ptr<Optimizer> m_optimizer;
+  std::unique_ptr<LightCacheBuilder> m_cache;  ///< null: no light cache
 };
 
 } // namespace hilight

@@ -28,8 +28,6 @@ struct SolveSettings {
   uint64_t seed = 1;                 ///< sampling seed
   SeedSettings seeding;
   HierarchySettings hierarchy;
-  LightCacheSettings cache;
-  bool use_cache = true;             ///< false: every φ from the renderer
   std::filesystem::path cache_dir;   ///< empty: keep the cache in memory only
   uint64_t cache_cap_bytes = 1024ull << 20;  ///< the folder's size cap (least recently used files go first)
   size_t n_cut = 4;                  ///< N_cut: cuts refined
@@ -94,8 +92,10 @@ public:
   /// `renderer`: what the solve evaluates φ with (fast settings); `reference`:
   /// what D̄ is measured with (the user's settings, as `hilight render` uses
   /// them; may be the same object). Both bound to `scene`.
+  /// `cache`: the light cache plugin (nullptr: every φ from the renderer).
   Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
-         Renderer& reference, Sampler& sampler, Optimizer& optimizer, SolveSettings settings, ProgressFn progress = {});
+         Renderer& reference, Sampler& sampler, Optimizer& optimizer, const LightCacheBuilder* cache,
+         SolveSettings settings, ProgressFn progress = {});
   Solver(const Solver&) = delete;  // its renderers hold a reference to its stop token
   Solver& operator=(const Solver&) = delete;
 
@@ -156,6 +156,8 @@ private:
   /// bounds but within the open ones (lights from an earlier open solve).
   void open_space_for(const Lighting& lights);
   void ensure_cache(SolveReport& report);
+  /// The light cache restricted to `samples` (nullptr without a cache).
+  std::unique_ptr<LightCacheView> cache_view(const SampleSet& samples) const;
   /// The count bounds: --lights N, else the placement's count:MIN:MAX (0: none).
   size_t min_lights() const;
   size_t max_lights() const;
@@ -200,9 +202,11 @@ private:
   Renderer& m_reference;  ///< = m_stoppable_reference
   Sampler& m_sampler;
   Optimizer& m_optimizer;
+  const LightCacheBuilder* m_cache_builder;
   SolveSettings m_settings;
   ProgressFn m_progress;
-  std::optional<LightCache> m_cache, m_other_cache;  ///< the current space's light cache, the other's
+  bool m_open = false;  ///< lights are sought in the open space (beyond the scene's open sides)
+  std::unique_ptr<LightCache> m_cache, m_other_cache;  ///< the current space's light cache, the other's
   std::optional<LightHierarchy> m_hierarchy;
   std::vector<Lighting> m_cuts;  ///< index k-1: the cut with k point lights
 };

@@ -23,9 +23,8 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
   const size_t least = min_lights(), most = max_lights();
   if (m_settings.fixed_count != 0 && lights.size() >= least) return lights;
   const size_t m = samples.size();
-  std::optional<LightCacheView> view;
-  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
-  ResponseModel model(m_renderer, samples, view ? &*view : nullptr), exact(m_renderer, samples, nullptr);
+  const auto view = cache_view(samples);
+  ResponseModel model(m_renderer, samples, view.get()), exact(m_renderer, samples, nullptr);
   const Vec3 extent = m_space->bounds().extent();
   const float cell = std::max({extent.x, extent.y, extent.z}) / float(2 * std::max(1, m_settings.seeding.coarse_cells));
   // `base` plus the residual candidate that explains most of what `base`
@@ -125,9 +124,8 @@ Lighting Solver::split_lamps(const SampleSet& samples, Lighting lights, double& 
   const size_t most = max_lights();
   if (m_settings.fixed_count != 0 || dbar <= kSplitDbar || (most != 0 && lights.size() >= most)) return lights;
   const size_t m = samples.size();
-  std::optional<LightCacheView> view;
-  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
-  ResponseModel model(m_renderer, samples, view ? &*view : nullptr), exact(m_renderer, samples, nullptr);
+  const auto view = cache_view(samples);
+  ResponseModel model(m_renderer, samples, view.get()), exact(m_renderer, samples, nullptr);
   // Each sample's residual goes to the light that gives it the most light.
   const std::vector<Rgb> phi = model.responses(lights);
   const std::vector<Rgb> l = fit_intensities(phi, lights.size(), samples);

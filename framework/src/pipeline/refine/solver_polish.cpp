@@ -72,9 +72,8 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
   // The fast model (fast twin, light cache) found the positions; the
   // reference decides. Anchoring makes the model equal to the reference at
   // the lights it is anchored at, so every value compared below is exact.
-  std::optional<LightCacheView> view;
-  if (m_cache) view.emplace(*m_cache, *m_scene, samples);
-  ResponseModel model(m_renderer, samples, view ? &*view : nullptr);
+  const auto view = cache_view(samples);
+  ResponseModel model(m_renderer, samples, view.get());
   ResponseModel reference(m_reference, samples, nullptr);
   SampleRefineProblem problem(model, *m_space, &reference);
   const double norm = samples.target_norm();
