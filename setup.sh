@@ -13,7 +13,7 @@ BUILD_TYPE=${BUILD_TYPE:-Release}
 PACKAGES=(
   build-essential cmake ninja-build pkg-config python3
   libembree-dev libassimp-dev libglm-dev libopenexr-dev libpng-dev libtbb-dev
-  nlohmann-json3-dev libcli11-dev catch2 libeigen3-dev libstb-dev
+  nlohmann-json3-dev libcli11-dev catch2 libeigen3-dev libstb-dev libtinygltf-dev
   assimp-testmodels   # real broken and valid models the tests load
   povray              # the reference renderer (renderers/povray)
   libvulkan-dev mesa-vulkan-drivers glslc vulkan-validationlayers  # renderers/ism-vulkan (lavapipe without a GPU)

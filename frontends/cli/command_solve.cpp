@@ -4,6 +4,8 @@
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/lights_json.hpp"
+#include "hilight/io/gltf.hpp"
+#include "hilight/io/lights_file.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/pipeline/solve_session.hpp"
 #include "hilight/threads.hpp"
@@ -71,8 +73,10 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   SolveSettings& s = spec.settings;
   RendererOptions ropts;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
-  app.add_option("--target", target_path, "target PLY: x y z red green blue [weight]")->required();
-  app.add_option("-o,--output", output, "lights JSON to write")->required();
+  app.add_option("--target", target_path, "target PLY (x y z red green blue [weight]) or glTF with vertex colours (COLOR_0)")->required();
+  app.add_option("-o,--output", output, "lights to write: .json (hilight's), or .gltf/.glb (the scene's meshes and the lights as KHR_lights_punctual)")->required();
+  bool vertex_colours = false;
+  app.add_flag("--vertex-colours", vertex_colours, "with a .gltf/.glb output: the result as COLOR_0 and the target as COLOR_1 (alpha: weight) per vertex");
   app.add_option("--report", report_path, "write a JSON report (D̄, cuts, timings) here");
   app.add_option("--optimizer", spec.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
   app.add_option("--sampler", spec.sampler, "surface sampling plugin (importance, uniform)")->capture_default_str();
@@ -124,9 +128,10 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   if (mode == "solve" && !initial_path.empty()) throw InputError("--initial needs --mode fine-tune or add");
   check_writable(output);
   if (!report_path.empty()) check_writable(report_path);
-  Lighting initial = initial_path.empty() ? Lighting{} : read_lights_json(initial_path);
+  if (vertex_colours && !is_gltf_path(output)) throw InputError("--vertex-colours needs a .gltf or .glb output, not " + output);
+  Lighting initial = initial_path.empty() ? Lighting{} : read_lights_file(initial_path);
   if (!hints_path.empty()) {
-    s.spot_hints = read_lights_json(hints_path);
+    s.spot_hints = read_lights_file(hints_path);
     for (auto& h : s.spot_hints) {
       if (h.type != LightType::Spot) throw InputError(hints_path, "spot hints must be spotlights");
       h.intensity = Rgb(1.f);
@@ -155,7 +160,25 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   Lighting lights = mode == "fine-tune" ? solver.fine_tune(target, initial, report)
                     : mode == "add"     ? solver.add_lights(target, initial, report)
                                         : solver.solve(target, report);
-  write_lights_json(output, lights);
+  if (is_gltf_path(output)) {
+    GltfExport gltf;
+    gltf.scene = scene.get();
+    gltf.lights = lights;
+    gltf.figures = {{"lights", double(report.chosen)}, {"dbar", report.dbar}, {"dbar_points", double(report.dbar_points)}};
+    if (vertex_colours) {
+      gltf.result = session.reference().illuminate(SurfacePoints::from_vertices(*scene), lights);
+      gltf.target.assign(scene->positions.size(), Rgb(0.f));
+      gltf.target_weight.assign(scene->positions.size(), 0.f);
+      for (size_t i = 0; i < target.size(); ++i)
+        if (target.vertex[i] >= 0) {
+          gltf.target[size_t(target.vertex[i])] = target.value[i];
+          gltf.target_weight[size_t(target.vertex[i])] = target.weight[i];
+        }
+    }
+    write_gltf(output, gltf);
+  } else {
+    write_lights_json(output, lights);
+  }
   if (!report_path.empty()) {
     std::string text = report_json(report, spec.renderer, spec.optimizer, spec.sampler, mode).dump(2) + "\n";
     write_atomically(report_path, [&](const std::filesystem::path& temp) {

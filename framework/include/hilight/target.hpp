@@ -40,7 +40,8 @@ constexpr float kTargetSurfaceTolerance = 1e-3f;
 /// Reads a target PLY (red green blue as float = linear, or uchar = sRGB;
 /// optional float weight; optional nx ny nz) and binds each point: to the
 /// scene vertex it lies on (hilight/vertex_binding.hpp), else to the nearest
-/// surface point.
+/// surface point. A .gltf/.glb is read the same way from its vertex colours
+/// (COLOR_0, linear; weight from _WEIGHT or alpha; io/gltf.hpp).
 /// Throws InputError naming the file and how many points are wrong.
 Target read_target(const std::filesystem::path& path, const Scene& scene, const RayScene& rays);
 

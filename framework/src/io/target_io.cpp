@@ -1,6 +1,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/ply_reader.hpp"
 #include "hilight/target.hpp"
+#include "hilight/io/gltf.hpp"
 
 #include <cmath>
 
@@ -14,6 +15,10 @@ double srgb_decode(double encoded) {
 
 Target read_target(const std::filesystem::path& path, const Scene& scene, const RayScene& rays) {
   const std::string file = path.string();
+  if (is_gltf_path(path)) {  // vertex colours (COLOR_0) as the target
+    GltfColours colours = read_gltf_colours(path);
+    return bind_target(file, colours.positions, colours.values, colours.weights, scene, rays, colours.normals);
+  }
   PlyVertices ply = read_ply_vertices(path);
   for (const char* name : {"x", "y", "z", "red", "green", "blue"})
     if (!ply.has(name)) throw InputError(file, std::string("the vertex element has no '") + name + "' property");
