@@ -4,6 +4,8 @@
 // its importer's rules give, and come back from Blender's export unchanged.
 // Skipped (reported by ctest) where Blender is not installed.
 #include "hilight/io/gltf.hpp"
+#include "hilight/io/lights_file.hpp"
+#include "hilight/io/lights_json.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/target.hpp"
 #include "support.hpp"
@@ -140,4 +142,84 @@ TEST_CASE("a target painted in Blender as a colour attribute is read as linear R
     far_half += p.x > 3.f;
   }
   CHECK(far_half > target.size() / 4);
+}
+
+namespace {
+
+std::filesystem::path room_obj() { return std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj"; }
+
+Lighting ceiling_lamps(uint64_t seed, int count) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<float> x(0.8f, 5.2f), y(2.2f, 2.6f), z(0.8f, 4.2f), bright(0.2f, 0.4f);
+  Lighting lights;
+  for (int i = 0; i < count; ++i) lights.push_back(Light::point({x(rng), y(rng), z(rng)}, Rgb(bright(rng), bright(rng), bright(rng))));
+  return lights;
+}
+
+} // namespace
+
+TEST_CASE("a solve exported as glTF opens in Blender with its lights where the solve put them", "[gltf][blender][cli]") {
+  if (!have_blender()) return;
+  const auto dir = test::output_dir("gltf_blender_solve");
+  write_lights_json(dir / "truth.json", ceiling_lamps(7, 3));
+  REQUIRE(test::run_hilight({"render", room_obj().string(), "--lights", (dir / "truth.json").string(), "-o", (dir / "target.ply").string()}).exit_code == 0);
+  const auto solve = test::run_hilight({"solve", room_obj().string(), "--target", (dir / "target.ply").string(), "-o",
+                                        (dir / "solved.glb").string(), "--cache-dir", (dir / "cache").string()});
+  INFO(solve.err);
+  REQUIRE(solve.exit_code == 0);
+  const Lighting solved = read_gltf_lights(dir / "solved.glb");
+  REQUIRE(blender_roundtrip(dir / "solved.glb", dir / "blender.glb", dir / "blender.json"));
+  std::ifstream in(dir / "blender.json");
+  const auto report = nlohmann::json::parse(in);
+  REQUIRE(report["lights"].size() == solved.size());
+  for (const auto& b : report["lights"]) {
+    const Vec3 at(b["position"][0].get<float>(), b["position"][1].get<float>(), b["position"][2].get<float>());
+    float nearest = 1e9f;
+    for (const auto& l : solved) nearest = std::min(nearest, glm::length(l.position - at));
+    CHECK(nearest < 1e-3f);  // within 1 mm
+    CHECK(b["type"] == "POINT");
+  }
+}
+
+TEST_CASE("hilight finds the lights whose direct light Blender baked into vertex colours", "[gltf][blender][solve]") {
+  if (!have_blender()) return;
+  const auto dir = test::output_dir("gltf_blender_bake");
+  for (uint64_t seed : {3, 4}) {
+    INFO("seed " << seed);
+    const Lighting truth = ceiling_lamps(seed, 2);
+    write_lights_json(dir / "truth.json", truth);
+    REQUIRE(test::run_hilight({"export", room_obj().string(), "--lights", (dir / "truth.json").string(), "-o", (dir / "lit.glb").string()}).exit_code == 0);
+    REQUIRE(blender_roundtrip(dir / "lit.glb", dir / "baked.glb", dir / "blender.json", "bake"));
+    const auto solve = test::run_hilight({"solve", room_obj().string(), "--target", (dir / "baked.glb").string(), "-o",
+                                          (dir / "found.json").string(), "--bounces", "0", "--no-cache", "--report",
+                                          (dir / "report.json").string()});
+    INFO(solve.err);
+    REQUIRE(solve.exit_code == 0);
+    const Lighting found = read_lights_file(dir / "found.json");
+    CHECK(found.size() == truth.size());
+    for (const auto& t : truth) {
+      float nearest = 1e9f;
+      const Light* match = nullptr;
+      for (const auto& l : found)
+        if (glm::length(l.position - t.position) < nearest) {
+          nearest = glm::length(l.position - t.position);
+          match = &l;
+        }
+      CHECK(nearest < 0.05f);
+      if (match)
+        for (int c = 0; c < 3; ++c) CHECK(match->intensity[c] == Approx(t.intensity[c]).epsilon(0.05));
+    }
+    // Blender's rays leave corners and creases where hilight nudges its
+    // shading points inward (docs/rendering-model.md): measured, the two
+    // differ by 3.7% (L1) at the same vertices for the same lights. So the
+    // solve is held to what the true lights themselves reach.
+    const auto at_truth = test::run_hilight({"solve", room_obj().string(), "--target", (dir / "baked.glb").string(), "-o",
+                                             (dir / "tuned.json").string(), "--bounces", "0", "--no-cache", "--mode", "fine-tune",
+                                             "--initial", (dir / "truth.json").string(), "--report", (dir / "truth_report.json").string()});
+    REQUIRE(at_truth.exit_code == 0);
+    std::ifstream found_report(dir / "report.json"), truth_report(dir / "truth_report.json");
+    const double dbar = nlohmann::json::parse(found_report)["dbar"], dbar_truth = nlohmann::json::parse(truth_report)["dbar"];
+    INFO("D̄ found " << dbar << ", at the true lights (fine-tuned) " << dbar_truth);
+    CHECK(dbar <= dbar_truth + 0.005);
+  }
 }
