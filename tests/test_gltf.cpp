@@ -5,6 +5,7 @@
 #include "hilight/built_scenes.hpp"
 #include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_json.hpp"
+#include "hilight/io/ply_reader.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/real_model_scenes.hpp"
 #include "hilight/target.hpp"
@@ -247,4 +248,117 @@ TEST_CASE("broken and light-less glTF files are refused in one line with exit 2 
     }
   }
   CHECK(tried >= 8);
+}
+
+TEST_CASE("a glTF scene written by hilight renders with its own lights as the original scene does", "[gltf][cli]") {
+  const Lighting truth = {Light::point({1.5f, 2.5f, 1.1f}, Rgb(2.f)), Light::spot({4.f, 2.8f, 3.f}, {0.f, -1.f, 0.2f}, 35.f, Rgb(5.f), 8.f)};
+  const Exported e = export_room("scene_lights", truth);
+  const auto from_obj = e.dir / "obj.ply", from_glb = e.dir / "glb.ply";
+  REQUIRE(test::run_hilight({"render", e.scene.string(), "--lights", e.lights.string(), "-o", from_obj.string(), "--bounces", "0"}).exit_code == 0);
+  const auto r = test::run_hilight({"render", e.glb.string(), "-o", from_glb.string(), "--bounces", "0"});  // no --lights: the file's own
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const PlyVertices a = read_ply_vertices(from_obj), b = read_ply_vertices(from_glb);
+  std::map<std::tuple<float, float, float, float, float, float>, size_t> index;
+  auto key = [](const PlyVertices& p, size_t i) {
+    return std::make_tuple(float(p.properties.at("x")[i]), float(p.properties.at("y")[i]), float(p.properties.at("z")[i]),
+                           float(std::round(p.properties.at("nx")[i] * 100)), float(std::round(p.properties.at("ny")[i] * 100)),
+                           float(std::round(p.properties.at("nz")[i] * 100)));
+  };
+  for (size_t i = 0; i < a.count; ++i) index[key(a, i)] = i;
+  size_t matched = 0;
+  for (size_t i = 0; i < b.count; ++i) {
+    const auto found = index.find(key(b, i));
+    if (found == index.end()) continue;
+    ++matched;
+    for (const char* c : {"red", "green", "blue"})
+      CHECK(b.properties.at(c)[i] == Approx(a.properties.at(c)[found->second]).epsilon(1e-4).margin(1e-7));
+  }
+  CHECK(matched > a.count * 9 / 10);
+  // Without lights in the file, and without --lights, render says what is missing.
+  const auto none = test::run_hilight({"render", e.scene.string(), "-o", (e.dir / "none.ply").string()});
+  CHECK(none.exit_code == 2);
+  CHECK(test::line_count(none.err) == 1);
+}
+
+TEST_CASE("glTF written by hilight keeps the spec's rules for accessors, buffer views and the lights extension", "[gltf]") {
+  const auto dir = test::output_dir("gltf_valid");
+  auto scene = std::make_shared<const Scene>(load_scene(std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj", {}));
+  GltfExport out;
+  out.scene = scene.get();
+  out.lights = random_mix(9);
+  out.result.assign(scene->positions.size(), Rgb(3.f, 2.f, 1.f));
+  out.target.assign(scene->positions.size(), Rgb(1.f));
+  out.target_weight.assign(scene->positions.size(), 1.f);
+  write_gltf(dir / "s.gltf", out);
+  const auto j = read_json(dir / "s.gltf");
+  const size_t buffer_bytes = j["buffers"][0]["byteLength"];
+  CHECK(j["buffers"][0]["uri"].get<std::string>().rfind("data:application/octet-stream;base64,", 0) == 0);
+  for (const auto& v : j["bufferViews"]) {
+    CHECK(v["buffer"] == 0);
+    CHECK(v.value("byteOffset", 0) % 4 == 0);
+    CHECK(v.value("byteOffset", 0) + v["byteLength"].get<size_t>() <= buffer_bytes);
+  }
+  const std::map<std::string, size_t> components = {{"SCALAR", 1}, {"VEC3", 3}, {"VEC4", 4}};
+  for (const auto& a : j["accessors"]) {
+    const auto& v = j["bufferViews"][a["bufferView"].get<size_t>()];
+    const size_t size = a["componentType"] == 5126 || a["componentType"] == 5125 ? 4 : 0;
+    REQUIRE(size == 4);
+    CHECK(a.value("byteOffset", 0) + a["count"].get<size_t>() * components.at(a["type"]) * size <= v["byteLength"].get<size_t>());
+  }
+  for (const auto& p : j["meshes"][0]["primitives"]) {
+    const auto& position = j["accessors"][p["attributes"]["POSITION"].get<size_t>()];
+    CHECK(position.contains("min"));  // required for POSITION
+    CHECK(position.contains("max"));
+    for (const char* attribute : {"NORMAL", "COLOR_0", "COLOR_1"})
+      CHECK(j["accessors"][p["attributes"][attribute].get<size_t>()]["count"] == position["count"]);
+    CHECK(j["accessors"][p["indices"].get<size_t>()]["componentType"] == 5125);
+    CHECK(p["material"].get<size_t>() < j["materials"].size());
+  }
+  const auto& lights = j["extensions"]["KHR_lights_punctual"]["lights"];
+  size_t referenced = 0;
+  for (const auto& n : j["nodes"])
+    if (n.contains("extensions")) {
+      CHECK(n["extensions"]["KHR_lights_punctual"]["light"].get<size_t>() < lights.size());
+      ++referenced;
+    }
+  CHECK(referenced == lights.size());
+  for (const auto& l : lights) {
+    CHECK(l["intensity"].get<double>() >= 0);
+    for (const auto& c : l["color"]) CHECK((c.get<double>() >= 0 && c.get<double>() <= 1));
+    if (l["type"] == "spot") CHECK(l["spot"]["innerConeAngle"].get<double>() < l["spot"]["outerConeAngle"].get<double>());
+  }
+  // The colours are in [0, 1] with the scale that undoes them in the mesh's extras.
+  CHECK(j["meshes"][0]["extras"]["hilight"]["colour_scale"].get<double>() == Approx(3.0));
+  CHECK(read_gltf_colours(dir / "s.gltf").values[0].r == Approx(3.f));
+}
+
+TEST_CASE("glTF lights with a range, and COLOR_0 of the wrong length, are refused in one line", "[gltf][bad-input]") {
+  const auto dir = test::output_dir("gltf_bad_fields");
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  nlohmann::json ranged = {{"asset", {{"version", "2.0"}}},
+                           {"scenes", {{{"nodes", {0}}}}},
+                           {"nodes", {{{"translation", {1, 2, 1}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}}},
+                           {"extensions", {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"range", 4.0}}}}}}}}};
+  std::ofstream(dir / "ranged.gltf") << ranged.dump();
+  const auto r = test::run_hilight({"render", room, "--lights", (dir / "ranged.gltf").string(), "-o", (dir / "out.ply").string()});
+  CHECK(r.exit_code == 2);
+  CHECK(test::line_count(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("range"));
+  CHECK_FALSE(std::filesystem::exists(dir / "out.ply"));
+  // COLOR_0 with one vertex fewer than POSITION.
+  auto scene = std::make_shared<const Scene>(load_scene(room, {}));
+  GltfExport out;
+  out.scene = scene.get();
+  out.result.assign(scene->positions.size(), Rgb(0.5f));
+  write_gltf(dir / "colours.gltf", out);
+  auto j = read_json(dir / "colours.gltf");
+  const size_t colour = j["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"];
+  j["accessors"][colour]["count"] = j["accessors"][colour]["count"].get<size_t>() - 1;
+  std::ofstream(dir / "short.gltf") << j.dump();
+  const auto s = test::run_hilight({"solve", room, "--target", (dir / "short.gltf").string(), "-o", (dir / "l.json").string(), "--no-cache"});
+  CHECK(s.exit_code == 2);
+  CHECK(test::line_count(s.err) == 1);
+  CHECK_THAT(s.err, Catch::Contains("COLOR_0 and POSITION differ in count"));
+  CHECK_FALSE(std::filesystem::exists(dir / "l.json"));
 }

@@ -4,6 +4,7 @@
 #include "hilight/shadow_refinement.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/image_io.hpp"
+#include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_file.hpp"
 #include "hilight/io/ply.hpp"
 
@@ -49,7 +50,7 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   std::string refine_text = "0";
   RendererOptions ropts;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
-  app.add_option("--lights", lights_path, "lights: hilight JSON, or a glTF's KHR_lights_punctual (.gltf/.glb)")->required();
+  app.add_option("--lights", lights_path, "lights: hilight JSON, or a glTF's KHR_lights_punctual (.gltf/.glb); default: a glTF scene's own lights");
   app.add_option("-o,--output", outputs, "output: OUT.ply, OUT.png, OUT.exr, or OUT for .ply + .png (repeatable)")->required();
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
   app.add_option("--camera", camera_text, "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (default frames the scene)");
@@ -77,7 +78,9 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   // Everything that can be checked cheaply is checked before any work.
   std::vector<fs::path> paths = expand_outputs(outputs);
   for (const auto& p : paths) check_writable(p);
-  Lighting lights = read_lights_file(lights_path);
+  if (lights_path.empty() && !is_gltf_path(scene_path))
+    throw InputError("render: --lights is required (only a glTF scene carries its own lights)");
+  Lighting lights = read_lights_file(lights_path.empty() ? scene_path : lights_path);
   std::optional<Camera> camera;
   if (!camera_text.empty()) camera = Camera::parse(camera_text);
   registry.renderer_unavailable_reason(ropts.name);  // unknown renderer fails here, before loading

@@ -164,6 +164,9 @@ Lighting read_gltf_lights(const fs::path& path) {
     const std::string name = "light '" + (g.name.empty() ? std::to_string(index) : g.name) + "'";
     if (g.type != "point" && g.type != "spot")
       throw InputError(path.string(), name + " is a " + g.type + " light; hilight has point lights and spotlights only");
+    if (g.range > 0)
+      throw InputError(path.string(), name + " has a range (" + std::to_string(g.range) +
+                                          "); hilight's lights fall off by the inverse square without a cut-off: remove the range");
     Rgb colour(1.f);
     if (g.color.size() == 3) colour = Rgb(float(g.color[0]), float(g.color[1]), float(g.color[2]));
     const Rgb intensity = colour * float(g.intensity / kCandelaPerWattPerSr);
