@@ -30,6 +30,10 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--width", width, "image width the camera is set up for (.pov)")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height the camera is set up for (.pov)")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
+  std::string units_name = "radiometric";
+  app.add_option("--units", units_name, "a lights JSON's intensities: radiometric (W/sr) or photometric (candela)")
+      ->check(CLI::IsMember({"radiometric", "photometric"}))
+      ->capture_default_str();
   app.add_flag("--vertex-colours", vertex_colours, "glTF: the lights' illumination per vertex as COLOR_0 (the default renderer)");
   if (auto code = parse_arguments(app, args)) return *code;
 
@@ -38,7 +42,7 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   if (!gltf && ext != ".pov") throw InputError(output, "the output must end in .pov, .gltf or .glb");
   if (vertex_colours && !gltf) throw InputError("--vertex-colours needs a .gltf or .glb output, not " + output);
   check_writable(output);
-  Lighting lights = read_lights_file(lights_path);
+  Lighting lights = read_lights_file(lights_path, parse_units(units_name));
   std::optional<Camera> camera;
   if (!camera_text.empty()) camera = Camera::parse(camera_text);
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));

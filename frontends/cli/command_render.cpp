@@ -71,6 +71,10 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
         return n >= 0 && n <= 50000000 ? "" : "must be auto or a vertex count from 0 to 50000000";
       })
       ->capture_default_str();
+  std::string units_name = "radiometric";
+  app.add_option("--units", units_name, "radiometric: lights JSON in W/sr, PLY/EXR in W/(sr m2); photometric: candela and cd/m2 (x683)")
+      ->check(CLI::IsMember({"radiometric", "photometric"}))
+      ->capture_default_str();
   app.add_option("--exposure", exposure, "PNG exposure multiplier (default: automatic)")->check(FiniteNonNegative);
   ropts.add_to(app);
   if (auto code = parse_arguments(app, args)) return *code;
@@ -80,7 +84,8 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   for (const auto& p : paths) check_writable(p);
   if (lights_path.empty() && !is_gltf_path(scene_path))
     throw InputError("render: --lights is required (only a glTF scene carries its own lights)");
-  Lighting lights = read_lights_file(lights_path.empty() ? scene_path : lights_path);
+  const Units units = parse_units(units_name);
+  Lighting lights = read_lights_file(lights_path.empty() ? scene_path : lights_path, units);
   std::optional<Camera> camera;
   if (!camera_text.empty()) camera = Camera::parse(camera_text);
   registry.renderer_unavailable_reason(ropts.name);  // unknown renderer fails here, before loading
@@ -108,10 +113,12 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   for (const auto& path : paths) {
     if (path.extension() == ".ply") {
       std::vector<Rgb> radiance = renderer->illuminate(SurfacePoints::from_vertices(*scene), lights);
-      write_illuminated_ply(path, *scene, radiance);
+      write_illuminated_ply(path, *scene, radiance_to_units(std::move(radiance), units));
     } else {
       Camera cam = camera ? *camera : Camera::framing(scene->bounds, float(width) / float(height));
-      write_image(path, renderer->render_image(cam, lights, width, height), exposure);
+      Image image = renderer->render_image(cam, lights, width, height);
+      if (path.extension() == ".exr") image.pixels = radiance_to_units(std::move(image.pixels), units);  // PNG: exposed for display
+      write_image(path, image, exposure);
     }
     std::fprintf(stderr, "wrote %s\n", path.c_str());
   }

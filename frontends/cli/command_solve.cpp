@@ -7,6 +7,7 @@
 #include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_file.hpp"
 #include "hilight/light_cache_store.hpp"
+#include "hilight/units.hpp"
 #include "hilight/pipeline/solve_session.hpp"
 #include "hilight/threads.hpp"
 
@@ -76,6 +77,14 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--target", target_path, "target PLY (x y z red green blue [weight]) or glTF with vertex colours (COLOR_0)")->required();
   app.add_option("-o,--output", output, "lights to write: .json (hilight's), or .gltf/.glb (the scene's meshes and the lights as KHR_lights_punctual)")->required();
   bool vertex_colours = false;
+  std::string units_name = "radiometric", quantity_name = "luminance";
+  app.add_option("--units", units_name,
+                 "radiometric: lights JSON in W/sr, targets in W/(sr m2); photometric: candela, and targets in cd/m2 or lux (--target-quantity)")
+      ->check(CLI::IsMember({"radiometric", "photometric"}))
+      ->capture_default_str();
+  app.add_option("--target-quantity", quantity_name, "what the target's values are: luminance (radiance) or illuminance (lux on the surface, photometric)")
+      ->check(CLI::IsMember({"luminance", "radiance", "illuminance"}))
+      ->capture_default_str();
   app.add_flag("--vertex-colours", vertex_colours, "with a .gltf/.glb output: the result as COLOR_0 and the target as COLOR_1 (alpha: weight) per vertex");
   app.add_option("--report", report_path, "write a JSON report (D̄, cuts, timings) here");
   app.add_option("--optimizer", spec.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
@@ -129,9 +138,13 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   check_writable(output);
   if (!report_path.empty()) check_writable(report_path);
   if (vertex_colours && !is_gltf_path(output)) throw InputError("--vertex-colours needs a .gltf or .glb output, not " + output);
-  Lighting initial = initial_path.empty() ? Lighting{} : read_lights_file(initial_path);
+  const Units units = parse_units(units_name);
+  const TargetQuantity quantity = parse_target_quantity(quantity_name);
+  if (quantity == TargetQuantity::Illuminance && units != Units::Photometric)
+    throw InputError("--target-quantity illuminance is in lux: it needs --units photometric");
+  Lighting initial = initial_path.empty() ? Lighting{} : read_lights_file(initial_path, units);
   if (!hints_path.empty()) {
-    s.spot_hints = read_lights_file(hints_path);
+    s.spot_hints = read_lights_file(hints_path, units);
     for (auto& h : s.spot_hints) {
       if (h.type != LightType::Spot) throw InputError(hints_path, "spot hints must be spotlights");
       h.intensity = Rgb(1.f);
@@ -147,6 +160,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
   auto rays = std::make_shared<const RayScene>(*scene);
   Target target = read_target(target_path, *scene, *rays);
+  target_from_units(target, units, quantity);
   s.seed = seed;
   s.cache_dir = spec.cache == PluginDefaults::no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
   s.cache_cap_bytes = default_cache_cap_bytes();
@@ -177,10 +191,21 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     }
     write_gltf(output, gltf);
   } else {
-    write_lights_json(output, lights);
+    write_lights_file(output, lights, units);
   }
   if (!report_path.empty()) {
-    std::string text = report_json(report, spec.renderer, spec.optimizer, spec.sampler, mode).dump(2) + "\n";
+    nlohmann::json j = report_json(report, spec.renderer, spec.optimizer, spec.sampler, mode);
+    // Each light's luminous flux (lm) and the total: what a lighting designer budgets.
+    nlohmann::json flux = nlohmann::json::array();
+    double total = 0;
+    for (const auto& l : lights) {
+      flux.push_back(luminous_flux(l));
+      total += flux.back().get<double>();
+    }
+    j["luminous_flux_lm"] = flux;
+    j["total_luminous_flux_lm"] = total;
+    j["units"] = units_name;
+    std::string text = j.dump(2) + "\n";
     write_atomically(report_path, [&](const std::filesystem::path& temp) {
       std::ofstream out(temp, std::ios::binary);
       out << text;

@@ -5,8 +5,12 @@
 
 namespace hilight {
 
-Lighting read_lights_file(const std::filesystem::path& path) {
-  return is_gltf_path(path) ? read_gltf_lights(path) : read_lights_json(path);
+Lighting read_lights_file(const std::filesystem::path& path, Units units) {
+  return is_gltf_path(path) ? read_gltf_lights(path) : lights_from_units(read_lights_json(path), units);
+}
+
+void write_lights_file(const std::filesystem::path& path, const Lighting& lights, Units units) {
+  write_lights_json(path, lights_to_units(lights, units));
 }
 
 } // namespace hilight

@@ -1,12 +1,18 @@
 #pragma once
-/// A lights file by its extension: a hilight lights JSON, or a glTF
-/// (.gltf/.glb) whose KHR_lights_punctual lights are read (io/gltf.hpp).
+/// A lights file by its extension: a hilight lights JSON (intensities in
+/// `units`: W/sr, or candela when photometric), or a glTF (.gltf/.glb) whose
+/// KHR_lights_punctual lights are read (always candela, io/gltf.hpp).
+/// Returned in hilight's units (W/sr).
 #include "hilight/lighting.hpp"
+#include "hilight/units.hpp"
 
 #include <filesystem>
 
 namespace hilight {
 
-Lighting read_lights_file(const std::filesystem::path& path);
+Lighting read_lights_file(const std::filesystem::path& path, Units units = Units::Radiometric);
+
+/// Writes `lights` (hilight's units) as a lights JSON in `units`.
+void write_lights_file(const std::filesystem::path& path, const Lighting& lights, Units units = Units::Radiometric);
 
 } // namespace hilight
