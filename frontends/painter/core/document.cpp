@@ -1,6 +1,8 @@
 #include "core/document.hpp"
 
 #include "core/target_ply.hpp"
+#include "hilight/io/gltf.hpp"
+#include "hilight/io/lights_file.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/lights_json.hpp"
 
@@ -129,6 +131,14 @@ void Document::save_target(const std::filesystem::path& path) const {
     if (m_state.weight[v] > 0.f && !is_finite(m_state.psi[v]))
       throw InputError(path.string(), "not written: vertex " + std::to_string(v) +
                                           " has a non-finite painted value (a brightness too large for a float)");
+  if (is_gltf_path(path)) {  // the scene with the paint as COLOR_0, alpha the weight (docs/interchange.md)
+    GltfExport gltf;
+    gltf.scene = m_scene.get();
+    gltf.target = m_state.psi;
+    gltf.target_weight = m_state.weight;
+    write_gltf(path, gltf);
+    return;
+  }
   write_target_ply(path, points);
 }
 
@@ -166,11 +176,18 @@ void Document::save_lights(const std::filesystem::path& path) const {
       throw InputError(path.string(), "not written: light " + std::to_string(i) +
                                           " is not finite (an intensity or position too large for a float)");
   }
+  if (is_gltf_path(path)) {
+    GltfExport gltf;
+    gltf.scene = m_scene.get();
+    gltf.lights = m_state.lights;
+    write_gltf(path, gltf);
+    return;
+  }
   write_lights_json(path, m_state.lights);
 }
 
 void Document::load_lights(const std::filesystem::path& path) {
-  Lighting lights = read_lights_json(path);
+  Lighting lights = read_lights_file(path);
   set_lights(lights, "load lights " + path.filename().string());
 }
 
