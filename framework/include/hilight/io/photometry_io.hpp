@@ -1,0 +1,23 @@
+#pragma once
+/// Luminaire photometry files (hilight/photometry.hpp):
+/// - IES LM-63 (1986, 1991, 1995, 2002): TILT=NONE and TILT=INCLUDE (the
+///   factor at the luminaire's measured tilt, 0°, scales the candela);
+///   photometric types C and B (type A is refused); the candela multiplier,
+///   ballast factor and ballast-lamp factor applied; symmetric files (one C
+///   plane, 0–90°, 0–180°) extended as the standard says.
+/// - EULUMDAT (.ldt): Isym 0–4; intensities in cd/klm scaled by the lamps'
+///   total flux and the conversion factor.
+/// Every problem is an InputError naming the file and what is wrong.
+#include "hilight/photometry.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace hilight {
+
+/// By extension: .ies or .ldt (any case).
+Photometry read_photometry(const std::filesystem::path& path);
+Photometry parse_ies(const std::string& text, const std::string& source);
+Photometry parse_ldt(const std::string& text, const std::string& source);
+
+} // namespace hilight

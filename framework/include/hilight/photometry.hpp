@@ -1,0 +1,37 @@
+#pragma once
+/// A luminaire's light distribution (photometry): candela over a grid of
+/// angles, read from an IES LM-63 or EULUMDAT file (io/photometry_io.hpp).
+/// Angles are type C: γ from the nadir (the luminaire's aim, straight down
+/// when mounted as measured), C the plane around it, counter-clockwise from
+/// the luminaire's length axis seen from above. A type B file keeps its own
+/// grid and is looked up through the B↔C conversion. The shape is fixed and
+/// scaled by dimming, so a light with a profile stays linear in intensity.
+#include <string>
+#include <vector>
+
+namespace hilight {
+
+struct Photometry {
+  enum class Type { C, B };
+  /// How the stored planes extend to the full circle.
+  enum class Symmetry { None, Rotational, AboutC0C180, AboutC90C270, Quadrants };
+
+  std::string source;       ///< file, for messages
+  Type type = Type::C;
+  Symmetry symmetry = Symmetry::None;
+  std::vector<double> vertical;    ///< γ (type C) or V (type B), degrees, ascending
+  std::vector<double> horizontal;  ///< C (type C) or H (type B) of the stored planes, degrees, ascending
+  std::vector<double> candela;     ///< [plane * vertical.size() + i], at the rated lamp output
+  double rated_lumens = 0;  ///< the lamps' rated flux (0: absolute photometry, see flux())
+  double input_watts = 0;   ///< electrical input, 0 when the file does not say
+
+  /// Candela towards (C, γ) in degrees (type C angles whatever the file's type):
+  /// bilinear in the stored grid, 0 outside the measured range.
+  double intensity(double c_deg, double gamma_deg) const;
+  /// Luminous flux in lumens: the candela integrated over the sphere.
+  double flux() const;
+  /// The largest candela value.
+  double peak() const;
+};
+
+} // namespace hilight
