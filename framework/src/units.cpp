@@ -51,6 +51,10 @@ void target_from_units(Target& target, Units units, TargetQuantity quantity) {
 double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 double luminous_flux(const Light& light) {
+  if (light.type == LightType::Luminaire) {  // its profile's flux, scaled from peak candela to the light's
+    if (!light.profile || !(light.profile->peak() > 0)) return 0.0;
+    return kLumensPerWatt * luminance(light.intensity) * light.profile->flux() / light.profile->peak();
+  }
   double solid_angle = 4.0 * kPi;
   if (light.type == LightType::Spot) {
     const SpotCone cone = SpotCone::of(light);

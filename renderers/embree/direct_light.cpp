@@ -8,6 +8,10 @@ PreparedLight::PreparedLight(const Light& light) : position(light.position), int
     direction = glm::normalize(light.direction);
     cone = SpotCone::of(light);
   }
+  if (light.type == LightType::Luminaire) {
+    luminaire = &light;
+    frame = LuminaireFrame::of(light);
+  }
 }
 
 } // namespace hilight::embree

@@ -16,11 +16,17 @@ struct PreparedLight {
   Vec3 direction{0.f};
   SpotCone cone;
   Rgb intensity{1.f};
+  const Light* luminaire = nullptr;  ///< with a profile (the Light outlives the batch)
+  LuminaireFrame frame;
 
   explicit PreparedLight(const Light& light);
   /// Angular factor toward unit direction `to_point` (from the light):
-  /// smoothstep in the cosine between the cone's edge and its full-intensity core.
-  float angular(const Vec3& to_point) const { return spot ? cone.factor(glm::dot(direction, to_point)) : 1.f; }
+  /// smoothstep in the cosine between the cone's edge and its full-intensity
+  /// core; a luminaire's candela there over its peak (bilinear in its grid).
+  float angular(const Vec3& to_point) const {
+    if (luminaire) return luminaire_factor(*luminaire, frame, to_point);
+    return spot ? cone.factor(glm::dot(direction, to_point)) : 1.f;
+  }
 };
 
 /// Irradiance on one side of a surface at `at` — the side `side_normal`

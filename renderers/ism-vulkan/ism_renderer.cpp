@@ -377,6 +377,9 @@ void IsmRenderer::submit_and_wait(VkCommandBuffer cmd) {
 std::vector<Rgb> IsmRenderer::unit_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport) {
   std::lock_guard lock(m_mutex);
   if (!m_scene) throw std::logic_error("IsmRenderer: set_scene was not called");
+  for (const Light& l : lights)
+    if (l.type == LightType::Luminaire)
+      throw InputError("ism-vulkan does not evaluate luminaire profiles yet (" + l.profile_path + "): use --renderer embree");
   const size_t n = points.size();
   std::vector<Rgb> out(n * lights.size(), Rgb(0.f));
   m_clock->seconds.clear();

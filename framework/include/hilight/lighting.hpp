@@ -1,14 +1,18 @@
 #pragma once
-/// A lighting configuration: point lights and spotlights (rendering model in
-/// docs/rendering-model.md). Intensity is radiant intensity per channel, W/sr.
+/// A lighting configuration: point lights, spotlights and luminaires with a
+/// measured light distribution (rendering model in docs/rendering-model.md).
+/// Intensity is radiant intensity per channel, W/sr (a luminaire's: at the
+/// peak of its distribution).
 #include "hilight/math.hpp"
+#include "hilight/photometry.hpp"
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace hilight {
 
-enum class LightType { Point, Spot };
+enum class LightType { Point, Spot, Luminaire };
 
 struct Light {
   LightType type = LightType::Point;
@@ -17,6 +21,12 @@ struct Light {
   Vec3 direction{0.f, -1.f, 0.f}; ///< spot only; unit length
   float cutoff_deg = 30.f;        ///< spot only: half-angle of the cone
   float falloff_deg = 0.f;        ///< spot only: width of the soft edge inside the cutoff
+  /// Luminaire only: its photometry (IES/EULUMDAT), aimed along `direction`
+  /// (its nadir, γ = 0) with its C = 0 plane turned `spin_deg` about it from
+  /// the reference (luminaire_frame()); `profile_path` is where it came from.
+  std::shared_ptr<const Photometry> profile;
+  std::string profile_path;
+  float spin_deg = 0.f;
 
   static Light point(const Vec3& position, const Rgb& intensity) {
     Light l;
@@ -41,6 +51,21 @@ struct Light {
 };
 
 using Lighting = std::vector<Light>;
+
+/// A luminaire's axes: `nadir` (γ = 0), `c0` (the C = 0 plane's horizontal
+/// direction) and `c90` = c0 × nadir (counter-clockwise seen from behind the
+/// nadir, as type C angles run). The reference c0 is the world +X projected
+/// off the nadir (+Z when the nadir is along X), then turned by spin_deg.
+struct LuminaireFrame {
+  Vec3 nadir{0.f, -1.f, 0.f}, c0{1.f, 0.f, 0.f}, c90{0.f, 0.f, -1.f};
+  static LuminaireFrame of(const Light& light);
+  /// Type C angles (degrees) of the unit direction `to_point` from the luminaire.
+  void angles(const Vec3& to_point, double& c_deg, double& gamma_deg) const;
+};
+
+/// A luminaire's intensity towards unit direction `to_point` over its peak,
+/// in [0, 1] (the profile's shape; its `intensity` is the scale).
+float luminaire_factor(const Light& light, const LuminaireFrame& frame, const Vec3& to_point);
 
 /// A spotlight's cone as cosines, so hot loops need no trigonometry; one
 /// definition of the soft edge for every renderer (docs/rendering-model.md).

@@ -1,5 +1,6 @@
 // glTF out: one buffer, the scene as one mesh (a primitive per material,
 // sharing the vertex accessors), a node per light with KHR_lights_punctual.
+#include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/gltf.hpp"
 
@@ -153,6 +154,8 @@ glm::dquat aim(const Vec3& direction) {
 }
 
 void add_light(tinygltf::Model& model, const Light& l, size_t index, tinygltf::Node& node) {
+  if (l.type == LightType::Luminaire)
+    throw InputError("light " + std::to_string(index) + " is a luminaire with a measured profile: KHR_lights_punctual has only point and spot lights");
   tinygltf::Light light;
   light.name = "light " + std::to_string(index);
   light.type = l.type == LightType::Spot ? "spot" : "point";

@@ -2,8 +2,12 @@
 
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
+#include "hilight/io/gltf.hpp"
+#include "hilight/io/photometry_io.hpp"
 
 #include <fstream>
+#include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -34,9 +38,45 @@ float read_number(const json& obj, const char* key, float fallback, const std::s
   return v;
 }
 
-Light read_light(const json& obj, const std::string& where) {
+/// Profiles already read in this file (lights of one luminaire share one).
+using ProfileCache = std::map<std::string, std::shared_ptr<const Photometry>>;
+
+Light read_luminaire(const json& obj, Light light, const std::string& where, const std::filesystem::path& base,
+                     ProfileCache& profiles) {
+  light.type = LightType::Luminaire;
+  if (!obj.contains("profile") || !obj.at("profile").is_string()) throw InputError(where + ": a luminaire needs \"profile\": the .ies or .ldt file");
+  light.profile_path = obj.at("profile").get<std::string>();
+  const std::filesystem::path file = std::filesystem::path(light.profile_path).is_absolute() ? std::filesystem::path(light.profile_path)
+                                                                                               : base / light.profile_path;
+  light.profile_path = std::filesystem::absolute(file).lexically_normal().string();  // valid wherever the lights are written
+  auto& profile = profiles[light.profile_path];
+  if (!profile) profile = std::make_shared<const Photometry>(read_photometry(file));
+  light.profile = profile;
+  light.direction = Vec3(0.f, -1.f, 0.f);  // mounted as measured: aimed straight down
+  if (obj.contains("direction")) {
+    const Vec3 dir = read_vec3(obj, "direction", where);
+    if (!(glm::length(dir) > 1e-12f)) throw InputError(where + ": zero-length luminaire direction");
+    light.direction = glm::normalize(dir);
+  }
+  light.spin_deg = read_number(obj, "spin_deg", 0.f, where);
+  if (obj.contains("cutoff_deg") || obj.contains("falloff_deg")) throw InputError(where + ": a luminaire's shape is its profile (no cutoff_deg or falloff_deg)");
+  const bool has_intensity = obj.contains("intensity"), has_dimming = obj.contains("dimming");
+  if (has_intensity == has_dimming) throw InputError(where + ": give a luminaire either \"intensity\" (W/sr at its peak) or \"dimming\" (0-1 of its rated output)");
+  if (has_intensity) {
+    light.intensity = read_vec3(obj, "intensity", where);
+    if (glm::any(glm::lessThan(light.intensity, Vec3(0.f)))) throw InputError(where + ": negative intensity");
+  } else {
+    const float dimming = read_number(obj, "dimming", 1.f, where);
+    if (dimming < 0.f) throw InputError(where + ": dimming must be ≥ 0");
+    light.intensity = Rgb(float(dimming * profile->peak() / kCandelaPerWattPerSr));
+  }
+  return light;
+}
+
+Light read_light(const json& obj, const std::string& where, const std::filesystem::path& base, ProfileCache& profiles) {
   if (!obj.is_object()) throw InputError(where + ": must be an object");
-  static const char* kKnown[] = {"type", "position", "intensity", "direction", "cutoff_deg", "falloff_deg", "name"};
+  static const char* kKnown[] = {"type", "position", "intensity", "direction", "cutoff_deg", "falloff_deg", "name",
+                                 "profile", "spin_deg", "dimming"};
   for (const auto& [key, value] : obj.items())
     if (std::find(std::begin(kKnown), std::end(kKnown), key) == std::end(kKnown))
       throw InputError(where + ": unknown field \"" + key + "\"");
@@ -44,6 +84,9 @@ Light read_light(const json& obj, const std::string& where) {
   std::string type = obj.value("type", std::string("point"));
   Light light;
   light.position = read_vec3(obj, "position", where);
+  if (type == "luminaire") return read_luminaire(obj, std::move(light), where, base, profiles);
+  if (obj.contains("profile") || obj.contains("spin_deg") || obj.contains("dimming"))
+    throw InputError(where + ": profile, spin_deg and dimming belong to a luminaire (\"type\":\"luminaire\")");
   light.intensity = read_vec3(obj, "intensity", where);
   if (glm::any(glm::lessThan(light.intensity, Vec3(0.f)))) throw InputError(where + ": negative intensity");
   if (type == "point") {
@@ -62,7 +105,7 @@ Light read_light(const json& obj, const std::string& where) {
     if (light.falloff_deg < 0.f || light.falloff_deg > light.cutoff_deg)
       throw InputError(where + ": falloff_deg must be in [0, cutoff_deg]");
   } else {
-    throw InputError(where + ": unknown light type \"" + type + "\" (point or spot)");
+    throw InputError(where + ": unknown light type \"" + type + "\" (point, spot or luminaire)");
   }
   return light;
 }
@@ -73,15 +116,17 @@ Lighting parse_lights_json(const std::string& text, const std::string& source) {
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // a syntax error, or a number beyond a double (1e400)
     throw InputError(source, std::string("malformed JSON: ") + e.what());
   }
   if (!doc.is_object() || !doc.contains("lights") || !doc["lights"].is_array())
     throw InputError(source, "expected an object with a \"lights\" array");
   Lighting lights;
   const json& arr = doc["lights"];
+  ProfileCache profiles;
+  const std::filesystem::path base = std::filesystem::path(source).parent_path();
   try {
-    for (size_t i = 0; i < arr.size(); ++i) lights.push_back(read_light(arr[i], source + ": light " + std::to_string(i)));
+    for (size_t i = 0; i < arr.size(); ++i) lights.push_back(read_light(arr[i], source + ": light " + std::to_string(i), base, profiles));
   } catch (const json::exception& e) {  // a value of an unexpected JSON type
     throw InputError(source, std::string("malformed light: ") + e.what());
   }
@@ -108,6 +153,11 @@ std::string lights_to_json(const Lighting& lights) {
       o["direction"] = {l.direction.x, l.direction.y, l.direction.z};
       o["cutoff_deg"] = l.cutoff_deg;
       o["falloff_deg"] = l.falloff_deg;
+    }
+    if (l.type == LightType::Luminaire) {
+      o["profile"] = l.profile_path;
+      o["direction"] = {l.direction.x, l.direction.y, l.direction.z};
+      o["spin_deg"] = l.spin_deg;
     }
     o["intensity"] = {l.intensity.r, l.intensity.g, l.intensity.b};
     arr.push_back(o);

@@ -1,5 +1,7 @@
 #include "hilight/io/pov_export.hpp"
 
+#include "hilight/error.hpp"
+
 #include <cmath>
 #include <iomanip>
 
@@ -40,6 +42,8 @@ void write_pov_scene(std::ostream& out, const Scene& scene, const Lighting& ligh
 
   const float fd = pov_fade_distance(scene);
   for (const Light& l : lights) {
+    if (l.type == LightType::Luminaire)
+      throw InputError("POV-Ray has no measured light distributions: a luminaire (" + l.profile_path + ") cannot be exported or rendered by POV-Ray yet");
     out << "light_source { ";
     vec(out, l.position) << " color rgb ";
     vec(out, pov_colour(l.intensity, fd)) << "\n  fade_distance " << fd << " fade_power 2";

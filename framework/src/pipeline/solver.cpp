@@ -265,6 +265,9 @@ void Solver::finish_report(const Target& target, const Lighting& lights, SolveRe
 }
 
 void Solver::require_admissible(const Lighting& lights, const std::string& what) const {
+  for (size_t j = 0; j < lights.size(); ++j)
+    if (lights[j].type == LightType::Luminaire)
+      throw InputError(what + ": light " + std::to_string(j) + " is a luminaire with a profile; the solve does not optimize luminaires yet");
   for (size_t j = 0; j < lights.size(); ++j) {
     const Vec3& p = lights[j].position;
     const char* problem = !m_space->light_bounds().contains(p) ? "is outside the space lights may take (the scene's bounds)"
@@ -436,6 +439,9 @@ Lighting Solver::add_lights(const Target& target, const Lighting& lights, SolveR
   open_space_for(lights);
   open_space_for(m_settings.spot_hints);
   require_admissible(m_settings.spot_hints, "spot hints");
+  for (size_t j = 0; j < lights.size(); ++j)
+    if (lights[j].type == LightType::Luminaire)
+      throw InputError("lights to add to: light " + std::to_string(j) + " is a luminaire with a profile; the solve does not optimize luminaires yet");
   ensure_cache(report);
   // ΔΨ = max(Ψ − I(L), 0): what the current lights leave to be lit.
   std::vector<Rgb> current = illumination(target, lights);

@@ -1,0 +1,168 @@
+// Luminaires with a measured profile (issue 14) rendered by Embree: on a
+// floor, the direct light is the profile's candela towards each point ×
+// cos γ / d² (the analytic value, and the profile's own bilinear value); a
+// rotationally constant profile renders exactly as a point light, bounce
+// included; renderers and formats that cannot carry a profile say so.
+#include "hilight/io/lights_json.hpp"
+#include "hilight/io/photometry_io.hpp"
+#include "hilight/io/ply.hpp"
+#include "hilight/io/ply_reader.hpp"
+#include "hilight/io/scene_io.hpp"
+#include "hilight/scene_builders.hpp"
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+using namespace hilight;
+
+namespace {
+
+/// A quadrant-symmetric type C downlight: (100 + 50 cos 2C) (1 + cos γ) / 2 cd on a 5° × 15° grid.
+double profile_cd(double c, double g) {
+  return (100.0 + 50.0 * std::cos(2.0 * c * kPi / 180.0)) * (1.0 + std::cos(g * kPi / 180.0)) / 2.0;
+}
+
+std::string quadrant_ies() {
+  std::ostringstream s;
+  s << "IESNA:LM-63-2002\n[TEST] quadrants\nTILT=NONE\n1 1000 1 19 7 1 2 0.1 0.1 0.05\n1 1 20\n";
+  for (int g = 0; g <= 90; g += 5) s << g << " ";
+  s << "\n";
+  for (int c = 0; c <= 90; c += 15) s << c << " ";
+  s << "\n";
+  for (int c = 0; c <= 90; c += 15) {
+    for (int g = 0; g <= 90; g += 5) s << profile_cd(c, g) << " ";
+    s << "\n";
+  }
+  return s.str();
+}
+
+std::vector<Rgb> values(const std::filesystem::path& ply) {
+  const PlyVertices v = read_ply_vertices(ply);
+  std::vector<Rgb> out(v.count);
+  for (size_t i = 0; i < v.count; ++i)
+    out[i] = Rgb(float(v.properties.at("red")[i]), float(v.properties.at("green")[i]), float(v.properties.at("blue")[i]));
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("a luminaire over a floor lights each point by its profile's candela towards it", "[photometry][render]") {
+  const auto dir = test::output_dir("luminaire_floor");
+  std::ofstream(dir / "down.ies") << quadrant_ies();
+  auto scene = test::finish(builders::plane(4.f, Rgb(0.6f)), 0.25f);
+  write_illuminated_ply(dir / "floor.ply", *scene, std::vector<Rgb>(scene->positions.size(), Rgb(0.f)));
+  const Photometry profile = read_photometry(dir / "down.ies");
+  // The floor as `render` loads it (a PLY without materials takes the default albedo).
+  const std::vector<Rgb> albedo = load_scene(dir / "floor.ply", {0.25f}).vertex_albedo();
+  for (float spin : {0.f, 30.f}) {
+    INFO("spin " << spin);
+    std::ofstream(dir / "lights.json") << R"({"lights":[{"type":"luminaire","profile":"down.ies","position":[0.3,2,-0.2],"dimming":1,"spin_deg":)"
+                                       << spin << "}]}";
+    const auto r = test::run_hilight({"render", (dir / "floor.ply").string(), "--lights", (dir / "lights.json").string(), "-o",
+                                      (dir / "lit.ply").string(), "--bounces", "0", "--max-edge", "0.25"});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const PlyVertices lit = read_ply_vertices(dir / "lit.ply");
+    const auto rendered = values(dir / "lit.ply");
+    const Vec3 at(0.3f, 2.f, -0.2f);
+    const double intensity = profile.peak() / 683.0 / profile.peak();  // dimming 1: W/sr per cd
+    size_t checked = 0;
+    for (size_t i = 0; i < lit.count; ++i) {
+      const Vec3 p(float(lit.properties.at("x")[i]), float(lit.properties.at("y")[i]), float(lit.properties.at("z")[i]));
+      const Vec3 d = p - at;
+      const double dist = glm::length(d), cos_g = -d.y / dist;
+      const double gamma = std::acos(cos_g) * 180.0 / kPi;
+      // c0 = (cos s, 0, −sin s), c90 = (−sin s, 0, −cos s) for the nadir −Y turned by spin s.
+      const double s = spin * kPi / 180.0;
+      double c = std::atan2(d.x * -std::sin(s) + d.z * -std::cos(s), d.x * std::cos(s) + d.z * -std::sin(s)) * 180.0 / kPi;
+      if (c < 0) c += 360.0;
+      const double e_grid = profile.intensity(c, gamma) * intensity * cos_g / (dist * dist);
+      const double e_analytic = profile_cd(c, gamma) * intensity * cos_g / (dist * dist);
+      REQUIRE(i < albedo.size());
+      const double radiance = albedo[i].r / kPi;
+      CHECK(rendered[i].r == Approx(radiance * e_grid).epsilon(2e-4).margin(1e-9));
+      INFO("C " << c << " gamma " << gamma << " grid " << profile.intensity(c, gamma) << " analytic " << profile_cd(c, gamma));
+      // Bilinear between 15° planes: up to 3.5% where cos 2C bends most against its value (C near 90°).
+      CHECK(rendered[i].r == Approx(radiance * e_analytic).epsilon(0.045).margin(1e-7));
+      ++checked;
+    }
+    CHECK(checked == scene->positions.size());
+  }
+}
+
+TEST_CASE("a luminaire of constant candela renders exactly as a point light, the bounce included", "[photometry][render]") {
+  const auto dir = test::output_dir("luminaire_constant");
+  std::ostringstream ldt;
+  ldt << "hilight tests\n1\n1\n1\n0\n19\n10\nreport\nround\n1\nround.ldt\n2026\n";
+  for (int k = 0; k < 9; ++k) ldt << "100\n";
+  ldt << "50\n100\n1\n0\n1\n1\nLED\n2000\n3000\n80\n20\n";
+  for (int k = 0; k < 10; ++k) ldt << "0.5\n";
+  ldt << "0\n";
+  for (int g = 0; g <= 180; g += 10) ldt << g << "\n";
+  for (int g = 0; g <= 180; g += 10) ldt << 200 << "\n";
+  std::ofstream(dir / "round.ldt") << ldt.str();
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  // 200 cd/klm × 2 klm = 400 cd = 400/683 W/sr.
+  std::ofstream(dir / "luminaire.json") << R"({"lights":[{"type":"luminaire","profile":"round.ldt","position":[2,2.4,2],"intensity":[1,0.8,0.6],"direction":[0.3,-1,0.2]}]})";
+  const double scale = 1.0;  // intensity is W/sr at the peak, and every direction is the peak
+  std::ofstream(dir / "point.json") << R"({"lights":[{"type":"point","position":[2,2.4,2],"intensity":[1,0.8,0.6]}]})";
+  (void)scale;
+  for (const char* name : {"luminaire", "point"})
+    REQUIRE(test::run_hilight({"render", room, "--lights", (dir / (std::string(name) + ".json")).string(), "-o",
+                               (dir / (std::string(name) + ".ply")).string()}).exit_code == 0);
+  const auto a = values(dir / "luminaire.ply"), b = values(dir / "point.ply");
+  REQUIRE(a.size() == b.size());
+  size_t equal = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const bool same = glm::length(a[i] - b[i]) <= 1e-5f * glm::length(b[i]) + 1e-12f;
+    if (!same && equal + 100 > i) UNSCOPED_INFO("vertex " << i << ": " << a[i].r << " against " << b[i].r);
+    equal += same;
+  }
+  CHECK(equal == a.size());
+  // Its flux in the report's terms: 683 × Y(I) × 4π.
+  const Lighting lights = read_lights_json(dir / "luminaire.json");
+  REQUIRE(lights.size() == 1);
+  CHECK(lights[0].type == LightType::Luminaire);
+  CHECK(lights[0].profile->rated_lumens == 2000.0);
+  // Written back: the profile's absolute path, so the file works from anywhere.
+  std::filesystem::create_directories(dir / "sub");
+  write_lights_json(dir / "sub" / "copy.json", lights);
+  CHECK(read_lights_json(dir / "sub" / "copy.json")[0].profile->peak() == Approx(400.0));
+}
+
+TEST_CASE("where a luminaire cannot go yet, the command says so in one line", "[photometry][bad-input]") {
+  const auto dir = test::output_dir("luminaire_refused");
+  std::ofstream(dir / "down.ies") << quadrant_ies();
+  std::ofstream(dir / "l.json") << R"({"lights":[{"type":"luminaire","profile":"down.ies","position":[2,2.4,2],"dimming":0.5}]})";
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  REQUIRE(test::run_hilight({"render", room, "--lights", (dir / "l.json").string(), "-o", (dir / "t.ply").string()}).exit_code == 0);
+  std::vector<std::vector<std::string>> refused = {
+      {"export", room, "--lights", (dir / "l.json").string(), "-o", (dir / "s.pov").string()},
+      {"export", room, "--lights", (dir / "l.json").string(), "-o", (dir / "s.glb").string()},
+      {"solve", room, "--target", (dir / "t.ply").string(), "-o", (dir / "f.json").string(), "--mode", "fine-tune", "--initial",
+       (dir / "l.json").string(), "--no-cache"}};
+  if (!test::skip_without_renderer("ism-vulkan"))
+    refused.push_back({"render", room, "--lights", (dir / "l.json").string(), "-o", (dir / "i.ply").string(), "--renderer", "ism-vulkan"});
+  for (const auto& args : refused) {
+    INFO(args[0] << " " << args.back());
+    const auto r = test::run_hilight(args);
+    CHECK(r.exit_code == 2);
+    CHECK(test::line_count(r.err) == 1);
+  }
+  for (const char* out : {"s.pov", "s.glb", "f.json", "i.ply"}) CHECK_FALSE(std::filesystem::exists(dir / out));
+  // A luminaire without its profile, or with both intensity and dimming.
+  std::ofstream(dir / "bad.json") << R"({"lights":[{"type":"luminaire","profile":"missing.ies","position":[2,2.4,2],"dimming":1}]})";
+  const auto missing = test::run_hilight({"render", room, "--lights", (dir / "bad.json").string(), "-o", (dir / "x.ply").string()});
+  CHECK(missing.exit_code == 2);
+  CHECK_THAT(missing.err, Catch::Contains("missing.ies"));
+  std::ofstream(dir / "both.json") << R"({"lights":[{"type":"luminaire","profile":"down.ies","position":[2,2.4,2],"dimming":1,"intensity":[1,1,1]}]})";
+  CHECK(test::run_hilight({"render", room, "--lights", (dir / "both.json").string(), "-o", (dir / "x.ply").string()}).exit_code == 2);
+  // A number beyond a double in a lights file: the file and the problem, exit 2 (issue 15).
+  std::ofstream(dir / "huge.json") << R"({"lights":[{"type":"point","position":[1e400,2,1],"intensity":[1,1,1]}]})";
+  const auto huge = test::run_hilight({"render", room, "--lights", (dir / "huge.json").string(), "-o", (dir / "x.ply").string()});
+  CHECK(huge.exit_code == 2);
+  CHECK_THAT(huge.err, Catch::Contains("huge.json"));
+}
