@@ -60,11 +60,11 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   // (Loaded by the document directly: its errors name the file, not a script action.)
   if (!m_options.target.empty()) {
     m_document->load_target(m_options.target);
-    record(Action{"load_target", {{"path", absolute(m_options.target)}}});
+    record(LoadTargetAction{absolute(m_options.target)});
   }
   if (!m_options.lights.empty()) {
     m_document->load_lights(m_options.lights);
-    record(Action{"load_lights", {{"path", absolute(m_options.lights)}}});
+    record(LoadLightsAction{absolute(m_options.lights)});
   }
 
   // The window last: input problems surface first, even without a display.
@@ -108,7 +108,7 @@ int PainterApp::run() {
       const Action& action = m_script->actions[i];
       m_player->apply(action, i);
       record(action);
-      if (action.type == "camera") m_last_activity = "camera";
+      if (action.type == CameraAction::kType) m_last_activity = "camera";
       frame(false);
       m_last_activity = "idle";
     }
@@ -210,7 +210,7 @@ void PainterApp::poll_workers() {
       // A stroke ended while this job ran: its fine-tune starts now.
       m_fine_tune_queued = false;
       m_stroke_released = Clock::now();
-      m_fine_tune_after_stroke = perform(Action{"fine_tune", nlohmann::json::object()});
+      m_fine_tune_after_stroke = perform(FineTuneAction{});
       if (!m_fine_tune_after_stroke) m_stroke_released.reset();
     }
   }
@@ -325,7 +325,7 @@ void PainterApp::build_overlays() {
                                                                      : glm::vec4(0.6f, 0.6f, 0.65f, 1.f);
   for (const Vec3& p : m_region) m_lines->point(p, region_colour, 5.f);
   for (const auto& pair : m_shadow_pairs)
-    for (const auto& p : pair["world"]) m_lines->point(Vec3(p[0].get<float>(), p[1].get<float>(), p[2].get<float>()), glm::vec4(0.45f, 0.45f, 0.5f, 1.f), 5.f);
+    for (const Vec3& p : pair.points.world) m_lines->point(p, glm::vec4(0.45f, 0.45f, 0.5f, 1.f), 5.f);
   if (m_occluder_point && m_player->tool() == Tool::Shadow) {
     Hit hit = m_rays->closest_point(*m_occluder_point, 0.01f * diagonal);
     if (hit.valid()) ui::add_box_marker(*m_lines, m_player->objects().bounds(m_player->objects().object_of_triangle(hit.triangle)),

@@ -65,11 +65,13 @@ private:
 
   // --- actions (painter_session_hooks.cpp) ---
   PlayerHooks make_hooks();
-  void apply_camera_action(const Action& action);
+  void apply_camera_action(const CameraAction& action);
   /// Applies through the player and records it; errors go to the status line
   /// (interactive) — returns false then.
   bool perform(const Action& action);
+  bool perform(const TypedAction& action) { return perform(untyped(action)); }
   void record(const Action& action);
+  void record(const TypedAction& action) { record(untyped(action)); }
   void unrecord_failed_job();
   std::filesystem::path default_record_path() const;
   void screenshot(const std::filesystem::path& path);
@@ -88,7 +90,8 @@ private:
   void finish_stroke();
   /// The shadow tool's requests become a `shadow` action.
   void lights_from_shadows();
-  void start_job(const std::string& type);
+  /// Performs a solve, fine-tune or add-lights action unless a job runs.
+  void start_job(const TypedAction& job);
 
   // --- panels (painter_panels.cpp) ---
   void draw_panels();
@@ -154,7 +157,7 @@ private:
   std::vector<Vec3> m_region;                   ///< points of a shadow/spot/adjust drag
   bool m_region_drag = false;
   std::optional<Vec3> m_occluder_point;         ///< shadow tool: the selected occluder (a point on it)
-  std::vector<nlohmann::json> m_shadow_pairs;   ///< shadow tool: requests collected so far
+  std::vector<ShadowAction::Pair> m_shadow_pairs;  ///< shadow tool: requests collected so far
   std::optional<Vec3> m_erase_click;            ///< erase-shadow click awaiting a pick
   std::vector<ShadowPair> m_pair_choices;
   Rgb m_adjust_multiplier{1.2f};

@@ -12,12 +12,6 @@ namespace hilight::painter {
 
 namespace {
 
-nlohmann::json points_json(const std::vector<Vec3>& points) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const Vec3& p : points) out.push_back({p.x, p.y, p.z});
-  return out;
-}
-
 /// At most `limit` points, evenly thinned (a long drag samples every frame).
 std::vector<Vec3> thinned(const std::vector<Vec3>& points, size_t limit) {
   if (points.size() <= limit) return points;
@@ -67,7 +61,9 @@ void PainterApp::handle_camera_input() {
   if (!io.WantCaptureMouse && io.MouseWheel != 0.f) {
     m_camera.zoom(std::pow(0.9f, io.MouseWheel));
     m_last_activity = "camera";
-    record(Action{"camera", {{"zoom", std::pow(0.9f, io.MouseWheel)}}});
+    CameraAction zoom;
+    zoom.zoom = std::pow(0.9f, io.MouseWheel);
+    record(zoom);
   }
 }
 
@@ -77,27 +73,27 @@ void PainterApp::handle_keys() {
   if (io.KeyCtrl && pressed(GLFW_KEY_Q)) m_window->request_close();  // even with a dialog open
   if (io.WantCaptureKeyboard) return;
   if (io.KeyCtrl) {
-    if (pressed(GLFW_KEY_Z) && !io.KeyShift) perform(Action{"undo", nlohmann::json::object()});
-    if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) perform(Action{"redo", nlohmann::json::object()});
+    if (pressed(GLFW_KEY_Z) && !io.KeyShift) perform(UndoAction{});
+    if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) perform(RedoAction{});
     return;
   }
-  auto select = [&](const char* tool) { perform(Action{"tool", {{"tool", tool}}}); };
-  if (pressed(GLFW_KEY_B)) select("brush");
-  if (pressed(GLFW_KEY_E)) select("eraser");
-  if (pressed(GLFW_KEY_S)) select("shadow");
-  if (pressed(GLFW_KEY_X)) select("erase_shadow");
-  if (pressed(GLFW_KEY_P)) select("spot");
-  if (pressed(GLFW_KEY_A)) select("adjust");
+  auto select = [&](Tool tool) { perform(ToolAction{tool}); };
+  if (pressed(GLFW_KEY_B)) select(Tool::Brush);
+  if (pressed(GLFW_KEY_E)) select(Tool::Eraser);
+  if (pressed(GLFW_KEY_S)) select(Tool::Shadow);
+  if (pressed(GLFW_KEY_X)) select(Tool::EraseShadow);
+  if (pressed(GLFW_KEY_P)) select(Tool::Spot);
+  if (pressed(GLFW_KEY_A)) select(Tool::Adjust);
   // Views are recorded actions, so a replay's screenshots show what the designer saw.
-  if (pressed(GLFW_KEY_1)) perform(Action{"view", {{"show", "result"}}});
-  if (pressed(GLFW_KEY_2)) perform(Action{"view", {{"show", "target"}}});
-  if (pressed(GLFW_KEY_3)) perform(Action{"view", {{"show", "difference"}}});
+  if (pressed(GLFW_KEY_1)) perform(ViewAction{ViewShown::Result});
+  if (pressed(GLFW_KEY_2)) perform(ViewAction{ViewShown::Target});
+  if (pressed(GLFW_KEY_3)) perform(ViewAction{ViewShown::Difference});
   if (pressed(GLFW_KEY_L)) m_show_lights = !m_show_lights;
   if (pressed(GLFW_KEY_F1) || pressed(GLFW_KEY_H)) m_show_help = !m_show_help;
   if ((pressed(GLFW_KEY_ENTER) || pressed(GLFW_KEY_KP_ENTER)) && m_player->tool() == Tool::Shadow) lights_from_shadows();
-  if (pressed(GLFW_KEY_F5)) start_job("solve");
-  if (pressed(GLFW_KEY_F6)) start_job("fine_tune");
-  if (pressed(GLFW_KEY_F7)) start_job("add_lights");
+  if (pressed(GLFW_KEY_F5)) start_job(SolveAction{});
+  if (pressed(GLFW_KEY_F6)) start_job(FineTuneAction{});
+  if (pressed(GLFW_KEY_F7)) start_job(AddLightsAction{});
   if (pressed(GLFW_KEY_ESCAPE) && m_job->busy()) m_job->cancel();
   if (pressed(GLFW_KEY_F)) {
     m_camera = ui::OrbitCamera::framing(m_scene->bounds, aspect());
@@ -108,7 +104,9 @@ void PainterApp::handle_keys() {
     brush.radius *= pressed(GLFW_KEY_LEFT_BRACKET) ? 0.8f : 1.25f;
     // Within the radius slider's range, as a typed-in value would be.
     brush.radius = std::clamp(brush.radius, 0.002f * m_scene->diagonal(), 0.25f * m_scene->diagonal());
-    perform(Action{"brush", {{"radius", brush.radius}}});
+    BrushAction radius;
+    radius.radius = brush.radius;
+    perform(radius);
   }
   // Arrow keys orbit, +/- zoom: the camera without a mouse.
   const float step = 3.f;
@@ -131,15 +129,19 @@ void PainterApp::handle_keys() {
 void PainterApp::record_camera() {
   // Absolute (eye, target, fov): replays see the same view whatever came before.
   const Camera c = m_camera.to_camera();
-  record(Action{"camera", {{"eye", {c.eye.x, c.eye.y, c.eye.z}}, {"target", {c.target.x, c.target.y, c.target.z}}, {"fov", c.fov_deg}}});
+  CameraAction pose;
+  pose.eye = c.eye;
+  pose.target = c.target;
+  pose.fov = c.fov_deg;
+  record(pose);
 }
 
-void PainterApp::start_job(const std::string& type) {
+void PainterApp::start_job(const TypedAction& job) {
   if (m_job->busy()) {
-    status("a " + std::string(type == "solve" ? "solve" : "job") + " is already running (Esc cancels it)");
+    status("a " + std::string(std::holds_alternative<SolveAction>(job) ? "solve" : "job") + " is already running (Esc cancels it)");
     return;
   }
-  perform(Action{type, nlohmann::json::object()});
+  perform(job);
 }
 
 void PainterApp::handle_tool_input() {
@@ -155,7 +157,7 @@ void PainterApp::handle_tool_input() {
   if (tool == Tool::Brush || tool == Tool::Eraser) {
     if (pressed) {
       m_stroke = std::make_unique<Stroke>(*m_document, m_player->brush(), tool == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint);
-      if (m_view == ui::ViewMode::Result) perform(Action{"view", {{"show", "target"}}});  // paint is seen in the target view
+      if (m_view == ui::ViewMode::Result) perform(ViewAction{ViewShown::Target});  // paint is seen in the target view
       if (m_hover) m_stroke->dab(*m_hover);
     } else if (m_stroke && down && m_hover && (io.MouseDelta.x != 0.f || io.MouseDelta.y != 0.f)) {
       if (m_stroke->points().empty()) m_stroke->dab(*m_hover);
@@ -170,7 +172,7 @@ void PainterApp::handle_tool_input() {
       auto pairs = find_shadow_pairs(m_player->objects(), *m_rays, m_document->state().lights, *m_hover);
       const Vec3 p = m_hover->position;
       if (pairs.empty()) status("no light is blocked here: nothing to erase");
-      else if (pairs.size() == 1) perform(Action{"erase_shadow", {{"world", {p.x, p.y, p.z}}}});
+      else if (pairs.size() == 1) perform(EraseShadowAction{p, std::nullopt, std::nullopt});
       else {
         m_erase_click = p;
         m_pair_choices = pairs;  // the "Which shadow?" popup asks which to erase
@@ -193,7 +195,7 @@ void PainterApp::lights_from_shadows() {
     status("no shadow requests yet: click an occluder, then drag where its shadow falls");
     return;
   }
-  if (perform(Action{"shadow", {{"pairs", m_shadow_pairs}}})) m_shadow_pairs.clear();
+  if (perform(ShadowAction{m_shadow_pairs})) m_shadow_pairs.clear();
 }
 
 void PainterApp::finish_stroke() {
@@ -204,8 +206,7 @@ void PainterApp::finish_stroke() {
   m_stroke.reset();
   if (points.empty()) return;
   // With the normals: a replay paints the same faces (pick_near may choose the other one at a crease).
-  record(Action{"stroke", {{"world", points_json(points)}, {"normals", points_json(normals)},
-                           {"mode", mode == BrushMode::Erase ? "erase" : "paint"}}});
+  record(StrokeAction{PointSet{points, {}, normals}, mode == BrushMode::Erase});
   // §4.2 fine-tune: the lights follow the edit at once when there are any.
   if (m_options.auto_fine_tune && !m_document->state().lights.empty()) {
     if (m_job->busy()) {
@@ -247,18 +248,24 @@ void PainterApp::finish_region_drag() {
       return;
     }
     const Vec3 o = *m_occluder_point;
-    m_shadow_pairs.push_back({{"occluder", {o.x, o.y, o.z}}, {"world", points_json(region)}});
+    m_shadow_pairs.push_back(ShadowAction::Pair{o, std::nullopt, PointSet{region, {}, {}}});
     status(std::to_string(m_shadow_pairs.size()) + " shadow request(s): press 'Lights from shadows', or add more");
   } else if (tool == Tool::Spot) {
     const Camera c = m_camera.to_camera();
     const Vec3 d = glm::normalize(c.target - c.eye);
-    perform(Action{"spot_region",
-                   {{"world", points_json(region)}, {"eye", {c.eye.x, c.eye.y, c.eye.z}}, {"direction", {d.x, d.y, d.z}},
-                    {"falloff_deg", m_spot_falloff}}});
+    SpotRegionAction spot;
+    spot.points.world = region;
+    spot.eye = c.eye;
+    spot.direction = d;
+    spot.falloff_deg = m_spot_falloff;
+    perform(spot);
   } else if (tool == Tool::Adjust) {
     const Rgb& m = m_adjust_multiplier;
-    perform(Action{"adjust_region",
-                   {{"world", points_json(region)}, {"multiplier", {m.r, m.g, m.b}}, {"radius", m_player->brush().radius}}});
+    AdjustRegionAction adjust;
+    adjust.points.world = region;
+    adjust.multiplier = m;
+    adjust.radius = m_player->brush().radius;
+    perform(adjust);
   }
 }
 

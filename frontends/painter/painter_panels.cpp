@@ -88,7 +88,7 @@ void PainterApp::panel_tools() {
   for (size_t i = 0; i < std::size(tools); ++i) {
     if (i % 2) ImGui::SameLine(150);
     if (ImGui::RadioButton(tools[i].label, m_player->tool() == tools[i].tool))
-      perform(Action{"tool", {{"tool", to_string(tools[i].tool)}}});
+      perform(ToolAction{tools[i].tool});
     tip(tools[i].help);
   }
   BrushSettings brush = m_player->brush();
@@ -149,7 +149,7 @@ void PainterApp::panel_view() {
   tip("|target - result| as a heat map (black, blue, red, yellow = full white)");
   if (changed) {
     const ui::ViewMode chosen = ui::ViewMode(mode);
-    perform(Action{"view", {{"show", chosen == ui::ViewMode::Target ? "target" : chosen == ui::ViewMode::Difference ? "difference" : "result"}}});
+    perform(ViewAction{chosen == ui::ViewMode::Target ? ViewShown::Target : chosen == ui::ViewMode::Difference ? ViewShown::Difference : ViewShown::Result});
   }
   if (ImGui::SliderFloat("exposure", &m_exposure_stops, -6.f, 6.f, "%+.1f stops")) m_colours_dirty = true;
   tip("Display brightness only; does not change lights or target");
@@ -172,13 +172,13 @@ void PainterApp::panel_solve() {
   if (!ImGui::CollapsingHeader("Solve", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const bool busy = m_job->busy();
   ImGui::BeginDisabled(busy);
-  if (ImGui::Button("Solve (F5)")) start_job("solve");
+  if (ImGui::Button("Solve (F5)")) start_job(SolveAction{});
   tip("Find how many lights, where and how bright, for the painted target (runs in the background)");
   ImGui::SameLine();
-  if (ImGui::Button("Fine-tune (F6)")) start_job("fine_tune");
+  if (ImGui::Button("Fine-tune (F6)")) start_job(FineTuneAction{});
   tip("Re-optimize the current lights for the edited target; no light is added or removed");
   ImGui::SameLine();
-  if (ImGui::Button("Add lights (F7)")) start_job("add_lights");
+  if (ImGui::Button("Add lights (F7)")) start_job(AddLightsAction{});
   tip("Solve for what the current lights leave unlit and append the new lights; old lights stay");
   ImGui::EndDisabled();
   ImGui::Checkbox("fine-tune after each stroke", &m_options.auto_fine_tune);
@@ -199,15 +199,15 @@ void PainterApp::panel_solve() {
     ImGui::SliderInt("light count", &m_cut_k, base + 1, base + int(cuts), "%d", ImGuiSliderFlags_AlwaysClamp);
     tip(base > 0 ? "Lights kept by the add, plus a cut of the light hierarchy (no new solve)"
                  : "Move along the light hierarchy's cuts without a new solve");
-    if (ImGui::IsItemDeactivatedAfterEdit() && m_cut_k != lights) perform(Action{"cut", {{"k", m_cut_k - base}}});
+    if (ImGui::IsItemDeactivatedAfterEdit() && m_cut_k != lights) perform(CutAction{size_t(m_cut_k - base)});
   }
   ImGui::BeginDisabled(!m_document->can_undo());
-  if (ImGui::Button("Undo")) perform(Action{"undo", nlohmann::json::object()});
+  if (ImGui::Button("Undo")) perform(UndoAction{});
   tip(("Ctrl+Z: " + m_document->undo_label()).c_str());
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(!m_document->can_redo());
-  if (ImGui::Button("Redo")) perform(Action{"redo", nlohmann::json::object()});
+  if (ImGui::Button("Redo")) perform(RedoAction{});
   tip(("Ctrl+Y: " + m_document->redo_label()).c_str());
   ImGui::EndDisabled();
   ImGui::SameLine();
@@ -223,17 +223,17 @@ void PainterApp::panel_placement() {
       "box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX (space-separated; empty: anywhere free)");
   ImGui::BeginDisabled(m_job->busy());
   ImGui::SameLine();
-  if (ImGui::Button("Apply")) perform(Action{"place", {{"rules", std::string(m_place_text)}}});
+  if (ImGui::Button("Apply")) perform(PlaceAction{std::string(m_place_text)});
   ImGui::SameLine();
   if (ImGui::Button("On the ceiling")) {
     std::snprintf(m_place_text, sizeof(m_place_text), "ceiling:0.2");
-    perform(Action{"place", {{"rules", std::string(m_place_text)}}});
+    perform(PlaceAction{std::string(m_place_text)});
   }
   tip("Ceiling lights only: mounted 0.2 below the ceiling above each light");
   ImGui::SameLine();
   if (ImGui::Button("Anywhere")) {
     m_place_text[0] = '\0';
-    perform(Action{"place", {{"rules", std::string()}}});
+    perform(PlaceAction{std::string()});
   }
   ImGui::EndDisabled();
   ImGui::TextDisabled("lights may stand: %s", now.empty() ? "anywhere free" : now.c_str());
@@ -258,16 +258,16 @@ void PainterApp::panel_files() {
   if (!ImGui::CollapsingHeader("Files")) return;
   ImGui::InputText("target", &m_target_path);
   tip("Target PLY, the format `hilight solve --target` reads");
-  if (ImGui::Button("Open target")) perform(Action{"load_target", {{"path", absolute_path(m_target_path)}}});
+  if (ImGui::Button("Open target")) perform(LoadTargetAction{absolute_path(m_target_path)});
   ImGui::SameLine();
-  if (ImGui::Button("Save target")) perform(Action{"save_target", {{"path", absolute_path(m_target_path)}}});
+  if (ImGui::Button("Save target")) perform(SaveTargetAction{absolute_path(m_target_path)});
   ImGui::InputText("lights", &m_lights_path);
   tip("Lights JSON, as `hilight render --lights` and `hilight solve -o` use");
-  if (ImGui::Button("Load lights")) perform(Action{"load_lights", {{"path", absolute_path(m_lights_path)}}});
+  if (ImGui::Button("Load lights")) perform(LoadLightsAction{absolute_path(m_lights_path)});
   ImGui::SameLine();
-  if (ImGui::Button("Save lights")) perform(Action{"save_lights", {{"path", absolute_path(m_lights_path)}}});
+  if (ImGui::Button("Save lights")) perform(SaveLightsAction{absolute_path(m_lights_path)});
   ImGui::InputText("image", &m_screenshot_path);
-  if (ImGui::Button("Screenshot")) perform(Action{"screenshot", {{"path", absolute_path(m_screenshot_path)}}});
+  if (ImGui::Button("Screenshot")) perform(ScreenshotAction{absolute_path(m_screenshot_path)});
   tip("The scene view as PNG (without these panels)");
   if (!m_record_path.empty()) ImGui::TextWrapped("Recording to %s", m_record_path.c_str());
 }
@@ -319,7 +319,7 @@ void PainterApp::popup_shadow_pairs() {
     std::snprintf(label, sizeof label, "%s blocking light %zu##%zu", m_player->objects().name(pair.occluder).c_str(), pair.light, i);
     if (ImGui::Button(label)) {
       const Vec3 p = *m_erase_click;
-      perform(Action{"erase_shadow", {{"world", {p.x, p.y, p.z}}, {"pick", i}}});
+      perform(EraseShadowAction{p, std::nullopt, size_t(i)});
       m_pair_choices.clear();
       ImGui::CloseCurrentPopup();
     }

@@ -10,15 +10,9 @@
 
 namespace hilight::painter {
 
-namespace {
-
-Vec3 vec3_of(const nlohmann::json& v) { return Vec3(v[0].get<float>(), v[1].get<float>(), v[2].get<float>()); }
-
-} // namespace
-
 PlayerHooks PainterApp::make_hooks() {
   PlayerHooks hooks;
-  hooks.camera = [this](const Action& action) { apply_camera_action(action); };
+  hooks.camera = [this](const CameraAction& action) { apply_camera_action(action); };
   hooks.camera_pose = [this] {
     Camera camera = m_camera.to_camera();
     return CameraPose{camera.eye, glm::normalize(camera.target - camera.eye)};
@@ -29,31 +23,30 @@ PlayerHooks PainterApp::make_hooks() {
     return ui::pick_pixel(*m_rays, m_camera, xy[0], xy[1], float(w), float(h));
   };
   hooks.screenshot = [this](const std::filesystem::path& path) { screenshot(path); };
-  hooks.view = [this](const std::string& show) {
-    m_view = show == "target" ? ui::ViewMode::Target : show == "difference" ? ui::ViewMode::Difference : ui::ViewMode::Result;
+  hooks.view = [this](ViewShown show) {
+    m_view = show == ViewShown::Target ? ui::ViewMode::Target : show == ViewShown::Difference ? ui::ViewMode::Difference : ui::ViewMode::Result;
     m_colours_dirty = true;
   };
   hooks.log = [this](const std::string& line) { status(line); };
   return hooks;
 }
 
-void PainterApp::apply_camera_action(const Action& action) {
-  const nlohmann::json& p = action.params;
-  if (p.contains("eye")) {
+void PainterApp::apply_camera_action(const CameraAction& a) {
+  if (a.eye) {
     Camera camera = m_camera.to_camera();
-    camera.eye = vec3_of(p["eye"]);
-    camera.target = vec3_of(p["target"]);
+    camera.eye = *a.eye;
+    camera.target = *a.target;
     if (glm::length(camera.eye - camera.target) <= 0.f) throw InputError("camera: eye and target coincide");
     m_camera = ui::OrbitCamera::from_camera(camera, m_scene->diagonal(), m_scene->bounds.center());
   }
-  if (p.contains("fov")) {
+  if (a.fov) {
     Camera camera = m_camera.to_camera();
-    camera.fov_deg = p["fov"].get<float>();
+    camera.fov_deg = *a.fov;
     m_camera = ui::OrbitCamera::from_camera(camera, m_scene->diagonal(), m_scene->bounds.center());
   }
-  if (p.contains("orbit")) m_camera.orbit(p["orbit"][0].get<float>(), p["orbit"][1].get<float>());
-  if (p.contains("pan")) m_camera.pan(p["pan"][0].get<float>(), p["pan"][1].get<float>());
-  if (p.contains("zoom")) m_camera.zoom(p["zoom"].get<float>());
+  if (a.orbit) m_camera.orbit(a.orbit->x, a.orbit->y);
+  if (a.pan) m_camera.pan(a.pan->x, a.pan->y);
+  if (a.zoom) m_camera.zoom(*a.zoom);
 }
 
 bool PainterApp::perform(const Action& action) {
@@ -65,7 +58,7 @@ bool PainterApp::perform(const Action& action) {
     return false;
   }
   record(action);
-  if (action.type == "solve" || action.type == "fine_tune" || action.type == "add_lights")
+  if (action.type == SolveAction::kType || action.type == FineTuneAction::kType || action.type == AddLightsAction::kType)
     m_job_action = m_recorder.session().actions.size() - 1;
   return true;
 }
@@ -90,7 +83,7 @@ void PainterApp::record(const Action& action) {
     status(std::string("not recorded: ") + e.what());
     return;
   }
-  if (action.type == "brush") m_recorded_brush = m_player->brush();
+  if (action.type == BrushAction::kType) m_recorded_brush = m_player->brush();
   if (m_record_path.empty()) return;
   try {
     m_recorder.save(m_record_path);

@@ -274,7 +274,7 @@ TEST_CASE("painter: numbers must fit a float and points must be near the scene",
   SolveJob job(test::registry(), world.scene, world.rays, painter_test::quick_options());
   std::vector<std::string> cameras;
   PlayerHooks hooks;
-  hooks.camera = [&](const Action& a) { cameras.push_back(a.params.dump()); };
+  hooks.camera = [&](const CameraAction& a) { cameras.push_back(untyped(a).params.dump()); };
   SessionPlayer player(*doc, job, hooks, {true, ".", "far.json"});
   auto error_of = [&](const std::string& script) {
     try {

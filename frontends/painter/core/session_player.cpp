@@ -9,33 +9,16 @@ namespace hilight::painter {
 
 using json = nlohmann::json;
 
-const char* to_string(Tool tool) {
-  switch (tool) {
-  case Tool::Brush: return "brush";
-  case Tool::Eraser: return "eraser";
-  case Tool::Shadow: return "shadow";
-  case Tool::EraseShadow: return "erase_shadow";
-  case Tool::Spot: return "spot";
-  case Tool::Adjust: return "adjust";
-  }
-  return "?";
-}
-
-std::optional<Tool> tool_from_string(const std::string& name) {
-  for (Tool t : {Tool::Brush, Tool::Eraser, Tool::Shadow, Tool::EraseShadow, Tool::Spot, Tool::Adjust})
-    if (name == to_string(t)) return t;
-  return std::nullopt;
-}
-
 Action brush_action(const BrushSettings& b) {
-  return Action{"brush",
-                {{"radius", b.radius}, {"colour", {b.colour.r, b.colour.g, b.colour.b}}, {"brightness", b.brightness}, {"hardness", b.hardness}}};
+  BrushAction a;
+  a.radius = b.radius;
+  a.colour = b.colour;
+  a.brightness = b.brightness;
+  a.hardness = b.hardness;
+  return untyped(a);
 }
 
 namespace {
-
-Vec3 vec3(const json& v) { return Vec3(v[0].get<float>(), v[1].get<float>(), v[2].get<float>()); }
-Rgb colour(const json& v) { return v.is_array() ? vec3(v) : Rgb(v.get<float>()); }
 
 std::string describe(const Vec3& p) {
   std::ostringstream s;
@@ -75,211 +58,229 @@ void SessionPlayer::check_near_scene(const Vec3& p, const std::string& what) con
   }
 }
 
-SurfacePick SessionPlayer::one_point(const json& value, bool screen, const std::string& where) const {
-  if (!screen) {
-    const Vec3 p = vec3(value);
-    check_near_scene(p, where + ": point");
-    auto pick = pick_near(m_document.rays(), p);
-    if (!pick) throw InputError(where + ": " + describe(p) + " is not on any surface (within 1% of the scene diagonal)");
-    return *pick;
-  }
+SurfacePick SessionPlayer::world_point(const Vec3& p, const std::string& where) const {
+  check_near_scene(p, where + ": point");
+  auto pick = pick_near(m_document.rays(), p);
+  if (!pick) throw InputError(where + ": " + describe(p) + " is not on any surface (within 1% of the scene diagonal)");
+  return *pick;
+}
+
+SurfacePick SessionPlayer::screen_point(const Vec2& xy, const std::string& where) const {
   if (!m_hooks.pick_screen) throw InputError(where + ": screen coordinates need the painter's window (give world points)");
-  const std::array<float, 2> xy{value[0].get<float>(), value[1].get<float>()};
-  auto pick = m_hooks.pick_screen(xy);
+  auto pick = m_hooks.pick_screen({xy.x, xy.y});
   if (!pick) {
     std::ostringstream s;
-    s << where << ": nothing under the screen point (" << xy[0] << ", " << xy[1] << ")";
+    s << where << ": nothing under the screen point (" << xy.x << ", " << xy.y << ")";
     throw InputError(s.str());
   }
   return *pick;
 }
 
-std::vector<SurfacePick> SessionPlayer::surface_picks(const json& params, const std::string& where) const {
+std::vector<SurfacePick> SessionPlayer::surface_picks(const PointSet& points, const std::string& where) const {
   std::vector<SurfacePick> picks;
-  if (params.contains("world")) {
+  if (!points.world.empty()) {
     // Every world point snaps to the nearest surface (within 1% of the
     // diagonal) or is an error; recorded strokes carry their normals.
-    const json& world = params["world"];
-    for (size_t i = 0; i < world.size(); ++i) {
-      const Vec3 p = vec3(world[i]);
+    for (size_t i = 0; i < points.world.size(); ++i) {
+      const Vec3& p = points.world[i];
       check_near_scene(p, where + ": point " + std::to_string(i));
-      if (params.contains("normals")) {
-        const Vec3 n = glm::normalize(vec3(params["normals"][i]));
-        if (!pick_near(m_document.rays(), p))
-          throw InputError(where + ": point " + std::to_string(i) + " " + describe(p) +
-                           " is not on any surface (within 1% of the scene diagonal)");
-        picks.push_back({p, n});
-        continue;
-      }
       auto pick = pick_near(m_document.rays(), p);
       if (!pick)
         throw InputError(where + ": point " + std::to_string(i) + " " + describe(p) +
                          " is not on any surface (within 1% of the scene diagonal)");
-      picks.push_back(*pick);
+      picks.push_back(points.normals.empty() ? *pick : SurfacePick{p, glm::normalize(points.normals[i])});
     }
     return picks;
   }
   // Screen points: whatever the cursor hit; misses are skipped, as with the mouse.
   if (!m_hooks.pick_screen) throw InputError(where + ": screen coordinates need the painter's window (give world points)");
-  for (const auto& p : params["screen"])
-    if (auto pick = m_hooks.pick_screen({p[0].get<float>(), p[1].get<float>()})) picks.push_back(*pick);
+  for (const Vec2& p : points.screen)
+    if (auto pick = m_hooks.pick_screen({p.x, p.y})) picks.push_back(*pick);
   if (picks.empty()) throw InputError(where + ": no screen point hits the scene");
   return picks;
 }
 
-std::vector<Vec3> SessionPlayer::world_points(const Action& action, const std::string& where) const {
-  std::vector<Vec3> points;
-  for (const SurfacePick& p : surface_picks(action.params, where)) points.push_back(p.position);
-  return points;
+std::vector<Vec3> SessionPlayer::world_points(const PointSet& points, const std::string& where) const {
+  std::vector<Vec3> out;
+  for (const SurfacePick& p : surface_picks(points, where)) out.push_back(p.position);
+  return out;
 }
 
 void SessionPlayer::apply(const Action& action, size_t index) {
   validate_action(action, m_options.source, index);
   const std::string where = "action " + std::to_string(index) + " (" + action.type + ")";
-  const json& p = action.params;
-  const std::string& type = action.type;
   try {
-    if (type == "camera") {
-      if (p.contains("eye")) check_near_scene(vec3(p["eye"]), "camera: eye");
-      if (p.contains("target")) check_near_scene(vec3(p["target"]), "camera: target");
-      if (m_hooks.camera) m_hooks.camera(action);
-    } else if (type == "view") {
-      if (m_hooks.view) m_hooks.view(p["show"].get<std::string>());
-    } else if (type == "tool") {
-      m_tool = *tool_from_string(p["tool"].get<std::string>());
-      if (m_hooks.tool_changed) m_hooks.tool_changed(action);
-    } else if (type == "brush") {
-      if (p.contains("radius")) m_brush.radius = p["radius"].get<float>();
-      if (p.contains("colour")) m_brush.colour = colour(p["colour"]);
-      if (p.contains("brightness")) m_brush.brightness = p["brightness"].get<float>();
-      if (p.contains("hardness")) m_brush.hardness = p["hardness"].get<float>();
-      if (m_hooks.tool_changed) m_hooks.tool_changed(action);
-    } else if (type == "stroke" || type == "erase") {
-      const bool erase = type == "erase" || (p.contains("mode") ? p["mode"] == "erase" : m_tool == Tool::Eraser);
-      paint_stroke(m_document, m_brush, erase ? BrushMode::Erase : BrushMode::Paint, surface_picks(p, where));
-    } else if (type == "shadow") {
-      std::vector<ShadowRequest> requests;
-      for (const auto& pair : p["pairs"]) {
-        const SurfacePick at = pair.contains("occluder") ? one_point(pair["occluder"], false, where)
-                                                         : one_point(pair["occluder_screen"], true, where);
-        Hit hit = m_document.rays().closest_point(at.position, 0.01f * m_document.scene().diagonal());
-        if (!hit.valid()) throw InputError(where + ": the occluder point is not on any object");
-        Action points_only{type, json::object()};
-        if (pair.contains("world")) points_only.params["world"] = pair["world"];
-        else points_only.params["screen"] = pair["screen"];
-        requests.push_back({m_objects.object_of_triangle(hit.triangle), world_points(points_only, where)});
-      }
-      ShadowEstimate estimate = estimate_shadow_lights(m_objects, m_document.rays(), requests);
-      if (estimate.lights.empty()) throw InputError(where + ": no light position casts these shadows");
-      // The estimate proposes the point lights; the designer's spotlights stay.
-      m_document.apply("lights from shadows", [&](PaintState& s) {
-        Lighting lights = estimate.lights;
-        for (const Light& l : s.lights)
-          if (l.type == LightType::Spot) lights.push_back(l);
-        s.lights = std::move(lights);
-      });
-      m_last_estimate = std::move(estimate);
-    } else if (type == "erase_shadow") {
-      const SurfacePick click = one_point(p.contains("world") ? p["world"] : p["screen"], p.contains("screen"), where);
-      m_last_pairs = find_shadow_pairs(m_objects, m_document.rays(), m_document.state().lights, click);
-      if (m_last_pairs.empty()) throw InputError(where + ": no light is blocked at " + describe(click.position));
-      size_t pick = 0;
-      if (p.contains("pick")) pick = p["pick"].get<size_t>();
-      else if (m_last_pairs.size() > 1 && m_hooks.choose_shadow_pair) pick = m_hooks.choose_shadow_pair(m_last_pairs);
-      if (pick >= m_last_pairs.size())
-        throw InputError(where + ": pick " + std::to_string(pick) + " but only " + std::to_string(m_last_pairs.size()) +
-                         " occluder–light pairs shadow that point");
-      if (m_job.busy()) throw InputError(where + ": wait for the running solve to finish");
-      const ShadowPair& pair = m_last_pairs[pick];
-      erase_shadow(m_document, m_objects, m_job.renderer(), pair);
-      log("erased the shadow of object " + std::to_string(pair.occluder) + " (" + m_objects.name(pair.occluder) +
-          ") from light " + std::to_string(pair.light));
-    } else if (type == "spot_region") {
-      CameraPose pose;
-      if (p.contains("eye")) {
-        pose.eye = vec3(p["eye"]);
-        pose.direction = vec3(p["direction"]);
-        check_near_scene(pose.eye, "spot_region: eye");
-      } else if (m_hooks.camera_pose) {
-        pose = m_hooks.camera_pose();
-      } else {
-        throw InputError(where + ": give \"eye\" and \"direction\" (no window to take the camera from)");
-      }
-      const std::vector<Vec3> region = world_points(action, where);
-      SpotRegionSettings settings;
-      if (p.contains("falloff_deg")) settings.falloff_deg = p["falloff_deg"].get<float>();
-      Light spot = spot_for_region_in_scene(m_document.rays(), pose.eye, pose.direction, region, settings);
-      const float d = glm::length(centroid(region) - spot.position);
-      spot.intensity = p.contains("intensity") ? colour(p["intensity"]) : Rgb(d * d);  // about irradiance 1 at the region
-      m_document.apply("spotlight for a region", [&](PaintState& s) {
-        s.lights.push_back(spot);
-        s.spot_hints.push_back(spot);
-      });
-    } else if (type == "adjust_region") {
-      if (m_job.busy()) throw InputError(where + ": wait for the running solve to finish");
-      const float radius = p.contains("radius") ? p["radius"].get<float>() : m_brush.radius;
-      RegionAdjustSettings settings;
-      settings.multiplier = colour(p["multiplier"]);
-      if (p.contains("min_share")) settings.min_share = p["min_share"].get<double>();
-      const auto region = region_vertices(m_document.rays(), world_points(action, where), radius);
-      RegionAdjustResult result = adjust_region(m_document, m_job.renderer(), region, settings);
-      log("adjusted " + std::to_string(result.changed_lights.size()) + " of " +
-          std::to_string(m_document.state().lights.size()) + " lights");
-    } else if (type == "solve" || type == "fine_tune" || type == "add_lights") {
-      if (m_job.busy()) {
-        if (!m_options.wait_for_solves) throw InputError(where + ": a solve is already running");
-        finish_solve(where);
-      }
-      Target target = m_document.target();
-      const PaintState& s = m_document.state();
-      if (type != "solve" && s.lights.empty()) throw InputError(where + ": there are no lights yet (solve first)");
-      m_job_revision = m_document.revision();
-      if (type == "solve") m_job.start_solve(std::move(target), s.spot_hints);
-      else if (type == "fine_tune") m_job.start_fine_tune(std::move(target), s.lights);
-      else m_job.start_add_lights(std::move(target), s.lights);
-      if (m_options.wait_for_solves) finish_solve(where);
-    } else if (type == "cut") {
-      if (m_job.busy()) finish_solve(where);
-      const size_t k = p["k"].get<size_t>();
-      if (m_job.cut_count() == 0) throw InputError(where + ": no solve to take light counts from");
-      m_document.set_lights(m_job.cut_lights(k), "cut with " + std::to_string(k) + " lights");
-    } else if (type == "place") {
-      // Space-separated --place rules ("" clears them); a bad rule is an
-      // input error naming the action, and the rules stay as they were.
-      if (m_job.busy()) finish_solve(where);
-      PlacementRules rules;
-      std::istringstream words(p["rules"].get<std::string>());
-      std::string rule;
-      try {
-        while (words >> rule) rules.add(rule);
-      } catch (const InputError& e) {
-        throw InputError(where + ": " + e.what());
-      }
-      m_job.set_placement(std::move(rules));
-      log(where + ": lights may stand: " + (p["rules"].get<std::string>().empty() ? "anywhere free" : p["rules"].get<std::string>()));
-    } else if (type == "undo") {
-      m_document.undo();
-    } else if (type == "redo") {
-      m_document.redo();
-    } else {
-      // The lights are about to change under them (a replay, which waits for
-      // each job, would save the job's result): wait for it.
-      if ((type == "save_lights" || type == "screenshot") && m_job.busy() && !m_options.wait_for_solves)
-        throw InputError(where + ": wait for the running solve to finish");
-      const std::filesystem::path path = m_options.base_dir / p["path"].get<std::string>();
-      if (type == "save_target") m_document.save_target(path);
-      else if (type == "save_lights") m_document.save_lights(path);
-      else if (type == "load_target") m_document.load_target(path);
-      else if (type == "load_lights") m_document.load_lights(path);
-      else if (type == "screenshot") {
-        if (m_hooks.screenshot) m_hooks.screenshot(path);
-        else log(where + ": no window, no screenshot");
-      }
-    }
+    std::visit([&](const auto& a) { run(a, action, where); }, typed(action));
   } catch (const InputError& e) {
     const std::string what = e.what();
     throw InputError(m_options.source, what.rfind("action ", 0) == 0 ? what : where + ": " + what);
   }
+}
+
+void SessionPlayer::run(const CameraAction& a, const Action&, const std::string&) {
+  if (a.eye) check_near_scene(*a.eye, "camera: eye");
+  if (a.target) check_near_scene(*a.target, "camera: target");
+  if (m_hooks.camera) m_hooks.camera(a);
+}
+
+void SessionPlayer::run(const ViewAction& a, const Action&, const std::string&) {
+  if (m_hooks.view) m_hooks.view(a.show);
+}
+
+void SessionPlayer::run(const ToolAction& a, const Action& action, const std::string&) {
+  m_tool = a.tool;
+  if (m_hooks.tool_changed) m_hooks.tool_changed(action);
+}
+
+void SessionPlayer::run(const BrushAction& a, const Action& action, const std::string&) {
+  if (a.radius) m_brush.radius = *a.radius;
+  if (a.colour) m_brush.colour = *a.colour;
+  if (a.brightness) m_brush.brightness = *a.brightness;
+  if (a.hardness) m_brush.hardness = *a.hardness;
+  if (m_hooks.tool_changed) m_hooks.tool_changed(action);
+}
+
+void SessionPlayer::run(const StrokeAction& a, const Action&, const std::string& where) {
+  const bool erase = a.erase ? *a.erase : m_tool == Tool::Eraser;
+  paint_stroke(m_document, m_brush, erase ? BrushMode::Erase : BrushMode::Paint, surface_picks(a.points, where));
+}
+
+void SessionPlayer::run(const EraseAction& a, const Action&, const std::string& where) {
+  paint_stroke(m_document, m_brush, BrushMode::Erase, surface_picks(a.points, where));
+}
+
+void SessionPlayer::run(const ShadowAction& a, const Action&, const std::string& where) {
+  std::vector<ShadowRequest> requests;
+  for (const auto& pair : a.pairs) {
+    const SurfacePick at = pair.occluder ? world_point(*pair.occluder, where) : screen_point(*pair.occluder_screen, where);
+    Hit hit = m_document.rays().closest_point(at.position, 0.01f * m_document.scene().diagonal());
+    if (!hit.valid()) throw InputError(where + ": the occluder point is not on any object");
+    PointSet points_only = pair.points;
+    points_only.normals.clear();
+    requests.push_back({m_objects.object_of_triangle(hit.triangle), world_points(points_only, where)});
+  }
+  ShadowEstimate estimate = estimate_shadow_lights(m_objects, m_document.rays(), requests);
+  if (estimate.lights.empty()) throw InputError(where + ": no light position casts these shadows");
+  // The estimate proposes the point lights; the designer's spotlights stay.
+  m_document.apply("lights from shadows", [&](PaintState& s) {
+    Lighting lights = estimate.lights;
+    for (const Light& l : s.lights)
+      if (l.type == LightType::Spot) lights.push_back(l);
+    s.lights = std::move(lights);
+  });
+  m_last_estimate = std::move(estimate);
+}
+
+void SessionPlayer::run(const EraseShadowAction& a, const Action&, const std::string& where) {
+  const SurfacePick click = a.world ? world_point(*a.world, where) : screen_point(*a.screen, where);
+  m_last_pairs = find_shadow_pairs(m_objects, m_document.rays(), m_document.state().lights, click);
+  if (m_last_pairs.empty()) throw InputError(where + ": no light is blocked at " + describe(click.position));
+  size_t pick = 0;
+  if (a.pick) pick = *a.pick;
+  else if (m_last_pairs.size() > 1 && m_hooks.choose_shadow_pair) pick = m_hooks.choose_shadow_pair(m_last_pairs);
+  if (pick >= m_last_pairs.size())
+    throw InputError(where + ": pick " + std::to_string(pick) + " but only " + std::to_string(m_last_pairs.size()) +
+                     " occluder–light pairs shadow that point");
+  if (m_job.busy()) throw InputError(where + ": wait for the running solve to finish");
+  const ShadowPair& pair = m_last_pairs[pick];
+  erase_shadow(m_document, m_objects, m_job.renderer(), pair);
+  log("erased the shadow of object " + std::to_string(pair.occluder) + " (" + m_objects.name(pair.occluder) +
+      ") from light " + std::to_string(pair.light));
+}
+
+void SessionPlayer::run(const SpotRegionAction& a, const Action&, const std::string& where) {
+  CameraPose pose;
+  if (a.eye) {
+    pose.eye = *a.eye;
+    pose.direction = *a.direction;
+    check_near_scene(pose.eye, "spot_region: eye");
+  } else if (m_hooks.camera_pose) {
+    pose = m_hooks.camera_pose();
+  } else {
+    throw InputError(where + ": give \"eye\" and \"direction\" (no window to take the camera from)");
+  }
+  const std::vector<Vec3> region = world_points(a.points, where);
+  SpotRegionSettings settings;
+  if (a.falloff_deg) settings.falloff_deg = *a.falloff_deg;
+  Light spot = spot_for_region_in_scene(m_document.rays(), pose.eye, pose.direction, region, settings);
+  const float d = glm::length(centroid(region) - spot.position);
+  spot.intensity = a.intensity ? *a.intensity : Rgb(d * d);  // about irradiance 1 at the region
+  m_document.apply("spotlight for a region", [&](PaintState& s) {
+    s.lights.push_back(spot);
+    s.spot_hints.push_back(spot);
+  });
+}
+
+void SessionPlayer::run(const AdjustRegionAction& a, const Action&, const std::string& where) {
+  if (m_job.busy()) throw InputError(where + ": wait for the running solve to finish");
+  RegionAdjustSettings settings;
+  settings.multiplier = a.multiplier;
+  if (a.min_share) settings.min_share = *a.min_share;
+  const auto region = region_vertices(m_document.rays(), world_points(a.points, where), a.radius ? *a.radius : m_brush.radius);
+  RegionAdjustResult result = adjust_region(m_document, m_job.renderer(), region, settings);
+  log("adjusted " + std::to_string(result.changed_lights.size()) + " of " + std::to_string(m_document.state().lights.size()) +
+      " lights");
+}
+
+void SessionPlayer::start_job(JobKind kind, const std::string& where) {
+  if (m_job.busy()) {
+    if (!m_options.wait_for_solves) throw InputError(where + ": a solve is already running");
+    finish_solve(where);
+  }
+  Target target = m_document.target();
+  const PaintState& s = m_document.state();
+  if (kind != JobKind::Solve && s.lights.empty()) throw InputError(where + ": there are no lights yet (solve first)");
+  m_job_revision = m_document.revision();
+  if (kind == JobKind::Solve) m_job.start_solve(std::move(target), s.spot_hints);
+  else if (kind == JobKind::FineTune) m_job.start_fine_tune(std::move(target), s.lights);
+  else m_job.start_add_lights(std::move(target), s.lights);
+  if (m_options.wait_for_solves) finish_solve(where);
+}
+
+void SessionPlayer::run(const SolveAction&, const Action&, const std::string& where) { start_job(JobKind::Solve, where); }
+void SessionPlayer::run(const FineTuneAction&, const Action&, const std::string& where) { start_job(JobKind::FineTune, where); }
+void SessionPlayer::run(const AddLightsAction&, const Action&, const std::string& where) { start_job(JobKind::AddLights, where); }
+
+void SessionPlayer::run(const CutAction& a, const Action&, const std::string& where) {
+  if (m_job.busy()) finish_solve(where);
+  if (m_job.cut_count() == 0) throw InputError(where + ": no solve to take light counts from");
+  m_document.set_lights(m_job.cut_lights(a.k), "cut with " + std::to_string(a.k) + " lights");
+}
+
+void SessionPlayer::run(const PlaceAction& a, const Action&, const std::string& where) {
+  // Space-separated --place rules ("" clears them); a bad rule is an input
+  // error naming the action, and the rules stay as they were.
+  if (m_job.busy()) finish_solve(where);
+  PlacementRules rules;
+  std::istringstream words(a.rules);
+  std::string rule;
+  try {
+    while (words >> rule) rules.add(rule);
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
+  }
+  m_job.set_placement(std::move(rules));
+  log(where + ": lights may stand: " + (a.rules.empty() ? "anywhere free" : a.rules));
+}
+
+void SessionPlayer::run(const UndoAction&, const Action&, const std::string&) { m_document.undo(); }
+void SessionPlayer::run(const RedoAction&, const Action&, const std::string&) { m_document.redo(); }
+
+void SessionPlayer::run(const SaveTargetAction& a, const Action&, const std::string&) { m_document.save_target(resolve(a.path)); }
+void SessionPlayer::run(const LoadTargetAction& a, const Action&, const std::string&) { m_document.load_target(resolve(a.path)); }
+void SessionPlayer::run(const LoadLightsAction& a, const Action&, const std::string&) { m_document.load_lights(resolve(a.path)); }
+
+void SessionPlayer::run(const SaveLightsAction& a, const Action&, const std::string& where) {
+  // The lights are about to change under them (a replay, which waits for
+  // each job, would save the job's result): wait for it.
+  if (m_job.busy() && !m_options.wait_for_solves) throw InputError(where + ": wait for the running solve to finish");
+  m_document.save_lights(resolve(a.path));
+}
+
+void SessionPlayer::run(const ScreenshotAction& a, const Action&, const std::string& where) {
+  if (m_job.busy() && !m_options.wait_for_solves) throw InputError(where + ": wait for the running solve to finish");
+  if (m_hooks.screenshot) m_hooks.screenshot(resolve(a.path));
+  else log(where + ": no window, no screenshot");
 }
 
 void SessionPlayer::commit(JobResult& result) {

@@ -7,6 +7,7 @@
 ///
 /// The UI can drive its own buttons through apply() too, so what it records
 /// is exactly what a replay does.
+#include "core/actions.hpp"
 #include "core/brush.hpp"
 #include "core/document.hpp"
 #include "core/region_adjust.hpp"
@@ -25,12 +26,6 @@
 
 namespace hilight::painter {
 
-/// The painter's tools (the `tool` action).
-enum class Tool { Brush, Eraser, Shadow, EraseShadow, Spot, Adjust };
-const char* to_string(Tool tool);
-/// InputError-free lookup: nullopt for an unknown name.
-std::optional<Tool> tool_from_string(const std::string& name);
-
 /// The `brush` action that sets every field of `brush`.
 Action brush_action(const BrushSettings& brush);
 
@@ -47,7 +42,7 @@ struct CameraPose {
 
 struct PlayerHooks {
   /// Applies a `camera` action (orbit / pan / zoom / eye+target+fov).
-  std::function<void(const Action&)> camera;
+  std::function<void(const CameraAction&)> camera;
   /// The current camera (spot_region without "eye"/"direction").
   std::function<CameraPose()> camera_pose;
   /// Screen pixel (x right, y down) → surface point under it, nullopt on a miss.
@@ -58,7 +53,7 @@ struct PlayerHooks {
   /// has no "pick": returns the index to erase (default: the first).
   std::function<size_t(const std::vector<ShadowPair>&)> choose_shadow_pair;
   /// Shows the result, the target or their difference (a `view` action; ignored headless).
-  std::function<void(const std::string&)> view;
+  std::function<void(ViewShown)> view;
   /// A tool or brush change (the UI updates its panels); after the player's own state changed.
   std::function<void(const Action&)> tool_changed;
   /// One line per finished action or solve result, for a log panel / stderr.
@@ -82,7 +77,8 @@ public:
   /// Validates every action, then applies them in order (waiting for solves
   /// when wait_for_solves). Errors: InputError("<source>: action N: ...").
   void play(const Session& session);
-  /// Applies one action (`index` only names it in errors).
+  /// Applies one action (`index` only names it in errors): validated, typed,
+  /// then run by the apply function of its type (the run overloads below).
   void apply(const Action& action, size_t index = 0);
   /// Commits a finished background solve to the document (one undo step
   /// labelled with the job kind); returns it, or nullopt if none is ready.
@@ -105,13 +101,43 @@ public:
   const std::vector<ShadowPair>& last_shadow_pairs() const { return m_last_pairs; }
 
 private:
+  // One apply function per action type (core/actions.hpp); `where` names the
+  // action in errors.
+  void run(const CameraAction& a, const Action& action, const std::string& where);
+  void run(const ToolAction& a, const Action& action, const std::string& where);
+  void run(const ViewAction& a, const Action& action, const std::string& where);
+  void run(const BrushAction& a, const Action& action, const std::string& where);
+  void run(const StrokeAction& a, const Action& action, const std::string& where);
+  void run(const EraseAction& a, const Action& action, const std::string& where);
+  void run(const ShadowAction& a, const Action& action, const std::string& where);
+  void run(const EraseShadowAction& a, const Action& action, const std::string& where);
+  void run(const SpotRegionAction& a, const Action& action, const std::string& where);
+  void run(const AdjustRegionAction& a, const Action& action, const std::string& where);
+  void run(const SolveAction& a, const Action& action, const std::string& where);
+  void run(const FineTuneAction& a, const Action& action, const std::string& where);
+  void run(const AddLightsAction& a, const Action& action, const std::string& where);
+  void run(const CutAction& a, const Action& action, const std::string& where);
+  void run(const PlaceAction& a, const Action& action, const std::string& where);
+  void run(const UndoAction& a, const Action& action, const std::string& where);
+  void run(const RedoAction& a, const Action& action, const std::string& where);
+  void run(const SaveTargetAction& a, const Action& action, const std::string& where);
+  void run(const SaveLightsAction& a, const Action& action, const std::string& where);
+  void run(const LoadTargetAction& a, const Action& action, const std::string& where);
+  void run(const LoadLightsAction& a, const Action& action, const std::string& where);
+  void run(const ScreenshotAction& a, const Action& action, const std::string& where);
+  /// Starts a solve, fine-tune or add-lights job (waiting for it in replays).
+  void start_job(JobKind kind, const std::string& where);
+  /// The path of a save/load action, relative ones from base_dir.
+  std::filesystem::path resolve(const std::string& path) const { return m_options.base_dir / path; }
+
   /// The action's "world" points snapped to surfaces (InputError for one off
   /// every surface) or its "screen" points picked (InputError if none hits).
-  std::vector<SurfacePick> surface_picks(const nlohmann::json& params, const std::string& where) const;
-  std::vector<Vec3> world_points(const Action& action, const std::string& where) const;
+  std::vector<SurfacePick> surface_picks(const PointSet& points, const std::string& where) const;
+  std::vector<Vec3> world_points(const PointSet& points, const std::string& where) const;
   /// InputError unless `p` is within kMaxSceneReach diagonals of the scene's bounds.
   void check_near_scene(const Vec3& p, const std::string& what) const;
-  SurfacePick one_point(const nlohmann::json& value, bool screen, const std::string& where) const;
+  SurfacePick world_point(const Vec3& p, const std::string& where) const;
+  SurfacePick screen_point(const Vec2& xy, const std::string& where) const;
   /// Waits for the running job and commits its result (InputError if it failed).
   void finish_solve(const std::string& where);
   /// Done results go into the document, unless it changed since the job
