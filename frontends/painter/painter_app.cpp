@@ -48,7 +48,7 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_preview = preview_radiance(*m_scene, m_scene->vertex_albedo());
   m_document = std::make_unique<Document>(m_scene, m_rays);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
-  std::snprintf(m_place_text, sizeof(m_place_text), "%s", m_options.job.settings.placement.describe().c_str());
+  std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "%s", m_options.job.settings.placement.describe().c_str());
   auto renderers = display_renderers(*m_job);
   if (!m_options.no_record || !m_options.record.empty()) {
     const bool interactive = !m_options.exit_after_script;
@@ -77,15 +77,15 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   // Background results wake the event loop at once (glfwPostEmptyEvent is thread-safe).
   m_illumination_worker = std::make_unique<ui::IlluminationWorker>(std::move(renderers), *m_scene, [] { glfwPostEmptyEvent(); });
   m_job->set_on_finished([] { glfwPostEmptyEvent(); });  // a finished solve wakes the event loop at once
-  m_view = m_options.view == "target" ? ui::ViewMode::Target : m_options.view == "difference" ? ui::ViewMode::Difference : ui::ViewMode::Result;
+  m_display.view = m_options.view == "target" ? ui::ViewMode::Target : m_options.view == "difference" ? ui::ViewMode::Difference : ui::ViewMode::Result;
   m_headless = m_options.exit_after_script;
   m_player = std::make_unique<SessionPlayer>(*m_document, *m_job, make_hooks(),
                                              PlayerOptions{true, ".", m_options.script.empty() ? "session" : m_options.script.string()});
-  m_recorded_brush = m_player->brush();
+  m_tools.recorded_brush = m_player->brush();
   const std::string stem = m_options.scene.stem().string();
-  m_target_path = m_options.target.empty() ? stem + "-target.ply" : m_options.target.string();
-  m_lights_path = m_options.lights.empty() ? stem + "-lights.json" : m_options.lights.string();
-  m_screenshot_path = stem + ".png";
+  m_files.target_path = m_options.target.empty() ? stem + "-target.ply" : m_options.target.string();
+  m_files.lights_path = m_options.lights.empty() ? stem + "-lights.json" : m_options.lights.string();
+  m_files.screenshot_path = stem + ".png";
 }
 
 PainterApp::~PainterApp() {
@@ -108,9 +108,9 @@ int PainterApp::run() {
       const Action& action = m_script->actions[i];
       m_player->apply(action, i);
       record(action);
-      if (action.type == CameraAction::kType) m_last_activity = "camera";
+      if (action.type == CameraAction::kType) m_display.last_activity = "camera";
       frame(false);
-      m_last_activity = "idle";
+      m_display.last_activity = "idle";
     }
   }
   if (!m_options.screenshot.empty()) screenshot(m_options.screenshot);
@@ -163,9 +163,9 @@ void PainterApp::frame(bool interactive, const std::filesystem::path& capture) {
     // Dragging: draw as fast as the mouse moves. Background work: wake at
     // 10 Hz to show its progress (and at once when it ends: the workers post
     // an event), leaving the cores to the work. Idle: sleep until an event.
-    const bool dragging = m_stroke || m_dragging_camera || m_region_drag;
+    const bool dragging = m_tools.stroke || m_tools.dragging_camera || m_tools.region_drag;
     if (dragging) glfwPollEvents();
-    else if (m_job->busy() || m_illumination_pending) glfwWaitEventsTimeout(kBackgroundFrameSeconds);
+    else if (m_job->busy() || m_display.illumination_pending) glfwWaitEventsTimeout(kBackgroundFrameSeconds);
     else glfwWaitEventsTimeout(0.25);
   } else {
     glfwPollEvents();
@@ -173,7 +173,7 @@ void PainterApp::frame(bool interactive, const std::filesystem::path& capture) {
   // A frame's time is its work, not the wait for events; the input handlers
   // name what the frame was for.
   const auto start = Clock::now();
-  if (interactive) m_last_activity = m_stroke || m_region_drag ? "stroke" : "idle";
+  if (interactive) m_display.last_activity = m_tools.stroke || m_tools.region_drag ? "stroke" : "idle";
   poll_workers();
   m_window->begin_frame();
   if (interactive) handle_input();
@@ -189,7 +189,7 @@ void PainterApp::frame(bool interactive, const std::filesystem::path& capture) {
   }
   m_window->present();
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-  if (m_last_activity != "idle" || !interactive) m_timer.add_frame(m_last_activity, ms);
+  if (m_display.last_activity != "idle" || !interactive) m_timer.add_frame(m_display.last_activity, ms);
 }
 
 void PainterApp::poll_workers() {
@@ -198,40 +198,40 @@ void PainterApp::poll_workers() {
     else if (result->outcome == JobOutcome::Cancelled) status(std::string(to_string(result->kind)) + " cancelled");
     if (result->outcome != JobOutcome::Done) unrecord_failed_job();
     m_job_action.reset();
-    if (result->outcome == JobOutcome::Done && result->kind != JobKind::FineTune) m_cut_k = 0;  // the slider follows the new cuts
+    if (result->outcome == JobOutcome::Done && result->kind != JobKind::FineTune) m_solve_panel.cut_k = 0;  // the slider follows the new cuts
     if (result->outcome == JobOutcome::Done && result->kind == JobKind::FineTune)
       m_timer.add_latency("fine_tune_solver", 1000.0 * result->report.seconds["total"]);
-    if (result->outcome == JobOutcome::Done && m_fine_tune_after_stroke && m_stroke_released) {
+    if (result->outcome == JobOutcome::Done && m_solve_panel.fine_tune_after_stroke && m_solve_panel.stroke_released) {
       m_timer.add_latency("stroke_to_fine_tune",
-                          std::chrono::duration<double, std::milli>(Clock::now() - *m_stroke_released).count());
+                          std::chrono::duration<double, std::milli>(Clock::now() - *m_solve_panel.stroke_released).count());
     }
-    m_fine_tune_after_stroke = false;
-    if (m_fine_tune_queued && !m_job->busy()) {
+    m_solve_panel.fine_tune_after_stroke = false;
+    if (m_solve_panel.fine_tune_queued && !m_job->busy()) {
       // A stroke ended while this job ran: its fine-tune starts now.
-      m_fine_tune_queued = false;
-      m_stroke_released = Clock::now();
-      m_fine_tune_after_stroke = perform(FineTuneAction{});
-      if (!m_fine_tune_after_stroke) m_stroke_released.reset();
+      m_solve_panel.fine_tune_queued = false;
+      m_solve_panel.stroke_released = Clock::now();
+      m_solve_panel.fine_tune_after_stroke = perform(FineTuneAction{});
+      if (!m_solve_panel.fine_tune_after_stroke) m_solve_panel.stroke_released.reset();
     }
   }
   if (std::optional<ui::Illumination> done = m_illumination_worker->take()) {
-    m_radiance = std::move(done->radiance);
-    m_radiance_final = done->final;
-    m_radiance_lights = std::move(done->lights);
-    m_colours_dirty = true;
+    m_display.radiance = std::move(done->radiance);
+    m_display.radiance_final = done->final;
+    m_display.radiance_lights = std::move(done->lights);
+    m_display.colours_dirty = true;
   }
-  m_illumination_pending = m_illumination_worker->busy();
+  m_display.illumination_pending = m_illumination_worker->busy();
   // The stroke's fine-tune is over and the view shows its lights.
-  if (m_stroke_released && !m_fine_tune_after_stroke && !m_job->busy() &&
-      m_requested_lights && *m_requested_lights == m_document->state().lights &&
-      m_radiance_lights == m_document->state().lights) {
-    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - *m_stroke_released).count();
-    if (!m_stroke_shown) m_timer.add_latency("stroke_to_display", ms);
-    m_stroke_shown = true;
-    if (m_radiance_final) {
+  if (m_solve_panel.stroke_released && !m_solve_panel.fine_tune_after_stroke && !m_job->busy() &&
+      m_display.requested_lights && *m_display.requested_lights == m_document->state().lights &&
+      m_display.radiance_lights == m_document->state().lights) {
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - *m_solve_panel.stroke_released).count();
+    if (!m_solve_panel.stroke_shown) m_timer.add_latency("stroke_to_display", ms);
+    m_solve_panel.stroke_shown = true;
+    if (m_display.radiance_final) {
       m_timer.add_latency("stroke_to_exact_display", ms);
-      m_stroke_released.reset();
-      m_stroke_shown = false;
+      m_solve_panel.stroke_released.reset();
+      m_solve_panel.stroke_shown = false;
     }
   }
   if (!m_illumination_worker->error().empty()) status("display renderer: " + m_illumination_worker->error());
@@ -239,10 +239,10 @@ void PainterApp::poll_workers() {
 
 void PainterApp::request_illumination() {
   const Lighting& lights = m_document->state().lights;
-  if (m_requested_lights && lights == *m_requested_lights) return;
-  m_requested_lights = lights;
+  if (m_display.requested_lights && lights == *m_display.requested_lights) return;
+  m_display.requested_lights = lights;
   m_illumination_worker->request(lights, m_document->revision());
-  m_illumination_pending = true;
+  m_display.illumination_pending = true;
 }
 
 void PainterApp::settle() {
@@ -254,34 +254,34 @@ void PainterApp::settle() {
 
 void PainterApp::refresh_colours() {
   const PaintState& s = m_document->state();
-  if (!m_colours_dirty && m_colours_revision == m_document->revision()) return;
-  if (m_radiance.size() != m_scene->positions.size()) return;  // nothing rendered yet
+  if (!m_display.colours_dirty && m_display.colours_revision == m_document->revision()) return;
+  if (m_display.radiance.size() != m_scene->positions.size()) return;  // nothing rendered yet
   const bool no_lights = s.lights.empty();
-  if (!m_exposure_from_result) {
+  if (!m_display.exposure_from_result) {
     // Once, from the first lit result (until then from the target): later
     // changes of brightness stay visible instead of being normalized away,
     // and target and result are shown alike.
-    const float from_result = no_lights || !m_radiance_final ? 0.f : ui::auto_exposure(m_radiance);
+    const float from_result = no_lights || !m_display.radiance_final ? 0.f : ui::auto_exposure(m_display.radiance);
     if (from_result > 0.f) {
-      m_exposure = from_result;
-      m_exposure_from_result = true;
+      m_display.exposure = from_result;
+      m_display.exposure_from_result = true;
     } else if (m_document->painted_count() > 0) {
-      m_exposure = ui::auto_exposure(s.psi, s.weight);
+      m_display.exposure = ui::auto_exposure(s.psi, s.weight);
     }
   }
-  const float exposure = (m_exposure > 0.f ? m_exposure : 1.f) * std::exp2(m_exposure_stops);
+  const float exposure = (m_display.exposure > 0.f ? m_display.exposure : 1.f) * std::exp2(m_display.exposure_stops);
   std::vector<ui::VertexColour> colours;
-  switch (m_view) {
+  switch (m_display.view) {
   case ui::ViewMode::Result:
-    colours = no_lights ? ui::result_colours(m_preview, 1.f) : ui::result_colours(m_radiance, exposure);
+    colours = no_lights ? ui::result_colours(m_preview, 1.f) : ui::result_colours(m_display.radiance, exposure);
     break;
   case ui::ViewMode::Target: colours = ui::target_colours(s.psi, s.weight, m_preview, exposure); break;
-  case ui::ViewMode::Difference: colours = ui::difference_colours(s.psi, s.weight, m_radiance, m_preview, exposure); break;
+  case ui::ViewMode::Difference: colours = ui::difference_colours(s.psi, s.weight, m_display.radiance, m_preview, exposure); break;
   }
   m_mesh->set_colours(colours);
   ++m_colour_uploads;
-  m_colours_revision = m_document->revision();
-  m_colours_dirty = false;
+  m_display.colours_revision = m_document->revision();
+  m_display.colours_dirty = false;
 }
 
 void PainterApp::draw_scene() {
@@ -310,24 +310,24 @@ void PainterApp::build_overlays() {
   m_lines->clear();
   const PaintState& s = m_document->state();
   const float diagonal = m_scene->diagonal();
-  if (m_show_lights) {
+  if (m_display.show_lights) {
     ui::add_light_markers(*m_lines, s.lights, diagonal);
     ui::add_spot_hint_markers(*m_lines, s.spot_hints, diagonal);
   }
   if (const auto& estimate = m_player->last_shadow_estimate(); estimate && m_player->tool() == Tool::Shadow)
     ui::add_shadow_estimate_markers(*m_lines, *estimate);
-  if (m_hover && (m_player->tool() == Tool::Brush || m_player->tool() == Tool::Eraser || m_player->tool() == Tool::Adjust)) {
+  if (m_tools.hover && (m_player->tool() == Tool::Brush || m_player->tool() == Tool::Eraser || m_player->tool() == Tool::Adjust)) {
     const glm::vec4 colour = m_player->tool() == Tool::Eraser ? glm::vec4(1.f, 0.35f, 0.3f, 1.f) : glm::vec4(1.f);
-    m_lines->circle(m_hover->position + 0.002f * diagonal * m_hover->normal, m_hover->normal, m_player->brush().radius, colour);
+    m_lines->circle(m_tools.hover->position + 0.002f * diagonal * m_tools.hover->normal, m_tools.hover->normal, m_player->brush().radius, colour);
   }
   const glm::vec4 region_colour = m_player->tool() == Tool::Spot     ? glm::vec4(1.f, 0.85f, 0.2f, 1.f)
                                   : m_player->tool() == Tool::Adjust ? glm::vec4(0.3f, 0.9f, 1.f, 1.f)
                                                                      : glm::vec4(0.6f, 0.6f, 0.65f, 1.f);
-  for (const Vec3& p : m_region) m_lines->point(p, region_colour, 5.f);
-  for (const auto& pair : m_shadow_pairs)
+  for (const Vec3& p : m_tools.region) m_lines->point(p, region_colour, 5.f);
+  for (const auto& pair : m_tools.shadow_pairs)
     for (const Vec3& p : pair.points.world) m_lines->point(p, glm::vec4(0.45f, 0.45f, 0.5f, 1.f), 5.f);
-  if (m_occluder_point && m_player->tool() == Tool::Shadow) {
-    Hit hit = m_rays->closest_point(*m_occluder_point, 0.01f * diagonal);
+  if (m_tools.occluder_point && m_player->tool() == Tool::Shadow) {
+    Hit hit = m_rays->closest_point(*m_tools.occluder_point, 0.01f * diagonal);
     if (hit.valid()) ui::add_box_marker(*m_lines, m_player->objects().bounds(m_player->objects().object_of_triangle(hit.triangle)),
                                         glm::vec4(0.3f, 1.f, 0.4f, 1.f));
   }
@@ -335,10 +335,10 @@ void PainterApp::build_overlays() {
 
 void PainterApp::status(const std::string& line) {
   // ImGui's built-in font is ASCII: spell out the core's D̄ (D + combining macron).
-  m_status = line;
-  for (size_t at; (at = m_status.find("D\u0304")) != std::string::npos;) m_status.replace(at, 3, "D-bar");
-  m_log.push_back(m_status);
-  if (m_log.size() > 200) m_log.erase(m_log.begin());
+  m_status_panel.line = line;
+  for (size_t at; (at = m_status_panel.line.find("D\u0304")) != std::string::npos;) m_status_panel.line.replace(at, 3, "D-bar");
+  m_status_panel.log.push_back(m_status_panel.line);
+  if (m_status_panel.log.size() > 200) m_status_panel.log.erase(m_status_panel.log.begin());
   if (m_headless) std::fprintf(stderr, "hilight: %s\n", line.c_str());
 }
 

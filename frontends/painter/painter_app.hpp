@@ -5,7 +5,11 @@
 /// designer takes goes through the core's SessionPlayer and is recorded, so
 /// a session can be replayed exactly.
 #include "core/session_player.hpp"
+#include "display_state.hpp"
+#include "files_panel_state.hpp"
 #include "paint_options.hpp"
+#include "solve_panel_state.hpp"
+#include "tool_state.hpp"
 #include "ui/frame_timer.hpp"
 #include "ui/illumination_worker.hpp"
 #include "ui/line_batch.hpp"
@@ -133,50 +137,12 @@ private:
   ui::OrbitCamera m_camera;
   ui::FrameTimer m_timer;
 
-  // View state.
-  ui::ViewMode m_view = ui::ViewMode::Result;
-  float m_exposure = 0.f;         ///< 0 until first set automatically
-  bool m_exposure_from_result = false;  ///< set from a lit result (else from the target, or not yet)
-  float m_exposure_stops = 0.f;   ///< the user's adjustment
-  bool m_show_lights = true;
-  std::vector<Rgb> m_radiance;    ///< I(p) of m_radiance_lights, per vertex
-  bool m_radiance_final = false;  ///< from the exact display stage
-  Lighting m_radiance_lights;
-  bool m_illumination_pending = false;
-  uint64_t m_colours_revision = 0;
-  std::optional<Lighting> m_requested_lights;  ///< what the worker was last asked for
-  bool m_colours_dirty = true;
-  std::string m_last_activity = "idle";
-
-  // Tool state.
-  bool m_dragging_camera = false;
-  bool m_camera_keys_unrecorded = false;  ///< arrow/zoom keys moved the camera since the last record
-  std::unique_ptr<Stroke> m_stroke;             ///< brush/eraser stroke in progress
-  BrushSettings m_recorded_brush;               ///< brush as last recorded
-  Tool m_recorded_tool = Tool::Brush;
-  std::vector<Vec3> m_region;                   ///< points of a shadow/spot/adjust drag
-  bool m_region_drag = false;
-  std::optional<Vec3> m_occluder_point;         ///< shadow tool: the selected occluder (a point on it)
-  std::vector<ShadowAction::Pair> m_shadow_pairs;  ///< shadow tool: requests collected so far
-  std::optional<Vec3> m_erase_click;            ///< erase-shadow click awaiting a pick
-  std::vector<ShadowPair> m_pair_choices;
-  Rgb m_adjust_multiplier{1.2f};
-  float m_spot_falloff = 2.f;
-  int m_cut_k = 0;
-  char m_place_text[256] = {};  ///< the placement panel's rules being edited
-  std::optional<SurfacePick> m_hover;
-
-  // Solve timing (stroke release → fine-tuned lights → display).
-  std::optional<Clock::time_point> m_stroke_released;
-  bool m_fine_tune_after_stroke = false;
-  bool m_fine_tune_queued = false;  ///< a stroke ended while a job ran
-  bool m_stroke_shown = false;    ///< its lights are on screen (a quick stage so far)
-
-  std::string m_target_path, m_lights_path, m_screenshot_path;  ///< the Files panel's fields
-
-  std::vector<std::string> m_log;
-  std::string m_status;
-  bool m_show_help = false;
+  // Each panel's state, in its own header (one job each).
+  DisplayState m_display;        ///< View panel: mode, exposure, the illumination shown
+  ToolState m_tools;             ///< Tools panel and mouse: drags, strokes, shadow requests
+  SolvePanelState m_solve_panel; ///< Solve and Placement panels, stroke → fine-tune latency
+  FilesPanelState m_files;       ///< Files panel
+  StatusState m_status_panel;    ///< status line, log, help
   bool m_headless = false;  ///< replaying: a failing action is an error, not a status line
 };
 

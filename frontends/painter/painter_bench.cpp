@@ -12,7 +12,7 @@ void PainterApp::run_bench() {
   int w = 1, h = 1;
   m_window->framebuffer_size(w, h);
   settle();
-  m_last_activity = "camera";
+  m_display.last_activity = "camera";
   for (int i = 0; i < 60; ++i) {
     m_camera.orbit(1.f, i < 30 ? 0.3f : -0.3f);
     frame(false);
@@ -20,7 +20,7 @@ void PainterApp::run_bench() {
   const BrushSettings brush = m_player->brush();
   for (int round = 0; round < 5; ++round) {
     // A horizontal stroke across the middle of the view, 40 mouse moves.
-    m_last_activity = "stroke";
+    m_display.last_activity = "stroke";
     Stroke stroke(*m_document, brush, BrushMode::Paint);
     const float y = float(h) * (0.55f + 0.04f * float(round));
     for (int i = 0; i < 40; ++i) {
@@ -34,20 +34,20 @@ void PainterApp::run_bench() {
     stroke.finish();
     if (m_document->state().lights.empty() || m_document->painted_count() == 0) continue;
     // Release: fine-tune in the background while frames go on.
-    m_last_activity = "fine_tune_running";
-    m_stroke_released = Clock::now();
-    m_fine_tune_after_stroke = true;
+    m_display.last_activity = "fine_tune_running";
+    m_solve_panel.stroke_released = Clock::now();
+    m_solve_panel.fine_tune_after_stroke = true;
     m_job->start_fine_tune(m_document->target(), m_document->state().lights);
     const auto give_up = Clock::now() + std::chrono::seconds(30);
     // As the interactive loop does while work runs in the background: a frame
     // every kBackgroundFrameSeconds, or at once when the job or a display pass ends.
-    while ((m_job->busy() || m_fine_tune_after_stroke || m_stroke_released) && Clock::now() < give_up) {
+    while ((m_job->busy() || m_solve_panel.fine_tune_after_stroke || m_solve_panel.stroke_released) && Clock::now() < give_up) {
       const auto next = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kBackgroundFrameSeconds));
       frame(false);
       glfwWaitEventsTimeout(std::max(0.0, std::chrono::duration<double>(next - Clock::now()).count()));
     }
   }
-  m_last_activity = "idle";
+  m_display.last_activity = "idle";
 }
 
 } // namespace hilight::painter

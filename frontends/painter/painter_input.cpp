@@ -40,7 +40,7 @@ void PainterApp::handle_input() {
 
 void PainterApp::handle_camera_input() {
   const ImGuiIO& io = ImGui::GetIO();
-  const bool over_ui = io.WantCaptureMouse && !m_dragging_camera;
+  const bool over_ui = io.WantCaptureMouse && !m_tools.dragging_camera;
   const ImVec2 delta = io.MouseDelta;
   const float height = std::max(io.DisplaySize.y, 1.f);
   // Right drag (or Alt + left) orbits; middle drag (or Shift + right) pans; the wheel zooms.
@@ -48,19 +48,19 @@ void PainterApp::handle_camera_input() {
   const bool pan = ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (io.KeyShift && ImGui::IsMouseDown(ImGuiMouseButton_Right));
   const bool start = ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle) ||
                      (io.KeyAlt && ImGui::IsMouseClicked(ImGuiMouseButton_Left));
-  if (start && !over_ui) m_dragging_camera = true;
-  if (m_dragging_camera && !orbit && !pan) {
-    m_dragging_camera = false;
+  if (start && !over_ui) m_tools.dragging_camera = true;
+  if (m_tools.dragging_camera && !orbit && !pan) {
+    m_tools.dragging_camera = false;
     record_camera();  // one action per drag: where the camera ended
   }
-  if (m_dragging_camera && (delta.x != 0.f || delta.y != 0.f)) {
+  if (m_tools.dragging_camera && (delta.x != 0.f || delta.y != 0.f)) {
     if (orbit) m_camera.orbit(-0.4f * delta.x, 0.4f * delta.y);
     else if (pan) m_camera.pan(-delta.x / height, delta.y / height);
-    m_last_activity = "camera";
+    m_display.last_activity = "camera";
   }
   if (!io.WantCaptureMouse && io.MouseWheel != 0.f) {
     m_camera.zoom(std::pow(0.9f, io.MouseWheel));
-    m_last_activity = "camera";
+    m_display.last_activity = "camera";
     CameraAction zoom;
     zoom.zoom = std::pow(0.9f, io.MouseWheel);
     record(zoom);
@@ -88,8 +88,8 @@ void PainterApp::handle_keys() {
   if (pressed(GLFW_KEY_1)) perform(ViewAction{ViewShown::Result});
   if (pressed(GLFW_KEY_2)) perform(ViewAction{ViewShown::Target});
   if (pressed(GLFW_KEY_3)) perform(ViewAction{ViewShown::Difference});
-  if (pressed(GLFW_KEY_L)) m_show_lights = !m_show_lights;
-  if (pressed(GLFW_KEY_F1) || pressed(GLFW_KEY_H)) m_show_help = !m_show_help;
+  if (pressed(GLFW_KEY_L)) m_display.show_lights = !m_display.show_lights;
+  if (pressed(GLFW_KEY_F1) || pressed(GLFW_KEY_H)) m_status_panel.show_help = !m_status_panel.show_help;
   if ((pressed(GLFW_KEY_ENTER) || pressed(GLFW_KEY_KP_ENTER)) && m_player->tool() == Tool::Shadow) lights_from_shadows();
   if (pressed(GLFW_KEY_F5)) start_job(SolveAction{});
   if (pressed(GLFW_KEY_F6)) start_job(FineTuneAction{});
@@ -118,10 +118,10 @@ void PainterApp::handle_keys() {
   if (ImGui::IsKeyDown(GLFW_KEY_EQUAL) || ImGui::IsKeyDown(GLFW_KEY_KP_ADD)) { m_camera.zoom(0.97f); moved = true; }
   if (ImGui::IsKeyDown(GLFW_KEY_MINUS) || ImGui::IsKeyDown(GLFW_KEY_KP_SUBTRACT)) { m_camera.zoom(1.03f); moved = true; }
   if (moved) {
-    m_last_activity = "camera";
-    m_camera_keys_unrecorded = true;
-  } else if (m_camera_keys_unrecorded) {
-    m_camera_keys_unrecorded = false;
+    m_display.last_activity = "camera";
+    m_tools.camera_keys_unrecorded = true;
+  } else if (m_tools.camera_keys_unrecorded) {
+    m_tools.camera_keys_unrecorded = false;
     record_camera();  // the keys were let go
   }
 }
@@ -147,8 +147,8 @@ void PainterApp::start_job(const TypedAction& job) {
 void PainterApp::handle_tool_input() {
   const ImGuiIO& io = ImGui::GetIO();
   const bool over_ui = io.WantCaptureMouse;
-  m_hover = over_ui || m_dragging_camera ? std::nullopt : pick_at_mouse();
-  if (m_dragging_camera || io.KeyAlt) return;
+  m_tools.hover = over_ui || m_tools.dragging_camera ? std::nullopt : pick_at_mouse();
+  if (m_tools.dragging_camera || io.KeyAlt) return;
   const Tool tool = m_player->tool();
   const bool pressed = ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !over_ui;
   const bool down = ImGui::IsMouseDown(ImGuiMouseButton_Left);
@@ -156,85 +156,85 @@ void PainterApp::handle_tool_input() {
 
   if (tool == Tool::Brush || tool == Tool::Eraser) {
     if (pressed) {
-      m_stroke = std::make_unique<Stroke>(*m_document, m_player->brush(), tool == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint);
-      if (m_view == ui::ViewMode::Result) perform(ViewAction{ViewShown::Target});  // paint is seen in the target view
-      if (m_hover) m_stroke->dab(*m_hover);
-    } else if (m_stroke && down && m_hover && (io.MouseDelta.x != 0.f || io.MouseDelta.y != 0.f)) {
-      if (m_stroke->points().empty()) m_stroke->dab(*m_hover);
-      else m_stroke->drag_to(*m_hover);
+      m_tools.stroke = std::make_unique<Stroke>(*m_document, m_player->brush(), tool == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint);
+      if (m_display.view == ui::ViewMode::Result) perform(ViewAction{ViewShown::Target});  // paint is seen in the target view
+      if (m_tools.hover) m_tools.stroke->dab(*m_tools.hover);
+    } else if (m_tools.stroke && down && m_tools.hover && (io.MouseDelta.x != 0.f || io.MouseDelta.y != 0.f)) {
+      if (m_tools.stroke->points().empty()) m_tools.stroke->dab(*m_tools.hover);
+      else m_tools.stroke->drag_to(*m_tools.hover);
     }
-    if (m_stroke) m_last_activity = "stroke";
-    if (m_stroke && released) finish_stroke();
+    if (m_tools.stroke) m_display.last_activity = "stroke";
+    if (m_tools.stroke && released) finish_stroke();
     return;
   }
   if (tool == Tool::EraseShadow) {
-    if (pressed && m_hover) {
-      auto pairs = find_shadow_pairs(m_player->objects(), *m_rays, m_document->state().lights, *m_hover);
-      const Vec3 p = m_hover->position;
+    if (pressed && m_tools.hover) {
+      auto pairs = find_shadow_pairs(m_player->objects(), *m_rays, m_document->state().lights, *m_tools.hover);
+      const Vec3 p = m_tools.hover->position;
       if (pairs.empty()) status("no light is blocked here: nothing to erase");
       else if (pairs.size() == 1) perform(EraseShadowAction{p, std::nullopt, std::nullopt});
       else {
-        m_erase_click = p;
-        m_pair_choices = pairs;  // the "Which shadow?" popup asks which to erase
+        m_tools.erase_click = p;
+        m_tools.pair_choices = pairs;  // the "Which shadow?" popup asks which to erase
       }
     }
     return;
   }
   // Shadow, spot and adjust take a dragged region; a click in the shadow tool selects the occluder.
   if (pressed) begin_region_drag();
-  if (m_region_drag && down && m_hover) {
-    if (m_region.empty() || glm::length(m_region.back() - m_hover->position) > 0.005f * m_scene->diagonal())
-      m_region.push_back(m_hover->position);
+  if (m_tools.region_drag && down && m_tools.hover) {
+    if (m_tools.region.empty() || glm::length(m_tools.region.back() - m_tools.hover->position) > 0.005f * m_scene->diagonal())
+      m_tools.region.push_back(m_tools.hover->position);
   }
-  if (m_region_drag) m_last_activity = "stroke";
-  if (m_region_drag && released) finish_region_drag();
+  if (m_tools.region_drag) m_display.last_activity = "stroke";
+  if (m_tools.region_drag && released) finish_region_drag();
 }
 
 void PainterApp::lights_from_shadows() {
-  if (m_shadow_pairs.empty()) {
+  if (m_tools.shadow_pairs.empty()) {
     status("no shadow requests yet: click an occluder, then drag where its shadow falls");
     return;
   }
-  if (perform(ShadowAction{m_shadow_pairs})) m_shadow_pairs.clear();
+  if (perform(ShadowAction{m_tools.shadow_pairs})) m_tools.shadow_pairs.clear();
 }
 
 void PainterApp::finish_stroke() {
   const BrushMode mode = m_player->tool() == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint;
-  std::vector<Vec3> points = m_stroke->points();
-  std::vector<Vec3> normals = m_stroke->normals();
-  m_stroke->finish();
-  m_stroke.reset();
+  std::vector<Vec3> points = m_tools.stroke->points();
+  std::vector<Vec3> normals = m_tools.stroke->normals();
+  m_tools.stroke->finish();
+  m_tools.stroke.reset();
   if (points.empty()) return;
   // With the normals: a replay paints the same faces (pick_near may choose the other one at a crease).
   record(StrokeAction{PointSet{points, {}, normals}, mode == BrushMode::Erase});
   // §4.2 fine-tune: the lights follow the edit at once when there are any.
   if (m_options.auto_fine_tune && !m_document->state().lights.empty()) {
     if (m_job->busy()) {
-      m_fine_tune_queued = true;  // after the running job (poll_workers starts it)
+      m_solve_panel.fine_tune_queued = true;  // after the running job (poll_workers starts it)
       return;
     }
-    m_stroke_released = Clock::now();
-    m_fine_tune_after_stroke = perform(Action{"fine_tune", nlohmann::json::object()});
-    if (!m_fine_tune_after_stroke) m_stroke_released.reset();
+    m_solve_panel.stroke_released = Clock::now();
+    m_solve_panel.fine_tune_after_stroke = perform(Action{"fine_tune", nlohmann::json::object()});
+    if (!m_solve_panel.fine_tune_after_stroke) m_solve_panel.stroke_released.reset();
   }
 }
 
 void PainterApp::begin_region_drag() {
-  m_region.clear();
-  m_region_drag = true;
+  m_tools.region.clear();
+  m_tools.region_drag = true;
 }
 
 void PainterApp::finish_region_drag() {
-  m_region_drag = false;
+  m_tools.region_drag = false;
   const Tool tool = m_player->tool();
   const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
   const bool click = std::hypot(drag.x, drag.y) < kClickPixels;
-  std::vector<Vec3> region = thinned(m_region, 256);
-  m_region.clear();
+  std::vector<Vec3> region = thinned(m_tools.region, 256);
+  m_tools.region.clear();
   if (tool == Tool::Shadow && click) {
-    if (m_hover) {
-      m_occluder_point = m_hover->position;
-      const Hit hit = m_rays->closest_point(m_hover->position, 0.01f * m_scene->diagonal());
+    if (m_tools.hover) {
+      m_tools.occluder_point = m_tools.hover->position;
+      const Hit hit = m_rays->closest_point(m_tools.hover->position, 0.01f * m_scene->diagonal());
       if (hit.valid())
         status("occluder: " + m_player->objects().name(m_player->objects().object_of_triangle(hit.triangle)) +
                " - now drag where its shadow should fall");
@@ -243,13 +243,13 @@ void PainterApp::finish_region_drag() {
   }
   if (region.empty()) return;
   if (tool == Tool::Shadow) {
-    if (!m_occluder_point) {
+    if (!m_tools.occluder_point) {
       status("click the object that casts the shadow first");
       return;
     }
-    const Vec3 o = *m_occluder_point;
-    m_shadow_pairs.push_back(ShadowAction::Pair{o, std::nullopt, PointSet{region, {}, {}}});
-    status(std::to_string(m_shadow_pairs.size()) + " shadow request(s): press 'Lights from shadows', or add more");
+    const Vec3 o = *m_tools.occluder_point;
+    m_tools.shadow_pairs.push_back(ShadowAction::Pair{o, std::nullopt, PointSet{region, {}, {}}});
+    status(std::to_string(m_tools.shadow_pairs.size()) + " shadow request(s): press 'Lights from shadows', or add more");
   } else if (tool == Tool::Spot) {
     const Camera c = m_camera.to_camera();
     const Vec3 d = glm::normalize(c.target - c.eye);
@@ -257,10 +257,10 @@ void PainterApp::finish_region_drag() {
     spot.points.world = region;
     spot.eye = c.eye;
     spot.direction = d;
-    spot.falloff_deg = m_spot_falloff;
+    spot.falloff_deg = m_tools.spot_falloff;
     perform(spot);
   } else if (tool == Tool::Adjust) {
-    const Rgb& m = m_adjust_multiplier;
+    const Rgb& m = m_tools.adjust_multiplier;
     AdjustRegionAction adjust;
     adjust.points.world = region;
     adjust.multiplier = m;

@@ -63,7 +63,7 @@ void PainterApp::draw_panels() {
   panel_placement();
   panel_lights();
   panel_files();
-  if (ImGui::Button("Help (H)")) m_show_help = !m_show_help;
+  if (ImGui::Button("Help (H)")) m_status_panel.show_help = !m_status_panel.show_help;
   tip("Keyboard shortcuts and mouse controls");
   ImGui::End();
   panel_help();
@@ -111,34 +111,34 @@ void PainterApp::panel_tools() {
     // Applied live; recorded as one brush action when the slider is let go.
     m_player->set_brush(brush);
   }
-  if (!ImGui::IsAnyItemActive() && !(brush == m_recorded_brush)) {
+  if (!ImGui::IsAnyItemActive() && !(brush == m_tools.recorded_brush)) {
     // Through perform(), as every other action: an invalid value is a status line.
-    if (!perform(brush_action(brush))) m_player->set_brush(m_recorded_brush);
-    m_recorded_brush = m_player->brush();
+    if (!perform(brush_action(brush))) m_player->set_brush(m_tools.recorded_brush);
+    m_tools.recorded_brush = m_player->brush();
   }
   if (m_player->tool() == Tool::Shadow) {
-    ImGui::Text("%zu shadow request(s)", m_shadow_pairs.size());
+    ImGui::Text("%zu shadow request(s)", m_tools.shadow_pairs.size());
     if (ImGui::Button("Lights from shadows (Enter)")) lights_from_shadows();
     tip("Estimate one point light per consistent set of occluder-shadow pairs (paper Fig. 5)");
     ImGui::SameLine();
     if (ImGui::Button("Clear requests")) {
-      m_shadow_pairs.clear();
-      m_occluder_point.reset();
+      m_tools.shadow_pairs.clear();
+      m_tools.occluder_point.reset();
     }
   }
   if (m_player->tool() == Tool::Spot) {
-    ImGui::SliderFloat("soft edge", &m_spot_falloff, 0.f, 20.f, "%.1f deg");
+    ImGui::SliderFloat("soft edge", &m_tools.spot_falloff, 0.f, 20.f, "%.1f deg");
     tip("Width of the spotlight's soft edge, inside its cutoff");
   }
   if (m_player->tool() == Tool::Adjust) {
-    ImGui::ColorEdit3("multiplier", &m_adjust_multiplier.r, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    ImGui::ColorEdit3("multiplier", &m_tools.adjust_multiplier.r, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
     tip("Per channel: 1.2 = 20% brighter, below 1 darker; only lights that light the region change");
   }
 }
 
 void PainterApp::panel_view() {
   if (!ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  int mode = int(m_view);
+  int mode = int(m_display.view);
   bool changed = ImGui::RadioButton("result (1)", &mode, int(ui::ViewMode::Result));
   tip("The scene lit by the current lights (the renderer's per-vertex illumination)");
   ImGui::SameLine();
@@ -151,18 +151,18 @@ void PainterApp::panel_view() {
     const ui::ViewMode chosen = ui::ViewMode(mode);
     perform(ViewAction{chosen == ui::ViewMode::Target ? ViewShown::Target : chosen == ui::ViewMode::Difference ? ViewShown::Difference : ViewShown::Result});
   }
-  if (ImGui::SliderFloat("exposure", &m_exposure_stops, -6.f, 6.f, "%+.1f stops")) m_colours_dirty = true;
+  if (ImGui::SliderFloat("exposure", &m_display.exposure_stops, -6.f, 6.f, "%+.1f stops")) m_display.colours_dirty = true;
   tip("Display brightness only; does not change lights or target");
   ImGui::SameLine();
   if (ImGui::SmallButton("auto")) {
-    m_exposure_from_result = false;
-    m_exposure_stops = 0.f;
-    m_colours_dirty = true;
+    m_display.exposure_from_result = false;
+    m_display.exposure_stops = 0.f;
+    m_display.colours_dirty = true;
   }
   tip("Pick the exposure again from the current result");
-  ImGui::Checkbox("lights (L)", &m_show_lights);
+  ImGui::Checkbox("lights (L)", &m_display.show_lights);
   tip("Light markers; spotlights show their cone");
-  if (m_illumination_pending) {
+  if (m_display.illumination_pending) {
     ImGui::SameLine();
     ImGui::TextDisabled("rendering...");
   }
@@ -195,11 +195,11 @@ void PainterApp::panel_solve() {
     // plus the cut's k (the `cut` action's k counts the cut only).
     const int base = int(m_job->cut_base_count());
     const int lights = int(m_document->state().lights.size());
-    if (m_cut_k <= base || m_cut_k > base + int(cuts)) m_cut_k = std::clamp(lights, base + 1, base + int(cuts));
-    ImGui::SliderInt("light count", &m_cut_k, base + 1, base + int(cuts), "%d", ImGuiSliderFlags_AlwaysClamp);
+    if (m_solve_panel.cut_k <= base || m_solve_panel.cut_k > base + int(cuts)) m_solve_panel.cut_k = std::clamp(lights, base + 1, base + int(cuts));
+    ImGui::SliderInt("light count", &m_solve_panel.cut_k, base + 1, base + int(cuts), "%d", ImGuiSliderFlags_AlwaysClamp);
     tip(base > 0 ? "Lights kept by the add, plus a cut of the light hierarchy (no new solve)"
                  : "Move along the light hierarchy's cuts without a new solve");
-    if (ImGui::IsItemDeactivatedAfterEdit() && m_cut_k != lights) perform(CutAction{size_t(m_cut_k - base)});
+    if (ImGui::IsItemDeactivatedAfterEdit() && m_solve_panel.cut_k != lights) perform(CutAction{size_t(m_solve_panel.cut_k - base)});
   }
   ImGui::BeginDisabled(!m_document->can_undo());
   if (ImGui::Button("Undo")) perform(UndoAction{});
@@ -218,21 +218,21 @@ void PainterApp::panel_placement() {
   if (!ImGui::CollapsingHeader("Placement")) return;
   const std::string now = m_job->options().settings.placement.describe();
   ImGui::SetNextItemWidth(300);
-  ImGui::InputTextWithHint("##place", "ceiling:0.2 height:1:2.5 count:1:4", m_place_text, sizeof(m_place_text));
+  ImGui::InputTextWithHint("##place", "ceiling:0.2 height:1:2.5 count:1:4", m_solve_panel.place_text, sizeof(m_solve_panel.place_text));
   tip("Where the next solves may put lights, as hilight solve --place: ceiling[:OFFSET], height:MIN:MAX, "
       "box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX (space-separated; empty: anywhere free)");
   ImGui::BeginDisabled(m_job->busy());
   ImGui::SameLine();
-  if (ImGui::Button("Apply")) perform(PlaceAction{std::string(m_place_text)});
+  if (ImGui::Button("Apply")) perform(PlaceAction{std::string(m_solve_panel.place_text)});
   ImGui::SameLine();
   if (ImGui::Button("On the ceiling")) {
-    std::snprintf(m_place_text, sizeof(m_place_text), "ceiling:0.2");
-    perform(PlaceAction{std::string(m_place_text)});
+    std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "ceiling:0.2");
+    perform(PlaceAction{std::string(m_solve_panel.place_text)});
   }
   tip("Ceiling lights only: mounted 0.2 below the ceiling above each light");
   ImGui::SameLine();
   if (ImGui::Button("Anywhere")) {
-    m_place_text[0] = '\0';
+    m_solve_panel.place_text[0] = '\0';
     perform(PlaceAction{std::string()});
   }
   ImGui::EndDisabled();
@@ -256,26 +256,26 @@ void PainterApp::panel_lights() {
 
 void PainterApp::panel_files() {
   if (!ImGui::CollapsingHeader("Files")) return;
-  ImGui::InputText("target", &m_target_path);
+  ImGui::InputText("target", &m_files.target_path);
   tip("Target PLY, the format `hilight solve --target` reads");
-  if (ImGui::Button("Open target")) perform(LoadTargetAction{absolute_path(m_target_path)});
+  if (ImGui::Button("Open target")) perform(LoadTargetAction{absolute_path(m_files.target_path)});
   ImGui::SameLine();
-  if (ImGui::Button("Save target")) perform(SaveTargetAction{absolute_path(m_target_path)});
-  ImGui::InputText("lights", &m_lights_path);
+  if (ImGui::Button("Save target")) perform(SaveTargetAction{absolute_path(m_files.target_path)});
+  ImGui::InputText("lights", &m_files.lights_path);
   tip("Lights JSON, as `hilight render --lights` and `hilight solve -o` use");
-  if (ImGui::Button("Load lights")) perform(LoadLightsAction{absolute_path(m_lights_path)});
+  if (ImGui::Button("Load lights")) perform(LoadLightsAction{absolute_path(m_files.lights_path)});
   ImGui::SameLine();
-  if (ImGui::Button("Save lights")) perform(SaveLightsAction{absolute_path(m_lights_path)});
-  ImGui::InputText("image", &m_screenshot_path);
-  if (ImGui::Button("Screenshot")) perform(ScreenshotAction{absolute_path(m_screenshot_path)});
+  if (ImGui::Button("Save lights")) perform(SaveLightsAction{absolute_path(m_files.lights_path)});
+  ImGui::InputText("image", &m_files.screenshot_path);
+  if (ImGui::Button("Screenshot")) perform(ScreenshotAction{absolute_path(m_files.screenshot_path)});
   tip("The scene view as PNG (without these panels)");
   if (!m_record_path.empty()) ImGui::TextWrapped("Recording to %s", m_record_path.c_str());
 }
 
 void PainterApp::panel_help() {
-  if (!m_show_help) return;
+  if (!m_status_panel.show_help) return;
   ImGui::SetNextWindowPos(ImVec2(370, 8), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Help", &m_show_help, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::Begin("Help", &m_status_panel.show_help, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::TextUnformatted("Paint the light you want; hilight finds the lights.");
   ImGui::Separator();
   if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg)) {
@@ -299,10 +299,10 @@ void PainterApp::panel_status() {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
   ImGui::Text("%s | %zu lights | %s", to_string(m_player->tool()), m_document->state().lights.size(),
-              m_job->busy() ? ("working: " + m_job->progress()).c_str() : m_status.c_str());
-  if (ImGui::IsItemHovered() && !m_log.empty()) {
+              m_job->busy() ? ("working: " + m_job->progress()).c_str() : m_status_panel.line.c_str());
+  if (ImGui::IsItemHovered() && !m_status_panel.log.empty()) {
     ImGui::BeginTooltip();
-    for (size_t i = m_log.size() > 12 ? m_log.size() - 12 : 0; i < m_log.size(); ++i) ImGui::TextUnformatted(m_log[i].c_str());
+    for (size_t i = m_status_panel.log.size() > 12 ? m_status_panel.log.size() - 12 : 0; i < m_status_panel.log.size(); ++i) ImGui::TextUnformatted(m_status_panel.log[i].c_str());
     ImGui::EndTooltip();
   }
   ImGui::End();
@@ -310,22 +310,22 @@ void PainterApp::panel_status() {
 
 void PainterApp::popup_shadow_pairs() {
   const char* name = "Which shadow?";
-  if (!m_pair_choices.empty() && !ImGui::IsPopupOpen(name)) ImGui::OpenPopup(name);
+  if (!m_tools.pair_choices.empty() && !ImGui::IsPopupOpen(name)) ImGui::OpenPopup(name);
   if (!ImGui::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   ImGui::TextUnformatted("Several occluder-light pairs shadow this point. Erase which?");
-  for (size_t i = 0; i < m_pair_choices.size(); ++i) {
-    const ShadowPair& pair = m_pair_choices[i];
+  for (size_t i = 0; i < m_tools.pair_choices.size(); ++i) {
+    const ShadowPair& pair = m_tools.pair_choices[i];
     char label[160];
     std::snprintf(label, sizeof label, "%s blocking light %zu##%zu", m_player->objects().name(pair.occluder).c_str(), pair.light, i);
     if (ImGui::Button(label)) {
-      const Vec3 p = *m_erase_click;
+      const Vec3 p = *m_tools.erase_click;
       perform(EraseShadowAction{p, std::nullopt, size_t(i)});
-      m_pair_choices.clear();
+      m_tools.pair_choices.clear();
       ImGui::CloseCurrentPopup();
     }
   }
   if (ImGui::Button("Cancel (Esc)") || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
-    m_pair_choices.clear();
+    m_tools.pair_choices.clear();
     ImGui::CloseCurrentPopup();
   }
   ImGui::EndPopup();

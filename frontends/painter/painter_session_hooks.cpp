@@ -24,8 +24,8 @@ PlayerHooks PainterApp::make_hooks() {
   };
   hooks.screenshot = [this](const std::filesystem::path& path) { screenshot(path); };
   hooks.view = [this](ViewShown show) {
-    m_view = show == ViewShown::Target ? ui::ViewMode::Target : show == ViewShown::Difference ? ui::ViewMode::Difference : ui::ViewMode::Result;
-    m_colours_dirty = true;
+    m_display.view = show == ViewShown::Target ? ui::ViewMode::Target : show == ViewShown::Difference ? ui::ViewMode::Difference : ui::ViewMode::Result;
+    m_display.colours_dirty = true;
   };
   hooks.log = [this](const std::string& line) { status(line); };
   return hooks;
@@ -83,7 +83,7 @@ void PainterApp::record(const Action& action) {
     status(std::string("not recorded: ") + e.what());
     return;
   }
-  if (action.type == BrushAction::kType) m_recorded_brush = m_player->brush();
+  if (action.type == BrushAction::kType) m_tools.recorded_brush = m_player->brush();
   if (m_record_path.empty()) return;
   try {
     m_recorder.save(m_record_path);
