@@ -2,6 +2,7 @@
 
 #include "hilight/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hilight {
@@ -46,6 +47,12 @@ void target_from_units(Target& target, Units units, TargetQuantity quantity) {
     // L = ρ/π · E per channel: lux on a surface is what the surface receives.
     if (quantity == TargetQuantity::Illuminance) v *= target.points.albedo[i] / float(kPi);
   }
+}
+
+double luminaire_dimming(const Light& light) {
+  if (light.type != LightType::Luminaire || !light.profile || !(light.profile->peak() > 0)) return 0.0;
+  const double largest = std::max({light.intensity.r, light.intensity.g, light.intensity.b});
+  return largest * kLumensPerWatt / light.profile->peak();
 }
 
 double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }

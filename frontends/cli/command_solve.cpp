@@ -7,6 +7,7 @@
 #include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_file.hpp"
 #include "hilight/light_cache_store.hpp"
+#include "hilight/io/photometry_io.hpp"
 #include "hilight/units.hpp"
 #include "hilight/pipeline/solve_session.hpp"
 #include "hilight/threads.hpp"
@@ -77,6 +78,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--target", target_path, "target PLY (x y z red green blue [weight]) or glTF with vertex colours (COLOR_0)")->required();
   app.add_option("-o,--output", output, "lights to write: .json (hilight's), or .gltf/.glb (the scene's meshes and the lights as KHR_lights_punctual)")->required();
   bool vertex_colours = false;
+  std::string luminaire_path;
+  float luminaire_spin = 0.f;
+  app.add_option("--luminaire", luminaire_path,
+                 "every light is this luminaire (IES LM-63 or EULUMDAT), aimed straight down: the solve finds how many, where, and their dimming");
+  app.add_option("--luminaire-spin", luminaire_spin, "turn the luminaire's C0 plane about its aim, degrees")->check(CLI::Range(-360.0, 360.0));
   std::string units_name = "radiometric", quantity_name = "luminance";
   app.add_option("--units", units_name,
                  "radiometric: lights JSON in W/sr, targets in W/(sr m2); photometric: candela, and targets in cd/m2 or lux (--target-quantity)")
@@ -138,6 +144,18 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   check_writable(output);
   if (!report_path.empty()) check_writable(report_path);
   if (vertex_colours && !is_gltf_path(output)) throw InputError("--vertex-colours needs a .gltf or .glb output, not " + output);
+  if (!luminaire_path.empty()) {
+    Light luminaire;
+    luminaire.type = LightType::Luminaire;
+    luminaire.profile = std::make_shared<const Photometry>(read_photometry(luminaire_path));
+    luminaire.profile_path = std::filesystem::absolute(luminaire_path).lexically_normal().string();
+    luminaire.direction = Vec3(0.f, -1.f, 0.f);
+    luminaire.spin_deg = luminaire_spin;
+    if (!(luminaire.profile->peak() > 0)) throw InputError(luminaire_path, "the luminaire emits no light (all candela 0)");
+    s.luminaire = std::move(luminaire);
+  } else if (luminaire_spin != 0.f) {
+    throw InputError("--luminaire-spin needs --luminaire");
+  }
   const Units units = parse_units(units_name);
   const TargetQuantity quantity = parse_target_quantity(quantity_name);
   if (quantity == TargetQuantity::Illuminance && units != Units::Photometric)
@@ -204,6 +222,18 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     }
     j["luminous_flux_lm"] = flux;
     j["total_luminous_flux_lm"] = total;
+    if (s.luminaire) {  // each light's share of the luminaire's rated output, and the power it draws
+      nlohmann::json dimming = nlohmann::json::array();
+      double watts = 0;
+      for (const auto& l : lights) {
+        const double d = luminaire_dimming(l);
+        dimming.push_back(d);
+        watts += d * l.profile->input_watts;
+      }
+      j["luminaire"] = s.luminaire->profile_path;
+      j["dimming"] = dimming;
+      j["electrical_power_w"] = s.luminaire->profile->input_watts > 0 ? nlohmann::json(watts) : nlohmann::json(nullptr);
+    }
     j["units"] = units_name;
     std::string text = j.dump(2) + "\n";
     write_atomically(report_path, [&](const std::filesystem::path& temp) {
@@ -216,7 +246,9 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
                                  ? "all " + std::to_string(report.target_points) + " target points"
                                  : std::to_string(report.dbar_points) + " of " + std::to_string(report.target_points) + " target points";
     const auto spots = std::count_if(lights.begin(), lights.end(), [](const Light& l) { return l.type == LightType::Spot; });
-    const std::string of_them = spots ? " (" + std::to_string(spots) + (spots == 1 ? " spot)" : " spots)") : "";
+    const std::string of_them = s.luminaire ? " (" + std::filesystem::path(s.luminaire->profile_path).filename().string() + ")"
+                                : spots     ? " (" + std::to_string(spots) + (spots == 1 ? " spot)" : " spots)")
+                                            : "";
     std::fprintf(stderr, "hilight: %zu light%s%s, D̄ %.2f%% over %s (%zu samples), %.2f s -> %s\n", report.chosen,
                  report.chosen == 1 ? "" : "s", of_them.c_str(), 100.0 * report.dbar, over.c_str(), report.samples,
                  report.seconds["total"], output.c_str());
@@ -224,6 +256,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       std::fprintf(stderr, "hilight: lit from outside: lights beyond the scene's bounds (inside them D̄ was %.1f%%)\n",
                    100.0 * report.dbar_closed);
   }
+  if (s.luminaire)
+    for (size_t j = 0; j < lights.size(); ++j)
+      if (lights[j].type == LightType::Luminaire && luminaire_dimming(lights[j]) > 1.0 + 1e-6)
+        std::fprintf(stderr, "hilight: warning: light %zu needs %.0f%% of the luminaire's rated output (more luminaires, or a brighter one)\n", j,
+                     100.0 * luminaire_dimming(lights[j]));
   // No silent failure: a poor fit says so, whatever --quiet says, and
   // --max-dbar makes it an error (after the files are written).
   if (report.dbar > kPoorFit && report.unreachable >= 0.1)

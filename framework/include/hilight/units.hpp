@@ -48,4 +48,8 @@ double luminance(const Rgb& c);
 /// its smoothstep edge counted at its mean, one half).
 double luminous_flux(const Light& light);
 
+/// A luminaire's intensity as a share of its profile's rated peak (1 = the
+/// file's rated output; the largest channel counts). 0 for other lights.
+double luminaire_dimming(const Light& light);
+
 } // namespace hilight

@@ -53,7 +53,11 @@ Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScen
                SolveSettings settings, ProgressFn progress)
     : m_scene(std::move(scene)), m_rays(std::move(rays)), m_closed_bounds(m_scene->light_bounds()),
       m_open_bounds(open_light_bounds(*m_scene)), m_space(std::in_place, *m_rays, settings.placement, m_closed_bounds),
-      m_stoppable_renderer(renderer, m_stop), m_stoppable_reference(reference, m_stop), m_renderer(m_stoppable_renderer),
+      m_luminaire_renderer(settings.luminaire ? std::optional<LuminaireRenderer>(std::in_place, renderer, *settings.luminaire) : std::nullopt),
+      m_luminaire_reference(settings.luminaire ? std::optional<LuminaireRenderer>(std::in_place, reference, *settings.luminaire) : std::nullopt),
+      m_stoppable_renderer(m_luminaire_renderer ? static_cast<Renderer&>(*m_luminaire_renderer) : renderer, m_stop),
+      m_stoppable_reference(m_luminaire_reference ? static_cast<Renderer&>(*m_luminaire_reference) : reference, m_stop),
+      m_renderer(m_stoppable_renderer),
       m_reference(m_stoppable_reference), m_sampler(sampler),
       m_optimizer(optimizer), m_cache_builder(cache),
       m_settings(std::move(settings)), m_progress(std::move(progress)) {}
@@ -223,7 +227,15 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
 
 Lighting Solver::cut_lights(size_t k) const {
   if (m_cuts.empty()) throw std::logic_error("Solver::cut_lights: no solve yet");
-  return m_cuts[std::clamp<size_t>(k, 1, m_cuts.size()) - 1];
+  return to_output(m_cuts[std::clamp<size_t>(k, 1, m_cuts.size()) - 1]);
+}
+
+Lighting Solver::to_points(const Lighting& lights) const {
+  return m_settings.luminaire ? as_points(lights, *m_settings.luminaire) : lights;
+}
+
+Lighting Solver::to_output(Lighting lights) const {
+  return m_settings.luminaire ? as_luminaires(lights, *m_settings.luminaire) : lights;
 }
 
 std::vector<Rgb> Solver::illumination(const Target& target, const Lighting& lights) {
@@ -324,7 +336,8 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
   // Point lights cannot explain the target, inside or beyond: spotlights
   // from nothing (point lights beside them where they pay) compete; the
   // fewer lights win unless the others improve D̄ by ε_impro (eq. 9).
-  if (m_settings.propose_spots && report.dbar > kSpotDbar && m_settings.spot_hints.empty() && m_settings.fixed_count == 0) {
+  if (m_settings.propose_spots && report.dbar > kSpotDbar && m_settings.spot_hints.empty() && m_settings.fixed_count == 0 &&
+      !m_settings.luminaire) {  // the designer chose the luminaire: no spots instead
     stage("looking for spotlights");
     SolveReport spot_report;
     spot_report.seconds = report.seconds;
@@ -348,7 +361,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
   finish_report(target, lights, report);
   if (report.dbar > kPoorFitDbar) report.unreachable = unreachable_share(target, *m_space);
   report.seconds["total"] = total.seconds();
-  return lights;
+  return to_output(std::move(lights));
 }
 
 void Solver::drop_idle_lights(Lighting& lights) const {
@@ -415,7 +428,8 @@ Lighting Solver::finish_in_space(const Target& target, SampleSet samples, Lighti
   return lights;
 }
 
-Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveReport& report, std::stop_token stop) {
+Lighting Solver::fine_tune(const Target& target, const Lighting& given, SolveReport& report, std::stop_token stop) {
+  const Lighting lights = to_points(given);
   m_stop = std::move(stop);
   Stopwatch total;
   open_space_for(lights);
@@ -430,10 +444,11 @@ Lighting Solver::fine_tune(const Target& target, const Lighting& lights, SolveRe
   report.seconds["refinement"] += refine_watch.seconds();
   finish_report(target, refined, report);
   report.seconds["total"] = total.seconds();
-  return refined;
+  return to_output(std::move(refined));
 }
 
-Lighting Solver::add_lights(const Target& target, const Lighting& lights, SolveReport& report, std::stop_token stop) {
+Lighting Solver::add_lights(const Target& target, const Lighting& given, SolveReport& report, std::stop_token stop) {
+  const Lighting lights = to_points(given);
   m_stop = std::move(stop);
   Stopwatch total;
   open_space_for(lights);
@@ -457,7 +472,7 @@ Lighting Solver::add_lights(const Target& target, const Lighting& lights, SolveR
   all.insert(all.end(), added.begin(), added.end());
   finish_report(target, all, report);
   report.seconds["total"] = total.seconds();
-  return all;
+  return to_output(std::move(all));
 }
 
 } // namespace hilight

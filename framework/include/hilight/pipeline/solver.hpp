@@ -8,6 +8,7 @@
 #include "hilight/sampler.hpp"
 #include "hilight/pipeline/hierarchy.hpp"
 #include "hilight/pipeline/seeder.hpp"
+#include "hilight/pipeline/luminaire_renderer.hpp"
 #include "hilight/pipeline/stoppable_renderer.hpp"
 #include "hilight/target.hpp"
 
@@ -50,6 +51,10 @@ struct SolveSettings {
   /// look for spotlights from nothing (no hints; pipeline/spot_proposals.hpp)
   /// and keep them if they win by eq. 9 (docs/solve.md, "Spotlights").
   bool propose_spots = true;
+  /// Every light the solve places is this luminaire (`--luminaire FILE`):
+  /// its profile, aim and spin; the solve chooses positions, count and
+  /// intensities (pipeline/luminaire_renderer.hpp).
+  std::optional<Light> luminaire;
 };
 
 /// The automatic sample count: one sample per 14 target points, within
@@ -156,6 +161,10 @@ private:
   /// bounds but within the open ones (lights from an earlier open solve).
   void open_space_for(const Lighting& lights);
   void ensure_cache(SolveReport& report);
+  /// With --luminaire: given lights of its profile as the point lights the
+  /// pipeline works with, and its results as luminaires; otherwise as they are.
+  Lighting to_points(const Lighting& lights) const;
+  Lighting to_output(Lighting lights) const;
   /// The light cache restricted to `samples` (nullptr without a cache).
   std::unique_ptr<LightCacheView> cache_view(const SampleSet& samples) const;
   /// The count bounds: --lights N, else the placement's count:MIN:MAX (0: none).
@@ -197,6 +206,7 @@ private:
   Bounds m_closed_bounds, m_open_bounds;  ///< light_bounds() and open_light_bounds(), computed once
   std::optional<LightSpace> m_space;  ///< where lights may stand now (closed or open)
   std::stop_token m_stop;  ///< the running call's (its renderers below check it)
+  std::optional<LuminaireRenderer> m_luminaire_renderer, m_luminaire_reference;  ///< with --luminaire
   StoppableRenderer m_stoppable_renderer, m_stoppable_reference;
   Renderer& m_renderer;   ///< = m_stoppable_renderer
   Renderer& m_reference;  ///< = m_stoppable_reference
