@@ -144,15 +144,13 @@ TEST_CASE("where a luminaire cannot go yet, the command says so in one line", "[
       {"export", room, "--lights", (dir / "l.json").string(), "-o", (dir / "s.glb").string()},
       {"solve", room, "--target", (dir / "t.ply").string(), "-o", (dir / "f.json").string(), "--mode", "fine-tune", "--initial",
        (dir / "l.json").string(), "--no-cache"}};
-  if (!test::skip_without_renderer("ism-vulkan"))
-    refused.push_back({"render", room, "--lights", (dir / "l.json").string(), "-o", (dir / "i.ply").string(), "--renderer", "ism-vulkan"});
   for (const auto& args : refused) {
     INFO(args[0] << " " << args.back());
     const auto r = test::run_hilight(args);
     CHECK(r.exit_code == 2);
     CHECK(test::line_count(r.err) == 1);
   }
-  for (const char* out : {"s.pov", "s.glb", "f.json", "i.ply"}) CHECK_FALSE(std::filesystem::exists(dir / out));
+  for (const char* out : {"s.pov", "s.glb", "f.json"}) CHECK_FALSE(std::filesystem::exists(dir / out));
   // A luminaire without its profile, or with both intensity and dimming.
   std::ofstream(dir / "bad.json") << R"({"lights":[{"type":"luminaire","profile":"missing.ies","position":[2,2.4,2],"dimming":1}]})";
   const auto missing = test::run_hilight({"render", room, "--lights", (dir / "bad.json").string(), "-o", (dir / "x.ply").string()});
@@ -165,4 +163,39 @@ TEST_CASE("where a luminaire cannot go yet, the command says so in one line", "[
   const auto huge = test::run_hilight({"render", room, "--lights", (dir / "huge.json").string(), "-o", (dir / "x.ply").string()});
   CHECK(huge.exit_code == 2);
   CHECK_THAT(huge.err, Catch::Contains("huge.json"));
+}
+
+TEST_CASE("ism-vulkan lights a luminaire as Embree does", "[photometry][render][ism]") {
+  if (test::skip_without_renderer("ism-vulkan")) return;
+  const auto dir = test::output_dir("luminaire_ism");
+  std::ofstream(dir / "down.ies") << quadrant_ies();
+  std::ofstream(dir / "l.json") << R"({"lights":[{"type":"luminaire","profile":"down.ies","position":[2.2,2.5,2.1],"dimming":1,"spin_deg":20},
+                                                 {"type":"luminaire","profile":"down.ies","position":[4.1,2.3,3.2],"dimming":0.6,"direction":[0.3,-1,0]}]})";
+  // The same places as point lights: the two renderers' own agreement there.
+  std::ofstream(dir / "points.json") << R"({"lights":[{"type":"point","position":[2.2,2.5,2.1],"intensity":[0.22,0.22,0.22]},
+                                                      {"type":"point","position":[4.1,2.3,3.2],"intensity":[0.13,0.13,0.13]}]})";
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  for (const char* bounces : {"0", "1"}) {
+    INFO("bounces " << bounces);
+    double d[2];
+    for (int set = 0; set < 2; ++set) {
+      const std::string lights = set ? "points" : "l";
+      for (const char* renderer : {"embree", "ism-vulkan"}) {
+        const auto r = test::run_hilight({"render", room, "--lights", (dir / (lights + ".json")).string(), "-o",
+                                          (dir / (lights + renderer + bounces + ".ply")).string(), "--renderer", renderer,
+                                          "--bounces", bounces});
+        INFO(r.err);
+        REQUIRE(r.exit_code == 0);
+      }
+      d[set] = test::dbar(values(dir / (lights + "ism-vulkan" + bounces + ".ply")), values(dir / (lights + "embree" + bounces + ".ply")));
+    }
+    INFO("D̄ ism-vulkan against Embree: luminaires " << d[0] << ", point lights at the same places " << d[1]);
+    if (std::string(bounces) == "0") {
+      CHECK(d[0] < 0.01);  // direct light; the profile resampled every 5° × 2.5° on the GPU
+    } else {
+      // The bounce: what ism-vulkan's VPLs miss at concave creases (docs/ism-vulkan.md) is there for point
+      // lights too (measured 5.2% here, 6.3% for the luminaires).
+      CHECK(d[0] < d[1] + 0.02);
+    }
+  }
 }

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 #include <tbb/parallel_for.h>
 
@@ -46,10 +47,24 @@ const uint32_t kGather[] =
 struct GpuLight {
   float position[4];
   float direction[4];
-  float cone[4];  // cos cutoff, cos of the full-intensity core, spot?, unused
+  float cone[4];  // cos cutoff, cos of the full-intensity core, 1 spot / 2 luminaire, unused
+  float c0[4];    // a luminaire's C0 axis, w: its profile table's offset
+  float c90[4];   // its C90 axis
 };
 
-GpuLight to_gpu(const Light& light) {
+/// Profile tables as common.glsl reads them: candela over the peak every 5° of
+/// C and 2.5° of γ (bilinear there; Embree interpolates the file's own grid).
+constexpr uint32_t kProfileC = 73, kProfileG = 73;
+
+std::vector<float> profile_table(const Photometry& p) {
+  std::vector<float> t(size_t(kProfileC) * kProfileG);
+  const double peak = p.peak() > 0 ? p.peak() : 1.0;
+  for (uint32_t c = 0; c < kProfileC; ++c)
+    for (uint32_t g = 0; g < kProfileG; ++g) t[size_t(c) * kProfileG + g] = float(p.intensity(5.0 * c, 2.5 * g) / peak);
+  return t;
+}
+
+GpuLight to_gpu(const Light& light, uint32_t profile_offset) {
   GpuLight g{};
   for (int k = 0; k < 3; ++k) {
     g.position[k] = light.position[k];
@@ -60,6 +75,20 @@ GpuLight to_gpu(const Light& light) {
     g.cone[0] = cone.cos_cutoff;
     g.cone[1] = cone.cos_inner;
     g.cone[2] = 1.f;
+  }
+  if (light.type == LightType::Luminaire) {
+    const LuminaireFrame frame = LuminaireFrame::of(light);
+    for (int k = 0; k < 3; ++k) {
+      g.direction[k] = frame.nadir[k];
+      g.c0[k] = frame.c0[k];
+      g.c90[k] = frame.c90[k];
+    }
+    g.cone[2] = 2.f;
+    g.c0[3] = float(profile_offset);
+    // Type C files say which γ they measured (type B ones cover the front).
+    const bool type_c = light.profile && light.profile->type == Photometry::Type::C;
+    g.direction[3] = type_c ? float(light.profile->vertical.front()) : 0.f;
+    g.c90[3] = type_c ? float(light.profile->vertical.back()) : 90.f;
   }
   return g;
 }
@@ -114,12 +143,13 @@ struct IsmRenderer::Workspace {
   size_t points = 0;
   Buffer light_data, triangles, vpls, ism, pyramid, result;
   Buffer face_indices, face_ids;  ///< culled triangle lists of the chunk's cube faces (grown on demand)
+  Buffer profiles;                ///< the chunk's luminaire profile tables (grown on demand)
 };
 
 struct IsmRenderer::Kernels {
   ComputeKernel direct, vpl, splat, pull, push, gather;
   Kernels(VulkanContext& c, uint32_t w)
-      : direct(c, spirv(kDirect), 9, sizeof(DirectParams), w), vpl(c, spirv(kVplGenerate), 5, sizeof(VplParams), w),
+      : direct(c, spirv(kDirect), 10, sizeof(DirectParams), w), vpl(c, spirv(kVplGenerate), 6, sizeof(VplParams), w),
         splat(c, spirv(kIsmSplat), 3, sizeof(SplatParams), w), pull(c, spirv(kIsmPull), 2, sizeof(PullParams), w),
         push(c, spirv(kIsmPush), 1, sizeof(PushParams), w), gather(c, spirv(kGather), 6, sizeof(GatherParams), w) {}
 };
@@ -294,9 +324,26 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
   const uint32_t c = uint32_t(lights.size()), n = uint32_t(pb.count);
   const float diagonal = m_scene->diagonal();
   GpuLight* gpu = ws.light_data.data<GpuLight>();
+  // Each profile's table once, however many lights carry it.
+  std::vector<float> tables;
+  std::map<const Photometry*, uint32_t> table_of;
+  for (const Light& l : lights)
+    if (l.type == LightType::Luminaire && l.profile && !table_of.count(l.profile.get())) {
+      table_of[l.profile.get()] = uint32_t(tables.size());
+      const std::vector<float> t = profile_table(*l.profile);
+      tables.insert(tables.end(), t.begin(), t.end());
+    }
+  if (tables.empty()) tables.push_back(0.f);
+  const VkDeviceSize table_bytes = tables.size() * sizeof(float);
+  if (!ws.profiles || ws.profiles.size() < table_bytes) {
+    ws.profiles.reset();
+    ws.profiles = Buffer(*m_context, table_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the luminaire profiles");
+  }
+  std::memcpy(ws.profiles.data<float>(), tables.data(), table_bytes);
   std::vector<RasterView> views;
   for (uint32_t j = 0; j < c; ++j) {
-    gpu[j] = to_gpu(lights[j]);
+    const auto table = lights[j].profile ? table_of.find(lights[j].profile.get()) : table_of.end();
+    gpu[j] = to_gpu(lights[j], table != table_of.end() ? table->second : 0u);
     for (const auto& v : cube_views(lights[j].position, 1e-4f * diagonal, 4.f * diagonal)) views.push_back(v);
   }
   const std::vector<RasterDraw> draws = upload_face_triangles(lights, ws);
@@ -312,7 +359,7 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
   if (transport != Transport::IndirectOnly) {
     DirectParams p{n, c, s.shadow_size, m_rays->epsilon()};
     k.direct.dispatch(cmd, {&pb.positions, &pb.normals, &pb.albedo, &ws.light_data, &ws.triangles, &m_buffers->corners, &m_buffers->neighbours,
-                                   &pb.crease, &ws.result},
+                                   &pb.crease, &ws.result, &ws.profiles},
                       &p,
                       uint64_t(n) * c);
   } else {
@@ -324,7 +371,7 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
 
   const uint32_t vpls = c * s.vpls;
   VplParams vp{c, s.vpls, s.shadow_size, uint32_t(s.seed * 2654435761u), 1e-4f * diagonal};
-  k.vpl.dispatch(cmd, {&ws.light_data, &ws.triangles, &m_buffers->corners, &m_buffers->triangle_albedo, &ws.vpls}, &vp, vpls);
+  k.vpl.dispatch(cmd, {&ws.light_data, &ws.triangles, &m_buffers->corners, &m_buffers->triangle_albedo, &ws.vpls, &ws.profiles}, &vp, vpls);
   vkCmdFillBuffer(cmd, ws.ism.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
   full_barrier(cmd);
   clock.mark("vpls", flush);
@@ -377,9 +424,6 @@ void IsmRenderer::submit_and_wait(VkCommandBuffer cmd) {
 std::vector<Rgb> IsmRenderer::unit_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport) {
   std::lock_guard lock(m_mutex);
   if (!m_scene) throw std::logic_error("IsmRenderer: set_scene was not called");
-  for (const Light& l : lights)
-    if (l.type == LightType::Luminaire)
-      throw InputError("ism-vulkan does not evaluate luminaire profiles yet (" + l.profile_path + "): use --renderer embree");
   const size_t n = points.size();
   std::vector<Rgb> out(n * lights.size(), Rgb(0.f));
   m_clock->seconds.clear();

@@ -33,14 +33,41 @@ vec2 cube_texel(vec3 d, uint f, uint size) {
 
 struct Light {
   vec4 position;   // xyz
-  vec4 direction;  // xyz (spots)
-  vec4 cone;       // x: cos cutoff, y: cos of the full-intensity core, z: 1 for a spot
+  vec4 direction;  // xyz (spots; a luminaire's nadir), w: a luminaire's least measured γ
+  vec4 cone;       // x: cos cutoff, y: cos of the full-intensity core, z: 1 for a spot, 2 for a luminaire
+  vec4 c0;         // a luminaire's C = 0 axis; w: its profile table's offset in `profiles`
+  vec4 c90;        // a luminaire's C = 90 axis, w: its largest measured γ (dark beyond, as the file says)
 };
 
-// The spot's angular factor toward unit direction `to_point`: smoothstep in
-// the cosine between the cone's edge and its core (docs/rendering-model.md).
+// Luminaire profiles, resampled on the CPU (ism_renderer.cpp) to candela over
+// the peak on a regular grid: C every 5° (0–360, 73 planes), γ every 2.5°
+// (0–180, 73 angles). Shaders that evaluate lights declare the buffer
+// `profiles` and define HILIGHT_PROFILES before including this file.
+const uint PROFILE_C = 73u, PROFILE_G = 73u;
+#ifdef HILIGHT_PROFILES
+float profile_factor(Light light, vec3 to_point) {
+  float gamma = degrees(acos(clamp(dot(to_point, light.direction.xyz), -1.0, 1.0)));
+  if (gamma < light.direction.w - 1e-4 || gamma > light.c90.w + 1e-4) return 0.0;
+  float c = degrees(atan(dot(to_point, light.c90.xyz), dot(to_point, light.c0.xyz)));
+  if (c < 0.0) c += 360.0;
+  float fc = clamp(c / 5.0, 0.0, float(PROFILE_C - 1u)), fg = clamp(gamma / 2.5, 0.0, float(PROFILE_G - 1u));
+  uint ic = min(uint(fc), PROFILE_C - 2u), ig = min(uint(fg), PROFILE_G - 2u);
+  float tc = fc - float(ic), tg = fg - float(ig);
+  uint base = uint(light.c0.w);
+  float a = profiles[base + ic * PROFILE_G + ig], b = profiles[base + ic * PROFILE_G + ig + 1u];
+  float d = profiles[base + (ic + 1u) * PROFILE_G + ig], e = profiles[base + (ic + 1u) * PROFILE_G + ig + 1u];
+  return mix(mix(a, b, tg), mix(d, e, tg), tc);
+}
+#endif
+
+// The light's angular factor toward unit direction `to_point`: 1 for a point
+// light; a spot's smoothstep in the cosine between the cone's edge and its
+// core; a luminaire's profile (docs/rendering-model.md).
 float spot_factor(Light light, vec3 to_point) {
   if (light.cone.z == 0.0) return 1.0;
+#ifdef HILIGHT_PROFILES
+  if (light.cone.z == 2.0) return profile_factor(light, to_point);
+#endif
   float c = dot(light.direction.xyz, to_point);
   if (c < light.cone.x) return 0.0;
   if (c >= light.cone.y) return 1.0;

@@ -9,6 +9,8 @@
 // the point are candidates too. The map is an acceleration structure, not
 // an approximation of depth: no depth bias, no acne, exact shadows wherever
 // an occluder covers a texel centre near the ray. Writes ρ/π·E.
+layout(std430, binding = 9) readonly buffer Profiles { float profiles[]; };
+#define HILIGHT_PROFILES
 #include "common.glsl"
 
 layout(push_constant) uniform Params {

@@ -4,6 +4,8 @@
 // over its emission cap (a Fibonacci spiral: the sphere for a point light,
 // the cone for a spot), and finds the first surface in its cube ID map. A VPL
 // re-emits that surface's reflected share: radiant intensity power·cos θ.
+layout(std430, binding = 5) readonly buffer Profiles { float profiles[]; };
+#define HILIGHT_PROFILES
 #include "common.glsl"
 
 layout(push_constant) uniform Params {
