@@ -45,4 +45,52 @@ SpotCone SpotCone::of(const Light& light) {
   return cone;
 }
 
+Lighting luminaire_as_spots(const Light& light) {
+  if (light.type != LightType::Luminaire || !light.profile || !(light.profile->peak() > 0)) return {light};
+  constexpr int kBands = 18;  // every 5° to 90°, each way
+  const double peak = light.profile->peak();
+  const LuminaireFrame frame = LuminaireFrame::of(light);
+  // The C-averaged shape at γ = 0, 5, ..., 180 (as the renderers see it).
+  std::vector<double> shape(2 * kBands + 1);
+  for (int j = 0; j <= 2 * kBands; ++j) {
+    double sum = 0;
+    for (int c = 0; c < 72; ++c) sum += light.profile->intensity(5.0 * c, 5.0 * j);
+    shape[size_t(j)] = sum / 72.0 / peak;
+  }
+  Lighting out;
+  const Photometry& p = *light.profile;
+  const double gamma_max = p.type == Photometry::Type::C ? p.vertical.back() : 180.0;
+  if (p.type == Photometry::Type::C && p.vertical.front() <= 0.0 && gamma_max <= 90.0) {
+    // A downlight: dark beyond its last measured γ, sharply (a smooth band
+    // there would light the walls above the lamp). Steps between samples
+    // inside, then one hard-edged spot carrying the value at γ_max.
+    auto at = [&](double gamma) {
+      double sum = 0;
+      for (int c = 0; c < 72; ++c) sum += p.intensity(5.0 * c, std::min(gamma, gamma_max - 1e-6));
+      return sum / 72.0 / peak;
+    };
+    const int bands = int(std::floor(gamma_max / 5.0 + 1e-9));
+    for (int k = 1; k <= bands; ++k)
+      if (const double step = at(5.0 * (k - 1)) - at(5.0 * k); step != 0.0)
+        out.push_back(Light::spot(light.position, frame.nadir, 5.f * float(k), light.intensity * float(step), 5.f));
+    // Between the last sample and γ_max (when γ_max is not on the 5° grid).
+    if (const double rest = at(5.0 * bands) - at(gamma_max); rest != 0.0 && gamma_max > 5.0 * bands)
+      out.push_back(Light::spot(light.position, frame.nadir, float(gamma_max), light.intensity * float(rest),
+                                float(gamma_max - 5.0 * bands)));
+    if (const double edge = at(gamma_max); edge != 0.0)
+      out.push_back(Light::spot(light.position, frame.nadir, float(gamma_max), light.intensity * float(edge), 0.25f));
+    return out;
+  }
+  if (shape[size_t(kBands)] != 0.0) out.push_back(Light::point(light.position, light.intensity * float(shape[size_t(kBands)])));
+  for (int k = 1; k <= kBands; ++k) {
+    // Downward: the step between γ = 5(k−1) and 5k; upward: between 180 − 5(k−1) and 180 − 5k.
+    const double down = shape[size_t(k - 1)] - shape[size_t(k)];
+    const double up = shape[size_t(2 * kBands - k + 1)] - shape[size_t(2 * kBands - k)];
+    const float cutoff = 5.f * float(k), falloff = 5.f;
+    if (down != 0.0) out.push_back(Light::spot(light.position, frame.nadir, cutoff, light.intensity * float(down), falloff));
+    if (up != 0.0) out.push_back(Light::spot(light.position, -frame.nadir, cutoff, light.intensity * float(up), falloff));
+  }
+  return out;
+}
+
 } // namespace hilight

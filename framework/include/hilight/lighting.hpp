@@ -67,6 +67,13 @@ struct LuminaireFrame {
 /// in [0, 1] (the profile's shape; its `intensity` is the scale).
 float luminaire_factor(const Light& light, const LuminaireFrame& frame, const Vec3& to_point);
 
+/// For renderers without measured distributions (POV-Ray): a luminaire's
+/// profile averaged over C (so made rotationally symmetric about its aim) as
+/// a point light and spotlights every 5° of γ, downward and upward, each the
+/// step between two samples (signed: a profile may rise with γ). Between
+/// the samples the spots' smoothstep edges interpolate. Other lights as they are.
+Lighting luminaire_as_spots(const Light& light);
+
 /// A spotlight's cone as cosines, so hot loops need no trigonometry; one
 /// definition of the soft edge for every renderer (docs/rendering-model.md).
 struct SpotCone {

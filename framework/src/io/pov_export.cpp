@@ -41,9 +41,12 @@ void write_pov_scene(std::ostream& out, const Scene& scene, const Lighting& ligh
               << " hollow texture { pigment { color rgb -1 } finish { emission 1 diffuse 0 ambient 0 } } no_shadow no_radiosity no_reflection }\n";
 
   const float fd = pov_fade_distance(scene);
-  for (const Light& l : lights) {
-    if (l.type == LightType::Luminaire)
-      throw InputError("POV-Ray has no measured light distributions: a luminaire (" + l.profile_path + ") cannot be exported or rendered by POV-Ray yet");
+  // POV-Ray has no measured distributions: a luminaire goes as its
+  // rotational average, a point light and signed spotlights (lighting.hpp).
+  Lighting expanded;
+  for (const Light& l : lights)
+    for (const Light& part : luminaire_as_spots(l)) expanded.push_back(part);
+  for (const Light& l : expanded) {
     out << "light_source { ";
     vec(out, l.position) << " color rgb ";
     vec(out, pov_colour(l.intensity, fd)) << "\n  fade_distance " << fd << " fade_power 2";
