@@ -16,6 +16,7 @@ PACKAGES=(
   nlohmann-json3-dev libcli11-dev catch2 libeigen3-dev libstb-dev libtinygltf-dev
   assimp-testmodels   # real broken and valid models the tests load
   blender python3-numpy  # the glTF round trip through Blender's own importer and exporter (tests)
+  chromium            # the solve's HTML report opened in a real headless browser (tests)
   povray              # the reference renderer (renderers/povray)
   libvulkan-dev mesa-vulkan-drivers glslc vulkan-validationlayers  # renderers/ism-vulkan (lavapipe without a GPU)
   libglfw3-dev libgl-dev libimgui-dev xvfb xauth  # frontends/painter (OpenGL through Mesa; Xvfb for headless tests)

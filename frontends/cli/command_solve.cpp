@@ -5,6 +5,7 @@
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/io/gltf.hpp"
+#include "hilight/io/html_report.hpp"
 #include "hilight/io/lights_file.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/io/photometry_io.hpp"
@@ -78,6 +79,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--target", target_path, "target PLY (x y z red green blue [weight]) or glTF with vertex colours (COLOR_0)")->required();
   app.add_option("-o,--output", output, "lights to write: .json (hilight's), or .gltf/.glb (the scene's meshes and the lights as KHR_lights_punctual)")->required();
   bool vertex_colours = false;
+  std::string html_path;
+  app.add_option("--report-html", html_path, "write a page for a person: target, result and difference from three views, D̄ against the light count, the lights, timings");
   std::string luminaire_path;
   float luminaire_spin = 0.f;
   app.add_option("--luminaire", luminaire_path,
@@ -143,6 +146,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   if (mode == "solve" && !initial_path.empty()) throw InputError("--initial needs --mode fine-tune or add");
   check_writable(output);
   if (!report_path.empty()) check_writable(report_path);
+  if (!html_path.empty()) check_writable(html_path);
   if (vertex_colours && !is_gltf_path(output)) throw InputError("--vertex-colours needs a .gltf or .glb output, not " + output);
   if (!luminaire_path.empty()) {
     Light luminaire;
@@ -240,6 +244,24 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       std::ofstream out(temp, std::ios::binary);
       out << text;
     });
+  }
+  if (!html_path.empty()) {
+    HtmlReport page;
+    page.scene = scene.get();
+    page.rays = rays.get();
+    page.title = scene_path + " — target " + target_path;
+    page.target.assign(scene->positions.size(), Rgb(0.f));
+    page.target_weight.assign(scene->positions.size(), 0.f);
+    for (size_t i = 0; i < target.size(); ++i)
+      if (target.vertex[i] >= 0) {
+        page.target[size_t(target.vertex[i])] = target.value[i];
+        page.target_weight[size_t(target.vertex[i])] = target.weight[i];
+      }
+    page.result = session.reference().illuminate(SurfacePoints::from_vertices(*scene), lights);
+    page.lights = lights;
+    page.report = report;
+    page.units = units_name;
+    write_html_report(html_path, page);
   }
   if (!quiet) {
     const std::string over = report.dbar_points == report.target_points

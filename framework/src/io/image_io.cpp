@@ -6,6 +6,7 @@
 #include <ImfArray.h>
 #include <ImfRgbaFile.h>
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 #include <cstdio>
 #include <png.h>
@@ -33,23 +34,29 @@ float auto_exposure(const Image& image) {
   return lum[k] > 0.f ? 0.9f / lum[k] : 1.f;
 }
 
-void write_png(const fs::path& path, const Image& image, float exposure) {
+} // namespace
+
+std::vector<unsigned char> encode_png(const Image& image, float exposure) {
   if (exposure <= 0.f) exposure = auto_exposure(image);
   std::vector<unsigned char> rgb(size_t(image.width) * image.height * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i) {
     Rgb c = image.covered[i] ? image.pixels[i] * exposure : Rgb(0.12f); // background: dark grey, untouched by exposure
     for (int k = 0; k < 3; ++k) rgb[3 * i + k] = (unsigned char)std::lround(255.f * srgb_encode(c[k]));
   }
-  FILE* fp = std::fopen(path.c_str(), "wb");
-  if (!fp) throw InputError(path.string(), "cannot open for writing");
+  std::vector<unsigned char> bytes;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!png || !info || setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    std::fclose(fp);
-    throw InputError(path.string(), "PNG encoding failed");
+    throw std::runtime_error("PNG encoding failed");
   }
-  png_init_io(png, fp);
+  png_set_write_fn(
+      png, &bytes,
+      [](png_structp p, png_bytep data, png_size_t length) {
+        auto* out = static_cast<std::vector<unsigned char>*>(png_get_io_ptr(p));
+        out->insert(out->end(), data, data + length);
+      },
+      nullptr);
   png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
@@ -57,7 +64,17 @@ void write_png(const fs::path& path, const Image& image, float exposure) {
   for (int y = 0; y < image.height; ++y) png_write_row(png, &rgb[size_t(y) * image.width * 3]);
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
-  if (std::fclose(fp) != 0) throw InputError(path.string(), "write failed");
+  return bytes;
+}
+
+namespace {
+
+void write_png(const fs::path& path, const Image& image, float exposure) {
+  const std::vector<unsigned char> bytes = encode_png(image, exposure);
+  FILE* fp = std::fopen(path.c_str(), "wb");
+  if (!fp) throw InputError(path.string(), "cannot open for writing");
+  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), fp) == bytes.size();
+  if (std::fclose(fp) != 0 || !ok) throw InputError(path.string(), "write failed");
 }
 
 void write_exr(const fs::path& path, const Image& image) {

@@ -3,6 +3,7 @@
 #include "hilight/image.hpp"
 
 #include <filesystem>
+#include <vector>
 
 namespace hilight {
 
@@ -11,5 +12,7 @@ namespace hilight {
 /// covered pixels' luminance maps to 0.9.
 void write_image(const std::filesystem::path& path, const Image& image, float exposure = 0.f);
 Image read_exr(const std::filesystem::path& path);
+/// The PNG write_image would write, as bytes (for pages that embed images).
+std::vector<unsigned char> encode_png(const Image& image, float exposure = 0.f);
 
 } // namespace hilight
