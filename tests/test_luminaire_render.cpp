@@ -154,6 +154,12 @@ TEST_CASE("where a luminaire cannot go, the command says so in one line", "[phot
   // POV-Ray gets the stand-in (lighting.hpp: luminaire_as_spots).
   CHECK(test::run_hilight({"export", room, "--lights", (dir / "l.json").string(), "-o", (dir / "s.pov").string()}).exit_code == 0);
   CHECK_THAT(test::read_file(dir / "s.pov"), Catch::Contains("spotlight"));
+  // --initial lights the solve refuses: the file is named (issue 15).
+  std::ofstream(dir / "outside.json") << R"({"lights":[{"type":"point","position":[20,2,2],"intensity":[1,1,1]}]})";
+  const auto outside = test::run_hilight({"solve", room, "--target", (dir / "t.ply").string(), "-o", (dir / "f.json").string(),
+                                          "--mode", "fine-tune", "--initial", (dir / "outside.json").string(), "--no-cache"});
+  CHECK(outside.exit_code == 2);
+  CHECK_THAT(outside.err, Catch::Contains("outside.json: lights to fine-tune: light 0"));
   // A luminaire without its profile, or with both intensity and dimming.
   std::ofstream(dir / "bad.json") << R"({"lights":[{"type":"luminaire","profile":"missing.ies","position":[2,2.4,2],"dimming":1}]})";
   const auto missing = test::run_hilight({"render", room, "--lights", (dir / "bad.json").string(), "-o", (dir / "x.ply").string()});

@@ -193,9 +193,18 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   });
   Solver& solver = *solver_owned;
   SolveReport report;
-  Lighting lights = mode == "fine-tune" ? solver.fine_tune(target, initial, report)
-                    : mode == "add"     ? solver.add_lights(target, initial, report)
-                                        : solver.solve(target, report);
+  Lighting lights;
+  try {
+    lights = mode == "fine-tune" ? solver.fine_tune(target, initial, report)
+             : mode == "add"     ? solver.add_lights(target, initial, report)
+                                 : solver.solve(target, report);
+  } catch (const InputError& e) {
+    // The solver names the lights ("lights to fine-tune: light 0 ..."); the user needs the file.
+    const std::string what = e.what();
+    if (what.rfind("lights to ", 0) == 0) throw InputError(initial_path, what);
+    if (what.rfind("spot hints", 0) == 0) throw InputError(hints_path, what);
+    throw;
+  }
   if (is_gltf_path(output)) {
     GltfExport gltf;
     gltf.scene = scene.get();

@@ -66,10 +66,12 @@ void Stroke::drag_to(const SurfacePick& centre) {
   const float spacing = std::max(0.25f * m_brush.radius, 1e-6f);
   const int steps = std::min(1000, int(glm::length(centre.position - from.position) / spacing));
   for (int i = 1; i <= steps; ++i) {
+    // Between two picks the straight line may leave the surface (a drag from
+    // the floor onto a table top): each fill-in dab snaps onto the nearest
+    // surface as a replay would, and one with no surface near is left out,
+    // so a recorded stroke always replays.
     float t = float(i) / float(steps + 1);
-    SurfacePick mid{glm::mix(from.position, centre.position, t), glm::normalize(glm::mix(from.normal, centre.normal, t))};
-    if (!is_finite(mid.normal)) mid.normal = centre.normal;
-    dab(mid);
+    if (auto snapped = pick_near(m_document.rays(), glm::mix(from.position, centre.position, t))) dab(*snapped);
   }
   dab(centre);
 }

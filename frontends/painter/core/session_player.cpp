@@ -41,6 +41,19 @@ void SessionPlayer::log(const std::string& line) const {
 
 void SessionPlayer::play(const Session& session) {
   for (size_t i = 0; i < session.actions.size(); ++i) validate_action(session.actions[i], m_options.source, i);
+  // Where the script writes is checked before anything runs (not after a long solve).
+  for (size_t i = 0; i < session.actions.size(); ++i) {
+    const Action& a = session.actions[i];
+    if (a.type != SaveTargetAction::kType && a.type != SaveLightsAction::kType && a.type != ScreenshotAction::kType) continue;
+    const std::filesystem::path path = resolve(a.params["path"].get<std::string>());
+    std::error_code ec;
+    const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(folder, ec))
+      throw InputError(m_options.source, "action " + std::to_string(i) + " (" + a.type + "): cannot write " + path.string() +
+                                             ": folder " + folder.string() + " does not exist");
+    if (std::filesystem::is_directory(path, ec))
+      throw InputError(m_options.source, "action " + std::to_string(i) + " (" + a.type + "): " + path.string() + " is a folder");
+  }
   for (size_t i = 0; i < session.actions.size(); ++i) apply(session.actions[i], i);
   if (m_options.wait_for_solves && m_job.busy()) finish_solve("end of session");
 }
