@@ -17,6 +17,7 @@ PACKAGES=(
   assimp-testmodels   # real broken and valid models the tests load
   blender python3-numpy  # the glTF round trip through Blender's own importer and exporter (tests)
   chromium            # the solve's HTML report opened in a real headless browser (tests)
+  clang-14 libfuzzer-14-dev  # fuzzing the readers of untrusted files (tools/fuzz.sh, a test step)
   povray              # the reference renderer (renderers/povray)
   libvulkan-dev mesa-vulkan-drivers glslc vulkan-validationlayers  # renderers/ism-vulkan (lavapipe without a GPU)
   libglfw3-dev libgl-dev libimgui-dev xvfb xauth  # frontends/painter (OpenGL through Mesa; Xvfb for headless tests)
@@ -61,6 +62,8 @@ run_tests() {
   local display=()
   [ -n "${DISPLAY:-}" ] || display=(xvfb-run -a -s "-screen 0 1280x1024x24")
   (cd "$BUILD_DIR" && "${display[@]}" ctest --output-on-failure -j "$(nproc)")
+  # Each file reader fuzzed for a few seconds; any crash, leak or hang fails.
+  bash tools/fuzz.sh 8
 }
 
 case "${1:-}" in

@@ -80,3 +80,9 @@ TEST_CASE("painter actions: an unknown field in any action is named in the error
   }
   CHECK_THROWS_WITH(validate_action(Action{"paint", {}}, "s.json", 0), Catch::Contains("unknown type 'paint'"));
 }
+
+TEST_CASE("painter actions: a number beyond a double is an input error naming the script", "[painter][actions][bad-input]") {
+  // Found by fuzzing (tools/fuzz.sh): it escaped as an internal error.
+  CHECK_THROWS_WITH(parse_session(R"({"actions": [{"type": "brush", "brightness": 888e767}]})", "s.json"),
+                    Catch::StartsWith("s.json: not valid JSON"));
+}

@@ -25,13 +25,33 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;  // textures play no part in hilight's Lambertian model
 }
 
+/// Files a glTF refers to (buffers): regular files of sane size only — a
+/// `uri` naming /dev/zero would otherwise never finish reading.
+bool read_referenced_file(std::vector<unsigned char>* out, std::string* err, const std::string& file, void*) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec) || fs::file_size(file, ec) > (uintmax_t(1) << 31)) {
+    if (err) *err += "cannot read " + file + " (not a regular file, or larger than 2 GB)\n";
+    return false;
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    if (err) *err += "cannot open " + file + "\n";
+    return false;
+  }
+  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return true;
+}
+
 tinygltf::Model load(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError(path.string(), "not a regular file (or no such file)");
   std::ifstream probe(path, std::ios::binary);
   if (!probe) throw InputError(path.string(), "cannot open the file");
   char magic[4] = {};
   probe.read(magic, 4);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&skip_image, nullptr);
+  loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_referenced_file, &tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string error, warning;
   const bool binary = std::memcmp(magic, "glTF", 4) == 0;

@@ -136,6 +136,10 @@ Lighting parse_lights_json(const std::string& text, const std::string& source) {
 Lighting read_lights_json(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path.string(), "is a folder, not a lights file");
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw InputError(path.string(), "not a regular file");  // a device would never end
+  if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) > (uintmax_t(64) << 20))
+    throw InputError(path.string(), "larger than 64 MB: not a lights file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), std::filesystem::exists(path, ec) ? "cannot open lights file" : "no such file");
   std::stringstream ss;

@@ -15,7 +15,7 @@ Session parse_session(const std::string& text, const std::string& source) {
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // a syntax error, or a number beyond a double (1e400; found by fuzzing)
     std::string what = e.what();
     throw InputError(source, "not valid JSON (" + what.substr(what.find(']') + 2) + ")");
   }
