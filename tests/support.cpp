@@ -1,5 +1,7 @@
 #include "support.hpp"
 
+#include "hilight/io/ply_reader.hpp"
+
 #include <cstdlib>
 
 #include <cmath>
@@ -59,6 +61,14 @@ std::unique_ptr<hilight::Renderer> make_renderer(const std::string& name, std::s
 
 std::shared_ptr<const hilight::Scene> finish(hilight::Scene raw, float max_edge) {
   return std::make_shared<const hilight::Scene>(hilight::finish_scene(std::move(raw), {max_edge}));
+}
+
+std::vector<hilight::Rgb> ply_colours(const fs::path& path) {
+  const hilight::PlyVertices v = hilight::read_ply_vertices(path);
+  std::vector<hilight::Rgb> out(v.count);
+  for (size_t i = 0; i < v.count; ++i)
+    out[i] = hilight::Rgb(float(v.properties.at("red")[i]), float(v.properties.at("green")[i]), float(v.properties.at("blue")[i]));
+  return out;
 }
 
 std::string read_file(const fs::path& p) {

@@ -44,6 +44,9 @@ using Environment = std::vector<std::pair<std::string, std::string>>;
 /// As above, with `env` set in the child (the test's own environment is untouched).
 RunResult run_hilight(const std::vector<std::string>& args, const Environment& env, unsigned long long address_space = 0);
 
+/// The red, green, blue of every vertex of a PLY (what `hilight render` writes).
+std::vector<hilight::Rgb> ply_colours(const std::filesystem::path& path);
+
 /// A file's bytes ("" if it cannot be read).
 std::string read_file(const std::filesystem::path& path);
 

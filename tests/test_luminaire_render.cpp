@@ -40,13 +40,6 @@ std::string quadrant_ies() {
   return s.str();
 }
 
-std::vector<Rgb> values(const std::filesystem::path& ply) {
-  const PlyVertices v = read_ply_vertices(ply);
-  std::vector<Rgb> out(v.count);
-  for (size_t i = 0; i < v.count; ++i)
-    out[i] = Rgb(float(v.properties.at("red")[i]), float(v.properties.at("green")[i]), float(v.properties.at("blue")[i]));
-  return out;
-}
 
 } // namespace
 
@@ -67,7 +60,7 @@ TEST_CASE("a luminaire over a floor lights each point by its profile's candela t
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const PlyVertices lit = read_ply_vertices(dir / "lit.ply");
-    const auto rendered = values(dir / "lit.ply");
+    const auto rendered = test::ply_colours(dir / "lit.ply");
     const Vec3 at(0.3f, 2.f, -0.2f);
     const double intensity = profile.peak() / 683.0 / profile.peak();  // dimming 1: W/sr per cd
     size_t checked = 0;
@@ -114,7 +107,7 @@ TEST_CASE("a luminaire of constant candela renders exactly as a point light, the
   for (const char* name : {"luminaire", "point"})
     REQUIRE(test::run_hilight({"render", room, "--lights", (dir / (std::string(name) + ".json")).string(), "-o",
                                (dir / (std::string(name) + ".ply")).string()}).exit_code == 0);
-  const auto a = values(dir / "luminaire.ply"), b = values(dir / "point.ply");
+  const auto a = test::ply_colours(dir / "luminaire.ply"), b = test::ply_colours(dir / "point.ply");
   REQUIRE(a.size() == b.size());
   size_t equal = 0;
   for (size_t i = 0; i < a.size(); ++i) {
@@ -196,7 +189,7 @@ TEST_CASE("ism-vulkan lights a luminaire as Embree does", "[photometry][render][
         INFO(r.err);
         REQUIRE(r.exit_code == 0);
       }
-      d[set] = test::dbar(values(dir / (lights + "ism-vulkan" + bounces + ".ply")), values(dir / (lights + "embree" + bounces + ".ply")));
+      d[set] = test::dbar(test::ply_colours(dir / (lights + "ism-vulkan" + bounces + ".ply")), test::ply_colours(dir / (lights + "embree" + bounces + ".ply")));
     }
     INFO("D̄ ism-vulkan against Embree: luminaires " << d[0] << ", point lights at the same places " << d[1]);
     if (std::string(bounces) == "0") {

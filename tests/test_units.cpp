@@ -18,13 +18,6 @@ namespace {
 
 const std::string kRoom = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
 
-std::vector<Rgb> ply_values(const std::filesystem::path& p) {
-  const PlyVertices v = read_ply_vertices(p);
-  std::vector<Rgb> out(v.count);
-  for (size_t i = 0; i < v.count; ++i)
-    out[i] = Rgb(float(v.properties.at("red")[i]), float(v.properties.at("green")[i]), float(v.properties.at("blue")[i]));
-  return out;
-}
 
 double report_value(const std::filesystem::path& p, const char* key) {
   std::ifstream in(p);
@@ -51,7 +44,7 @@ TEST_CASE("render and solve give the same light in photometric units as in radio
   REQUIRE(test::run_hilight({"render", kRoom, "--lights", (dir / "w.json").string(), "-o", (dir / "w.ply").string()}).exit_code == 0);
   REQUIRE(test::run_hilight({"render", kRoom, "--lights", (dir / "cd.json").string(), "-o", (dir / "cd.ply").string(), "--units",
                              "photometric"}).exit_code == 0);
-  const auto radiance = ply_values(dir / "w.ply"), luminance = ply_values(dir / "cd.ply");
+  const auto radiance = test::ply_colours(dir / "w.ply"), luminance = test::ply_colours(dir / "cd.ply");
   REQUIRE(radiance.size() == luminance.size());
   for (size_t i = 0; i < radiance.size(); i += 7)
     for (int c = 0; c < 3; ++c) CHECK(luminance[i][c] == Approx(683.0 * radiance[i][c]).epsilon(1e-5).margin(1e-9));

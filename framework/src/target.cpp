@@ -119,4 +119,14 @@ Target bind_target(const std::string& source, const std::vector<Vec3>& positions
   return t;
 }
 
+void target_per_vertex(const Target& target, size_t vertex_count, std::vector<Rgb>& values, std::vector<float>& weights) {
+  values.assign(vertex_count, Rgb(0.f));
+  weights.assign(vertex_count, 0.f);
+  for (size_t i = 0; i < target.size(); ++i)
+    if (target.vertex[i] >= 0 && size_t(target.vertex[i]) < vertex_count) {
+      values[size_t(target.vertex[i])] = target.value[i];
+      weights[size_t(target.vertex[i])] = target.weight[i];
+    }
+}
+
 } // namespace hilight

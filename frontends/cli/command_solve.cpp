@@ -212,13 +212,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     gltf.figures = {{"lights", double(report.chosen)}, {"dbar", report.dbar}, {"dbar_points", double(report.dbar_points)}};
     if (vertex_colours) {
       gltf.result = session.reference().illuminate(SurfacePoints::from_vertices(*scene), lights);
-      gltf.target.assign(scene->positions.size(), Rgb(0.f));
-      gltf.target_weight.assign(scene->positions.size(), 0.f);
-      for (size_t i = 0; i < target.size(); ++i)
-        if (target.vertex[i] >= 0) {
-          gltf.target[size_t(target.vertex[i])] = target.value[i];
-          gltf.target_weight[size_t(target.vertex[i])] = target.weight[i];
-        }
+      target_per_vertex(target, scene->positions.size(), gltf.target, gltf.target_weight);
     }
     write_gltf(output, gltf);
   } else {
@@ -259,13 +253,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     page.scene = scene.get();
     page.rays = rays.get();
     page.title = scene_path + " — target " + target_path;
-    page.target.assign(scene->positions.size(), Rgb(0.f));
-    page.target_weight.assign(scene->positions.size(), 0.f);
-    for (size_t i = 0; i < target.size(); ++i)
-      if (target.vertex[i] >= 0) {
-        page.target[size_t(target.vertex[i])] = target.value[i];
-        page.target_weight[size_t(target.vertex[i])] = target.weight[i];
-      }
+    target_per_vertex(target, scene->positions.size(), page.target, page.target_weight);
     page.result = session.reference().illuminate(SurfacePoints::from_vertices(*scene), lights);
     page.lights = lights;
     page.report = report;

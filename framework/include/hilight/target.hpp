@@ -51,6 +51,10 @@ Target bind_target(const std::string& source, const std::vector<Vec3>& positions
                    const std::vector<float>& weights, const Scene& scene, const RayScene& rays,
                    const std::vector<Vec3>& normals = {});
 
+/// The target's values and weights per scene vertex (0 where no target point
+/// stands for the vertex): for per-vertex outputs (glTF colours, reports).
+void target_per_vertex(const Target& target, size_t vertex_count, std::vector<Rgb>& values, std::vector<float>& weights);
+
 /// Per scene vertex: a triangle that uses it (the one whose plane agrees best
 /// with the vertex normal) and the barycentrics of that corner.
 std::vector<SurfaceBinding> vertex_triangles(const Scene& scene);
