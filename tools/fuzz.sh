@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes hilight's readers of untrusted files with libFuzzer (issue 15):
-# lights JSON, IES/EULUMDAT, painter session scripts, PLY, glTF.
+# lights JSON, IES/EULUMDAT, painter session scripts, PLY, glTF, scenes.
 #   bash tools/fuzz.sh [SECONDS]    each target for SECONDS (default 8: the CI step)
 # Builds fuzz/ with clang-14 into build-fuzz/ (FUZZ_BUILD_DIR), starts each
 # target from its corpus in fuzz/corpus/ (new inputs go to build-fuzz/corpus/,
@@ -13,7 +13,7 @@ OUT=${FUZZ_BUILD_DIR:-build-fuzz}
 cmake -S fuzz -B "$OUT" -G Ninja -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$OUT" -j "$(nproc)" >/dev/null
 failed=0
-for target in lights_json photometry session ply gltf; do
+for target in lights_json photometry session ply gltf scene; do
   corpus="$OUT/corpus/$target" findings="$OUT/findings/$target"
   mkdir -p "$corpus" "$findings"
   log="$OUT/$target.log"
