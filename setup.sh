@@ -64,6 +64,10 @@ run_tests() {
   (cd "$BUILD_DIR" && "${display[@]}" ctest --output-on-failure -j "$(nproc)")
   # Each file reader fuzzed for a few seconds; any crash, leak or hang fails.
   bash tools/fuzz.sh 8
+  # The other CMake generator: Unix Makefiles, Debug, builds the generated sources (the shaders).
+  cmake -S . -B "$BUILD_DIR-make" -G "Unix Makefiles" -DCMAKE_BUILD_TYPE=Debug >/dev/null
+  cmake --build "$BUILD_DIR-make" --target hilight-ism-shaders -j "$(nproc)" >/dev/null
+  echo "setup: Unix Makefiles (Debug) configure and build the generated shader sources"
 }
 
 case "${1:-}" in
