@@ -50,8 +50,8 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   bool no_auto = false, no_cache = false;
   app.add_option("scene", scene, "scene file (any format assimp reads)")->required();
   app.add_option("--max-edge", o.max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::Range(0.f, 1e30f));
-  app.add_option("--target", target, "target PLY to start from (as `hilight solve --target` reads)");
-  app.add_option("--lights", lights, "lights JSON to start from");
+  app.add_option("--target", target, "target PLY or glTF with vertex colours to start from (as `hilight solve --target` reads)");
+  app.add_option("--lights", lights, "lights JSON or glTF (KHR_lights_punctual) to start from");
   app.add_option("--renderer", o.job.renderer, "renderer plugin for the view and the solve")->capture_default_str();
   app.add_option("--bounces", bounces, "0 = direct light only, 1 = plus the first diffuse bounce")->check(CLI::IsMember({0, 1}))->capture_default_str();
   app.add_option("--bounce-samples", bounce_samples, "gather rays per point for the bounce (renderer default if 0)")
