@@ -10,6 +10,7 @@
 #include "hilight/io/ply_reader.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/scene_builders.hpp"
+#include "photometry_files.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
@@ -26,19 +27,7 @@ double profile_cd(double c, double g) {
   return (100.0 + 50.0 * std::cos(2.0 * c * kPi / 180.0)) * (1.0 + std::cos(g * kPi / 180.0)) / 2.0;
 }
 
-std::string quadrant_ies() {
-  std::ostringstream s;
-  s << "IESNA:LM-63-2002\n[TEST] quadrants\nTILT=NONE\n1 1000 1 19 7 1 2 0.1 0.1 0.05\n1 1 20\n";
-  for (int g = 0; g <= 90; g += 5) s << g << " ";
-  s << "\n";
-  for (int c = 0; c <= 90; c += 15) s << c << " ";
-  s << "\n";
-  for (int c = 0; c <= 90; c += 15) {
-    for (int g = 0; g <= 90; g += 5) s << profile_cd(c, g) << " ";
-    s << "\n";
-  }
-  return s.str();
-}
+std::string quadrant_ies() { return test::ies_text(test::angles(0, 90, 5), test::angles(0, 90, 15), profile_cd, 1, "TILT=NONE", 1, 1, 1000, 20); }
 
 
 } // namespace
@@ -89,15 +78,8 @@ TEST_CASE("a luminaire over a floor lights each point by its profile's candela t
 
 TEST_CASE("a luminaire of constant candela renders exactly as a point light, the bounce included", "[photometry][render]") {
   const auto dir = test::output_dir("luminaire_constant");
-  std::ostringstream ldt;
-  ldt << "hilight tests\n1\n1\n1\n0\n19\n10\nreport\nround\n1\nround.ldt\n2026\n";
-  for (int k = 0; k < 9; ++k) ldt << "100\n";
-  ldt << "50\n100\n1\n0\n1\n1\nLED\n2000\n3000\n80\n20\n";
-  for (int k = 0; k < 10; ++k) ldt << "0.5\n";
-  ldt << "0\n";
-  for (int g = 0; g <= 180; g += 10) ldt << g << "\n";
-  for (int g = 0; g <= 180; g += 10) ldt << 200 << "\n";
-  std::ofstream(dir / "round.ldt") << ldt.str();
+  const auto gammas = test::angles(0, 180, 10);
+  std::ofstream(dir / "round.ldt") << test::ldt_text(1, {0}, gammas, {std::vector<double>(gammas.size(), 200.0)}, 2000, 20);
   const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
   // 200 cd/klm × 2 klm = 400 cd = 400/683 W/sr.
   std::ofstream(dir / "luminaire.json") << R"({"lights":[{"type":"luminaire","profile":"round.ldt","position":[2,2.4,2],"intensity":[1,0.8,0.6],"direction":[0.3,-1,0.2]}]})";
@@ -206,12 +188,9 @@ namespace {
 
 /// A rotationally symmetric batwing downlight (one C plane), γ every 5°.
 std::string rotational_ies() {
-  std::ostringstream s;
-  s << "IESNA:LM-63-2002\n[TEST] rotational batwing\nTILT=NONE\n1 1000 1 19 1 1 2 0.1 0.1 0.05\n1 1 20\n";
-  for (int g = 0; g <= 90; g += 5) s << g << " ";
-  s << "\n0\n";
-  for (int g = 0; g <= 90; g += 5) s << 60.0 + 90.0 * std::sin(g * kPi / 180.0) * std::cos(0.5 * g * kPi / 180.0) << " ";
-  return s.str() + "\n";
+  return test::ies_text(test::angles(0, 90, 5), {0}, [](double, double g) {
+    return 60.0 + 90.0 * std::sin(g * kPi / 180.0) * std::cos(0.5 * g * kPi / 180.0);
+  }, 1, "TILT=NONE", 1, 1, 1000, 20);
 }
 
 } // namespace

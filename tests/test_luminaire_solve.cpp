@@ -4,6 +4,7 @@
 // `--place ceiling` they hang at the offset below the ceiling.
 #include "hilight/io/lights_json.hpp"
 #include "hilight/units.hpp"
+#include "photometry_files.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
@@ -19,18 +20,9 @@ namespace {
 
 /// A quadrant-symmetric downlight, batwing-ish: (100 + 40 cos 2C) (0.3 + sin γ) cd up to 90°.
 std::string batwing_ies() {
-  std::ostringstream s;
-  s << "IESNA:LM-63-2002\n[TEST] batwing\nTILT=NONE\n1 2000 1 19 7 1 2 0.6 0.6 0.05\n1 1 24\n";
-  for (int g = 0; g <= 90; g += 5) s << g << " ";
-  s << "\n";
-  for (int c = 0; c <= 90; c += 15) s << c << " ";
-  s << "\n";
-  for (int c = 0; c <= 90; c += 15) {
-    for (int g = 0; g <= 90; g += 5)
-      s << (100.0 + 40.0 * std::cos(2.0 * c * kPi / 180.0)) * (0.3 + std::sin(g * kPi / 180.0)) << " ";
-    s << "\n";
-  }
-  return s.str();
+  return test::ies_text(test::angles(0, 90, 5), test::angles(0, 90, 15), [](double c, double g) {
+    return (100.0 + 40.0 * std::cos(2.0 * c * kPi / 180.0)) * (0.3 + std::sin(g * kPi / 180.0));
+  }, 1, "TILT=NONE", 1, 1, 2000, 24);
 }
 
 struct Case {

@@ -4,6 +4,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/photometry_io.hpp"
 #include "hilight/math.hpp"
+#include "photometry_files.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
@@ -16,54 +17,23 @@ using namespace hilight;
 
 namespace {
 
-std::string join(const std::vector<double>& v) {
-  std::ostringstream s;
-  for (size_t i = 0; i < v.size(); ++i) s << (i ? (i % 10 ? " " : "\n") : "") << v[i];
-  return s.str();
-}
+using test::angles;
 
-std::vector<double> range(double from, double to, double step) {
-  std::vector<double> v;
-  for (double a = from; a <= to + 1e-9; a += step) v.push_back(a);
-  return v;
-}
-
-/// An IES LM-63-2002 file of type C (or B) with candela f(h, v).
 std::string ies(const std::vector<double>& vertical, const std::vector<double>& horizontal,
                 const std::function<double(double, double)>& f, int type = 1, const std::string& tilt = "TILT=NONE",
                 double multiplier = 1, double ballast = 1) {
-  std::ostringstream s;
-  s << "IESNA:LM-63-2002\n[TEST] generated\n[MANUFAC] hilight tests\n" << tilt << "\n";
-  s << "1 1000 " << multiplier << " " << vertical.size() << " " << horizontal.size() << " " << type << " 2 0.1 0.2 0.05\n";
-  s << ballast << " 1 36\n" << join(vertical) << "\n" << join(horizontal) << "\n";
-  for (double h : horizontal) {
-    std::vector<double> row;
-    for (double v : vertical) row.push_back(f(h, v));
-    s << join(row) << "\n";
-  }
-  return s.str();
+  return test::ies_text(vertical, horizontal, f, type, tilt, multiplier, ballast);
 }
 
-/// A EULUMDAT file, intensities in cd/klm, one lamp set of `lumens`.
 std::string ldt(int isym, const std::vector<double>& c_angles, const std::vector<double>& gammas,
                 const std::vector<std::vector<double>>& planes, double lumens) {
-  std::ostringstream s;
-  s << "hilight tests\n1\n" << isym << "\n" << c_angles.size() << "\n" << (c_angles.size() > 1 ? c_angles[1] - c_angles[0] : 0) << "\n"
-    << gammas.size() << "\n" << gammas[1] - gammas[0] << "\nreport\nluminaire\nnumber\nfile.ldt\n2026-11-24\n";
-  for (int k = 0; k < 9; ++k) s << "100\n";
-  s << "100\n80\n1\n0\n1\n1\nLED\n" << lumens << "\n3000\n80\n" << 25 << "\n";
-  for (int k = 0; k < 10; ++k) s << "0.5\n";
-  for (double c : c_angles) s << c << "\n";
-  for (double g : gammas) s << g << "\n";
-  for (const auto& plane : planes)
-    for (double v : plane) s << v << "\n";
-  return s.str();
+  return test::ldt_text(isym, c_angles, gammas, planes, lumens);
 }
 
 } // namespace
 
 TEST_CASE("IES: a constant luminaire gives its candela everywhere and 4π times it in lumens", "[photometry]") {
-  const Photometry p = parse_ies(ies(range(0, 180, 5), {0}, [](double, double) { return 100.0; }), "constant.ies");
+  const Photometry p = parse_ies(ies(angles(0, 180, 5), {0}, [](double, double) { return 100.0; }), "constant.ies");
   CHECK(p.symmetry == Photometry::Symmetry::Rotational);
   for (double c : {0.0, 37.0, 211.0})
     for (double g : {0.0, 44.0, 90.0, 179.0}) CHECK(p.intensity(c, g) == Approx(100.0));
@@ -71,14 +41,14 @@ TEST_CASE("IES: a constant luminaire gives its candela everywhere and 4π times 
   CHECK(p.rated_lumens == 1000.0);
   CHECK(p.input_watts == 36.0);
   // The multiplier and the ballast factor scale the candela.
-  const Photometry scaled = parse_ies(ies(range(0, 180, 5), {0}, [](double, double) { return 100.0; }, 1, "TILT=NONE", 2.0, 0.9), "scaled.ies");
+  const Photometry scaled = parse_ies(ies(angles(0, 180, 5), {0}, [](double, double) { return 100.0; }, 1, "TILT=NONE", 2.0, 0.9), "scaled.ies");
   CHECK(scaled.intensity(10, 10) == Approx(180.0));
 }
 
 TEST_CASE("IES: a quadrant-symmetric downlight mirrors into all four quadrants and integrates to its analytic flux", "[photometry]") {
   // f(C) = 100 + 50 cos 2C on C = 0, 30, 60, 90; nothing above the horizon.
   const auto f = [](double c, double) { return 100.0 + 50.0 * std::cos(2.0 * c * kPi / 180.0); };
-  const Photometry p = parse_ies(ies(range(0, 90, 10), range(0, 90, 30), f), "quadrants.ies");
+  const Photometry p = parse_ies(ies(angles(0, 90, 10), angles(0, 90, 30), f), "quadrants.ies");
   CHECK(p.symmetry == Photometry::Symmetry::Quadrants);
   for (double c : {10.0, 30.0, 45.0, 80.0}) {
     const double base = p.intensity(c, 40);
@@ -94,11 +64,11 @@ TEST_CASE("IES: a quadrant-symmetric downlight mirrors into all four quadrants a
 
 TEST_CASE("IES: TILT=INCLUDE scales by the factor at the measured tilt, and type B is looked up through B to C", "[photometry]") {
   const std::string tilt = "TILT=INCLUDE\n1\n3\n0 45 90\n0.8 0.7 0.6";
-  const Photometry tilted = parse_ies(ies(range(0, 180, 10), {0}, [](double, double) { return 100.0; }, 1, tilt), "tilt.ies");
+  const Photometry tilted = parse_ies(ies(angles(0, 180, 10), {0}, [](double, double) { return 100.0; }, 1, tilt), "tilt.ies");
   CHECK(tilted.intensity(0, 30) == Approx(80.0));
   // Type B: a 10° beam around the photometric axis (H = V = 0, the nadir here).
   const auto beam = [](double h, double v) { return std::abs(h) <= 10 && std::abs(v) <= 10 ? 1000.0 : 0.0; };
-  const Photometry b = parse_ies(ies(range(-90, 90, 5), range(-90, 90, 5), beam, 2), "floodlight.ies");
+  const Photometry b = parse_ies(ies(angles(-90, 90, 5), angles(-90, 90, 5), beam, 2), "floodlight.ies");
   CHECK(b.type == Photometry::Type::B);
   CHECK(b.intensity(0, 0) == Approx(1000.0));
   CHECK(b.intensity(0, 5) == Approx(1000.0));   // H = 5, V = 0
@@ -112,8 +82,8 @@ TEST_CASE("IES: TILT=INCLUDE scales by the factor at the measured tilt, and type
 }
 
 TEST_CASE("EULUMDAT: Isym 1 in cd/klm scaled by the lamps' flux, and Isym 4 mirrored", "[photometry]") {
-  const auto gammas = range(0, 180, 10);
-  const Photometry round = parse_ldt(ldt(1, range(0, 345, 15), gammas, {std::vector<double>(gammas.size(), 200.0)}, 2000), "round.ldt");
+  const auto gammas = angles(0, 180, 10);
+  const Photometry round = parse_ldt(ldt(1, angles(0, 345, 15), gammas, {std::vector<double>(gammas.size(), 200.0)}, 2000), "round.ldt");
   CHECK(round.symmetry == Photometry::Symmetry::Rotational);
   CHECK(round.intensity(77, 33) == Approx(400.0));  // 200 cd/klm × 2 klm
   CHECK(round.flux() == Approx(4.0 * kPi * 400.0).epsilon(2e-3));
@@ -121,8 +91,8 @@ TEST_CASE("EULUMDAT: Isym 1 in cd/klm scaled by the lamps' flux, and Isym 4 mirr
   CHECK(round.input_watts == 25.0);
   // Isym 4: planes C0-C90 stored (7 of 24), the rest mirrored.
   std::vector<std::vector<double>> planes;
-  for (double c : range(0, 90, 15)) planes.push_back(std::vector<double>(gammas.size(), 100.0 + c));
-  const Photometry quad = parse_ldt(ldt(4, range(0, 345, 15), gammas, planes, 1000), "quad.ldt");
+  for (double c : angles(0, 90, 15)) planes.push_back(std::vector<double>(gammas.size(), 100.0 + c));
+  const Photometry quad = parse_ldt(ldt(4, angles(0, 345, 15), gammas, planes, 1000), "quad.ldt");
   CHECK(quad.symmetry == Photometry::Symmetry::Quadrants);
   CHECK(quad.intensity(30, 50) == Approx(130.0));
   CHECK(quad.intensity(150, 50) == Approx(130.0));
@@ -133,19 +103,19 @@ TEST_CASE("EULUMDAT: Isym 1 in cd/klm scaled by the lamps' flux, and Isym 4 mirr
 TEST_CASE("bad photometry files are refused in one line naming the file, exit 2", "[photometry][bad-input]") {
   const auto dir = test::output_dir("photometry_bad");
   const auto one = [](double, double) { return 10.0; };
-  const std::string good = ies(range(0, 90, 30), {0}, one);
+  const std::string good = ies(angles(0, 90, 30), {0}, one);
   std::vector<std::pair<std::string, std::string>> cases = {
       {"truncated.ies", good.substr(0, good.size() - 12)},
       {"extra.ies", good + "5 5 5\n"},
-      {"negative.ies", ies(range(0, 90, 30), {0}, [](double, double v) { return v == 30 ? -1.0 : 1.0; })},
-      {"type-a.ies", ies(range(0, 90, 30), {0}, one, 3)},
-      {"tilt-file.ies", ies(range(0, 90, 30), {0}, one, 1, "TILT=lamp.tlt")},
+      {"negative.ies", ies(angles(0, 90, 30), {0}, [](double, double v) { return v == 30 ? -1.0 : 1.0; })},
+      {"type-a.ies", ies(angles(0, 90, 30), {0}, one, 3)},
+      {"tilt-file.ies", ies(angles(0, 90, 30), {0}, one, 1, "TILT=lamp.tlt")},
       {"no-tilt.ies", "IESNA:LM-63-2002\n[TEST] x\n1 1000 1 1 1 1 2 0 0 0\n1 1 1\n0\n0\n5\n"},
       {"descending.ies", ies({0, 60, 30}, {0}, one)},
-      {"not-a-number.ies", ies(range(0, 90, 30), {0}, one).replace(good.find("1 1000"), 6, "1 many")},
-      {"truncated.ldt", ldt(1, {0}, range(0, 180, 90), {{1, 2, 3}}, 1000).substr(0, 120)},
-      {"negative.ldt", ldt(1, {0}, range(0, 180, 90), {{1, -2, 3}}, 1000)},
-      {"no-flux.ldt", ldt(1, {0}, range(0, 180, 90), {{1, 2, 3}}, 0)},
+      {"not-a-number.ies", ies(angles(0, 90, 30), {0}, one).replace(good.find("1 1000"), 6, "1 many")},
+      {"truncated.ldt", ldt(1, {0}, angles(0, 180, 90), {{1, 2, 3}}, 1000).substr(0, 120)},
+      {"negative.ldt", ldt(1, {0}, angles(0, 180, 90), {{1, -2, 3}}, 1000)},
+      {"no-flux.ldt", ldt(1, {0}, angles(0, 180, 90), {{1, 2, 3}}, 0)},
       {"wrong.txt", good}};
   for (const auto& [name, text] : cases) {
     INFO(name);
