@@ -14,6 +14,7 @@ public:
             {"render", "illuminate a scene with lights: PLY per vertex, PNG/EXR image"},
             {"solve", "find the lights that produce a target illumination"},
             {"export", "write the scene and lights for POV-Ray (.pov) or glTF tools (.gltf/.glb)"},
+            {"target", "make illuminance criteria (a lux work plane, walls, ceiling) to solve for"},
             {"luminaire", "read an IES LM-63 or EULUMDAT file: its flux, peak, symmetry (JSON)"},
             {"plugins", "list plugin modules, their versions and availability"},
             {"bench", "measure renderer throughput (machine-readable JSON lines)"},
@@ -25,6 +26,7 @@ public:
     if (command == "solve") return run_solve(args, registry);
     if (command == "export") return run_export(args, registry);
     if (command == "luminaire") return run_luminaire(args);
+    if (command == "target") return run_target(args);
     if (command == "plugins") return run_plugins(args, registry);
     if (command == "bench") return run_bench(args, registry);
     if (command == "cache") return run_cache(args);
@@ -39,5 +41,5 @@ void register_cli(PluginRegistrar& registrar) {
 } // namespace
 } // namespace hilight::cli
 
-HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, "0.1.0", "command-line interface: info, render, solve, export, luminaire, plugins, bench, cache",
+HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, "0.1.0", "command-line interface: info, render, solve, export, target, luminaire, plugins, bench, cache",
                hilight::cli::register_cli)

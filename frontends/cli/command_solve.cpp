@@ -1,5 +1,6 @@
 // hilight solve SCENE --target T.ply -o LIGHTS.json: the inverse solve.
 #include "cli_common.hpp"
+#include "command_solve_criteria.hpp"
 #include "commands.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
@@ -76,7 +77,23 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   SolveSettings& s = spec.settings;
   RendererOptions ropts;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
-  app.add_option("--target", target_path, "target PLY (x y z red green blue [weight]) or glTF with vertex colours (COLOR_0)")->required();
+  app.add_option("--target", target_path,
+                 "target PLY (x y z red green blue [weight]), glTF with vertex colours (COLOR_0), or illuminance criteria "
+                 "(.json, from hilight target workplane; needs --luminaire)")
+      ->required();
+  CriteriaSolve criteria;
+  app.add_option("--energy-tolerance", criteria.design.energy_tolerance,
+                 "with criteria: the fewest luminaires whose total flux is within this share of the least possible")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  app.add_option("--candidate-spacing", criteria.design.candidate_spacing,
+                 "with criteria: the lattice of places tried (default: a third of the finest grid's spacing)")
+      ->check(CLI::Range(1e-4, 1e6));
+  std::string mount;
+  float mount_offset = -1.f;
+  app.add_option("--mount", mount, "ceiling: every light hangs --offset below the ceiling (the same as --place ceiling:OFFSET)")
+      ->check(CLI::IsMember({"ceiling"}));
+  app.add_option("--offset", mount_offset, "with --mount ceiling: the distance below the ceiling")->check(CLI::Range(1e-6, 1e6));
   app.add_option("-o,--output", output, "lights to write: .json (hilight's), or .gltf/.glb (the scene's meshes and the lights as KHR_lights_punctual)")->required();
   bool vertex_colours = false;
   std::string html_path;
@@ -142,6 +159,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   if (auto code = parse_arguments(app, args)) return *code;
 
   for (const auto& rule : place_rules) s.placement.add(rule);
+  if (mount_offset >= 0.f && mount.empty()) throw InputError("--offset needs --mount ceiling");
+  if (!mount.empty()) s.placement.add(mount_offset >= 0.f ? "ceiling:" + std::to_string(mount_offset) : "ceiling");
   if (mode != "solve" && initial_path.empty()) throw InputError("--mode " + mode + " needs --initial LIGHTS.json");
   if (mode == "solve" && !initial_path.empty()) throw InputError("--initial needs --mode fine-tune or add");
   check_writable(output);
@@ -159,6 +178,21 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     s.luminaire = std::move(luminaire);
   } else if (luminaire_spin != 0.f) {
     throw InputError("--luminaire-spin needs --luminaire");
+  }
+  if (is_criteria_target(target_path)) {
+    if (mode != "solve") throw InputError("--mode " + mode + " works on painted targets, not on criteria (" + target_path + ")");
+    criteria.scene_path = scene_path;
+    criteria.target_path = target_path;
+    criteria.output = output;
+    criteria.report_path = report_path;
+    criteria.html_path = html_path;
+    criteria.units_name = units_name;
+    criteria.max_edge = max_edge;
+    criteria.quiet = quiet;
+    criteria.luminaire = s.luminaire;
+    criteria.placement = s.placement;
+    criteria.renderer = ropts;
+    return solve_for_criteria(criteria, registry);
   }
   const Units units = parse_units(units_name);
   const TargetQuantity quantity = parse_target_quantity(quantity_name);

@@ -14,6 +14,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry);
 int run_export(const std::vector<std::string>& args, Registry& registry);
 int run_bench(const std::vector<std::string>& args, Registry& registry);
 int run_luminaire(const std::vector<std::string>& args);
+int run_target(const std::vector<std::string>& args);
 int run_bench_solve(const std::vector<std::string>& args, Registry& registry);
 int run_bench_cache(const std::vector<std::string>& args, Registry& registry);
 int run_bench_renderers(const std::vector<std::string>& args, Registry& registry);

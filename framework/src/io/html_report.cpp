@@ -2,6 +2,8 @@
 // scene (a room) from three of its upper corners; outside one, around it.
 #include "hilight/io/html_report.hpp"
 
+#include "html_lux_maps.hpp"
+
 #include "hilight/camera.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/image_io.hpp"
@@ -156,15 +158,20 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
           "th{background:#eee}table{border-collapse:collapse}img{margin:2px;border:1px solid #ccc}.views{display:flex;flex-wrap:wrap}"
           ".view{margin-right:1em}.legend{color:#555;font-size:90%}</style></head><body>\n";
   html << "<h1>hilight solve</h1><p>" << escape(page.title) << "</p>\n";
-  html << std::setprecision(4) << "<p id=\"summary\"><b>" << page.lights.size() << " lights</b>, D̄ <b>" << 100.0 * page.report.dbar
-       << "%</b> over " << page.report.dbar_points << " of " << page.report.target_points << " target points, "
-       << page.report.seconds.at("total") << " s.</p>\n";
+  if (page.criteria)
+    html << std::setprecision(4) << "<p id=\"summary\"><b>" << page.lights.size() << " luminaires</b>, criteria "
+         << (page.design.met ? "met" : "<b>not met</b>") << ", " << page.report.seconds.at("total") << " s.</p>\n";
+  else
+    html << std::setprecision(4) << "<p id=\"summary\"><b>" << page.lights.size() << " lights</b>, D̄ <b>" << 100.0 * page.report.dbar
+         << "%</b> over " << page.report.dbar_points << " of " << page.report.target_points << " target points, "
+         << page.report.seconds.at("total") << " s.</p>\n";
   // Views: one exposure for target and result, so they compare.
-  html << "<h2>Target, result, difference</h2><div class=\"views\">\n";
+  const bool painted = page.criteria == nullptr;  // criteria have no painted target to show
+  html << (painted ? "<h2>Target, result, difference</h2>" : "<h2>Result</h2>") << "<div class=\"views\">\n";
   int view_number = 0;
   for (const Camera& cam : views(scene, *page.rays, float(width) / float(height))) {
     ++view_number;
-    const Image target = vertex_value_image(scene, *page.rays, cam, page.target, width, height);
+    const Image target = vertex_value_image(scene, *page.rays, cam, painted ? page.target : page.result, width, height);
     const Image result = vertex_value_image(scene, *page.rays, cam, page.result, width, height);
     float exposure = 0.f;
     {
@@ -178,14 +185,20 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
       }
     }
     if (exposure <= 0.f) exposure = 1.f;
-    html << "<div class=\"view\"><h3>View " << view_number << "</h3>" << img(target, exposure, "target, view " + std::to_string(view_number))
-         << "<br>" << img(result, exposure, "result, view " + std::to_string(view_number)) << "<br>"
-         << img(difference_image(result, target, exposure), 1.f, "difference, view " + std::to_string(view_number)) << "</div>\n";
+    html << "<div class=\"view\"><h3>View " << view_number << "</h3>";
+    if (painted) html << img(target, exposure, "target, view " + std::to_string(view_number)) << "<br>";
+    html << img(result, exposure, "result, view " + std::to_string(view_number));
+    if (painted) html << "<br>" << img(difference_image(result, target, exposure), 1.f, "difference, view " + std::to_string(view_number));
+    html << "</div>\n";
   }
-  html << "</div><p class=\"legend\">Rows: the target, what the lights give (same exposure), their difference (red: "
-          "brighter than wanted, blue: darker; 4× the exposure).</p>\n";
-  const size_t points = size_t(std::count_if(page.lights.begin(), page.lights.end(), [](const Light& l) { return l.type != LightType::Spot; }));
-  html << "<h2>D̄ against the light count</h2>" << dbar_plot(page.report, points) << "\n";
+  if (painted) {
+    html << "</div><p class=\"legend\">Rows: the target, what the lights give (same exposure), their difference (red: "
+            "brighter than wanted, blue: darker; 4× the exposure).</p>\n";
+    const size_t points = size_t(std::count_if(page.lights.begin(), page.lights.end(), [](const Light& l) { return l.type != LightType::Spot; }));
+    html << "<h2>D̄ against the light count</h2>" << dbar_plot(page.report, points) << "\n";
+  } else {
+    html << "</div>\n" << lux_maps_html(*page.criteria, page.design, page.lights);
+  }
   const bool photometric = page.units == "photometric";
   html << "<h2>Lights</h2><table id=\"lights\"><tr><th>#</th><th>type</th><th>x</th><th>y</th><th>z</th><th>intensity "
        << (photometric ? "(cd)" : "(W/sr)") << "</th><th>flux (lm)</th></tr>\n";

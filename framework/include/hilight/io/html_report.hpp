@@ -4,6 +4,8 @@
 /// from elsewhere): the target, the result and their difference from three
 /// views; D̄ against the light count (the hierarchy's cuts) with the chosen
 /// count marked; the lights; the timings.
+#include "hilight/illuminance_criteria.hpp"
+#include "hilight/pipeline/illuminance_design.hpp"
 #include "hilight/pipeline/solver.hpp"
 #include "hilight/ray_scene.hpp"
 
@@ -23,6 +25,10 @@ struct HtmlReport {
   Lighting lights;
   SolveReport report;
   std::string units = "radiometric";
+  /// Set for a solve for illuminance criteria: the result alone is shown,
+  /// and each grid as a false-colour map with Ē, Emin and U0 (`design`).
+  const IlluminanceCriteria* criteria = nullptr;
+  DesignReport design;
 };
 
 /// Written atomically. Images are `width` pixels wide.

@@ -1,0 +1,90 @@
+// The HTML report's lux grids (html_lux_maps.hpp).
+#include "html_lux_maps.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace hilight {
+
+namespace {
+
+/// Dark blue → cyan → green → yellow → red over t in [0, 1].
+std::string false_colour(double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  const double stops[5][3] = {{0.05, 0.1, 0.5}, {0.0, 0.7, 0.9}, {0.1, 0.8, 0.2}, {1.0, 0.9, 0.0}, {0.9, 0.1, 0.05}};
+  const double s = t * 4.0;
+  const int k = std::min(3, int(s));
+  const double f = s - double(k);
+  std::ostringstream out;
+  out << "rgb(";
+  for (int c = 0; c < 3; ++c) out << int(255.0 * (stops[k][c] * (1 - f) + stops[k + 1][c] * f)) << (c < 2 ? "," : ")");
+  return out.str();
+}
+
+std::string grid_map(const CriterionGrid& grid, const double* lux, const Lighting& lights, size_t index) {
+  Bounds box;
+  for (const Vec3& p : grid.points) box.extend(p);
+  const float half = 0.5f * float(grid.spacing > 0 ? grid.spacing : 0.1);
+  box.lo -= Vec3(half);
+  box.hi += Vec3(half);
+  const double width = 420.0, scale = width / std::max(1e-6, double(std::max(box.extent().x, box.extent().z)));
+  const double w = double(box.extent().x) * scale, h = double(box.extent().z) * scale;
+  double top = 1.5 * grid.lux;
+  for (size_t i = 0; i < grid.points.size(); ++i) top = std::max(top, lux[i]);
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1) << "<svg class=\"luxmap\" id=\"luxmap-" << index << "\" width=\"" << w + 20 << "\" height=\""
+    << h + 20 << "\" xmlns=\"http://www.w3.org/2000/svg\" font-size=\"9\"><g transform=\"translate(10,10)\">";
+  for (size_t i = 0; i < grid.points.size(); ++i) {
+    const double x = double(grid.points[i].x - box.lo.x) * scale, y = double(grid.points[i].z - box.lo.z) * scale;
+    const double side = 2.0 * half * scale;
+    s << "<rect x=\"" << x - 0.5 * side << "\" y=\"" << y - 0.5 * side << "\" width=\"" << side << "\" height=\"" << side
+      << "\" fill=\"" << false_colour(lux[i] / top) << "\"><title>" << std::setprecision(0) << lux[i] << " lx</title></rect>"
+      << std::setprecision(1);
+  }
+  for (const Light& l : lights) {
+    if (l.position.x < box.lo.x || l.position.x > box.hi.x || l.position.z < box.lo.z || l.position.z > box.hi.z) continue;
+    const double x = double(l.position.x - box.lo.x) * scale, y = double(l.position.z - box.lo.z) * scale;
+    s << "<circle class=\"luminaire\" cx=\"" << x << "\" cy=\"" << y << "\" r=\"4\" fill=\"white\" stroke=\"black\"/>";
+  }
+  s << "</g></svg>";
+  // The colour scale.
+  s << "<svg width=\"" << 260 << "\" height=\"30\" xmlns=\"http://www.w3.org/2000/svg\" font-size=\"10\">";
+  for (int k = 0; k < 20; ++k)
+    s << "<rect x=\"" << 10 + k * 12 << "\" y=\"2\" width=\"12\" height=\"12\" fill=\"" << false_colour(double(k) / 19.0) << "\"/>";
+  s << std::setprecision(0) << "<text x=\"10\" y=\"26\">0 lx</text><text x=\"200\" y=\"26\">" << top << " lx</text></svg>";
+  return s.str();
+}
+
+} // namespace
+
+std::string lux_maps_html(const IlluminanceCriteria& criteria, const DesignReport& design, const Lighting& lights) {
+  std::ostringstream html;
+  html << "<h2>Illuminance</h2><table id=\"grids\"><tr><th>grid</th><th>points</th><th>Ē (lx)</th><th>wanted</th><th>Emin (lx)</th>"
+          "<th>U0</th><th>wanted</th><th>met</th></tr>\n";
+  for (size_t g = 0; g < criteria.grids.size() && g < design.figures.size(); ++g) {
+    const auto& c = criteria.grids[g];
+    const auto& f = design.figures[g];
+    html << std::fixed << std::setprecision(0) << "<tr><td>" << c.name << "</td><td>" << c.points.size() << "</td><td>" << f.mean
+         << "</td><td>≥ " << c.lux << "</td><td>" << f.min << "</td><td>" << std::setprecision(2) << f.u0 << "</td><td>≥ " << c.u0
+         << "</td><td>" << (f.met ? "yes" : "<b>no</b>") << "</td></tr>\n";
+  }
+  html << "</table>\n" << std::setprecision(0) << "<p>Total flux " << design.flux_lm << " lm (the least any layout of these places "
+       << "could have: " << design.least_flux_lm << " lm)";
+  if (design.power_w > 0) html << ", " << design.power_w << " W";
+  html << ".</p>\n<div class=\"views\">";
+  size_t first = 0;
+  for (size_t g = 0; g < criteria.grids.size(); ++g) {
+    const auto& c = criteria.grids[g];
+    if (c.kind != CriterionGrid::Kind::Walls && first + c.points.size() <= design.lux.size())
+      html << "<div class=\"view\"><h3>" << c.name << ", seen from above</h3>" << grid_map(c, design.lux.data() + first, lights, g)
+           << "</div>\n";
+    first += c.points.size();
+  }
+  html << "</div><p class=\"legend\">Each square a calculation point, coloured by its illuminance; circles: the luminaires. "
+          "Walls are in the table only.</p>\n";
+  return html.str();
+}
+
+} // namespace hilight

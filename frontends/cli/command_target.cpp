@@ -1,0 +1,98 @@
+// hilight target workplane SCENE -o C.json: illuminance criteria to solve
+// for instead of paint (issue 14 §3; docs/solve.md, "Illuminance criteria").
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "hilight/error.hpp"
+#include "hilight/io/criteria_file.hpp"
+#include "hilight/regions.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace hilight::cli {
+
+namespace {
+
+/// X0,Y0,Z0,X1,Y1,Z1 → a box (corners in any order).
+Bounds parse_box(const std::string& text) {
+  std::stringstream ss(text);
+  std::string item;
+  std::vector<float> v;
+  while (std::getline(ss, item, ',')) {
+    try {
+      size_t used = 0;
+      v.push_back(std::stof(item, &used));
+      if (used != item.size() || !std::isfinite(v.back())) throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw InputError("--box " + text + ": \"" + item + "\" is not a number");
+    }
+  }
+  if (v.size() != 6) throw InputError("--box " + text + ": expected X0,Y0,Z0,X1,Y1,Z1");
+  Bounds b;
+  b.extend(Vec3(v[0], v[1], v[2]));
+  b.extend(Vec3(v[3], v[4], v[5]));
+  return b;
+}
+
+} // namespace
+
+int run_target(const std::vector<std::string>& args) {
+  CLI::App app("Make illuminance criteria to solve for (hilight solve SCENE --target C.json --luminaire L.ies)", "target");
+  std::string kind, scene_path, output, box_text;
+  float height = 0.75f, border = 0.5f, max_edge = 0.f;
+  double lux = 500, u0 = 0.6, walls = 0, ceiling = 0, surface_u0 = 0.1, spacing = 0;
+  int region = -1;
+  bool append = false;
+  app.add_option("kind", kind, "workplane: a horizontal calculation grid at --height over the floor")
+      ->required()
+      ->check(CLI::IsMember({"workplane"}));
+  app.add_option("scene", scene_path, "scene file")->required();
+  app.add_option("-o,--output", output, "criteria file to write (.json)")->required();
+  app.add_option("--height", height, "work plane height over the floor")->check(CLI::Range(0.0, 1e6))->capture_default_str();
+  app.add_option("--region", region, "the room (as hilight info numbers the regions); default: the whole scene")->check(CLI::Range(0, 1000000));
+  app.add_option("--box", box_text, "or the area as X0,Y0,Z0,X1,Y1,Z1 (the floor is the lowest one inside)");
+  app.add_option("--lux", lux, "maintained mean illuminance wanted on the work plane, lx")->check(CLI::Range(0.0, 1e7))->capture_default_str();
+  app.add_option("--u0", u0, "uniformity wanted: Emin/Ē")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  app.add_option("--walls", walls, "mean illuminance wanted on the walls above the work plane, lx (0: none)")->check(CLI::Range(0.0, 1e7));
+  app.add_option("--ceiling", ceiling, "mean illuminance wanted on the ceiling, lx (0: none)")->check(CLI::Range(0.0, 1e7));
+  app.add_option("--surface-u0", surface_u0, "uniformity wanted on walls and ceiling (EN 12464-1: 0.1)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  app.add_option("--spacing", spacing, "grid spacing (default: EN 12464-1's 0.2·5^log10(d), d the area's longer side)")
+      ->check(CLI::Range(1e-4, 1e6));
+  app.add_option("--border", border, "no work-plane point within this of a wall (EN 12464-1: 0.5)")->check(FiniteNonNegative)->capture_default_str();
+  app.add_flag("--append", append, "add these grids to the criteria already in the output file");
+  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
+  if (auto code = parse_arguments(app, args)) return *code;
+  if (region >= 0 && !box_text.empty()) throw InputError("--region and --box: give one area");
+  check_writable(output);
+  IlluminanceCriteria criteria;
+  if (append && std::filesystem::exists(output)) criteria = read_criteria(output);
+
+  const Scene scene = load_scene(scene_path, {max_edge});
+  const RayScene rays(scene);
+  const Regions regions(rays);
+  GridArea area;
+  if (region >= 0) area.region = region;
+  if (!box_text.empty()) area.box = parse_box(box_text);
+  const auto in_scene = [&](const std::string& what) { return scene_path + ": " + what; };
+  try {
+    const CriterionGrid plane = make_work_plane(rays, regions, area, height, lux, u0, spacing, border);
+    criteria.grids.push_back(plane);
+    if (walls > 0) criteria.grids.push_back(make_surface_grid(rays, regions, area, CriterionGrid::Kind::Walls, walls, surface_u0, plane, spacing));
+    if (ceiling > 0)
+      criteria.grids.push_back(make_surface_grid(rays, regions, area, CriterionGrid::Kind::Ceiling, ceiling, surface_u0, plane, spacing));
+  } catch (const InputError& e) {
+    throw InputError(in_scene(e.what()));
+  }
+  write_criteria(output, criteria);
+  for (const auto& g : criteria.grids)
+    std::fprintf(stderr, "hilight: %s: %zu points, spacing %.2f, Ē ≥ %g lx, U0 ≥ %g\n", g.name.c_str(), g.points.size(), g.spacing,
+                 g.lux, g.u0);
+  std::fprintf(stderr, "hilight: criteria -> %s (hilight solve %s --target %s --luminaire FILE)\n", output.c_str(),
+               scene_path.c_str(), output.c_str());
+  return 0;
+}
+
+} // namespace hilight::cli
