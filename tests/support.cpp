@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <regex>
 
 #include <array>
 #include <cstring>
@@ -148,6 +149,26 @@ size_t line_count(const std::string& text) {
   for (char c : text) n += c == '\n';
   if (!text.empty() && text.back() != '\n') ++n;
   return n;
+}
+
+bool skip_without_chromium() {
+  if (std::system("chromium --version > /dev/null 2>&1") == 0) return false;
+  std::cout << "SKIPPED: chromium is not installed (setup.sh installs it)" << std::endl;
+  return true;
+}
+
+BrowserPage open_in_chromium(const std::filesystem::path& html) {
+  const auto dom = html.parent_path() / (html.stem().string() + ".dom.html"), log = html.parent_path() / (html.stem().string() + ".chromium.log");
+  const std::string command = "chromium --headless --no-sandbox --disable-gpu --enable-logging=stderr --v=0 --dump-dom 'file://" +
+                              std::filesystem::absolute(html).string() + "' > '" + dom.string() + "' 2> '" + log.string() + "'";
+  if (std::system(command.c_str()) != 0) return {};
+  return {read_file(dom), read_file(log)};
+}
+
+bool page_is_clean(const BrowserPage& page) {
+  // The report's own script sets data-images-ok once every embedded image decoded.
+  return page.dom.find("data-images-ok=\"true\"") != std::string::npos &&
+         !std::regex_search(page.log, std::regex("CONSOLE[^\\n]*(Uncaught|rror)")) && page.log.find("Uncaught") == std::string::npos;
 }
 
 } // namespace test

@@ -59,6 +59,17 @@ void write_text(const std::filesystem::path& path, const std::string& text);
 /// over all points and channels.
 double dbar(const std::vector<hilight::Rgb>& a, const std::vector<hilight::Rgb>& reference);
 
+/// A page as headless chromium rendered it: its DOM after scripts, and the
+/// browser's log (console messages). `skip_without_chromium()` first: true
+/// (with "SKIPPED: ...") when chromium is not installed.
+bool skip_without_chromium();
+struct BrowserPage {
+  std::string dom, log;
+};
+BrowserPage open_in_chromium(const std::filesystem::path& html);
+/// The page loaded its images and logged no console error or uncaught exception.
+bool page_is_clean(const BrowserPage& page);
+
 /// Number of lines in `text` (a one-line error has exactly 1).
 size_t line_count(const std::string& text);
 

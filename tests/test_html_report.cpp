@@ -4,9 +4,6 @@
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
-#include <cstdlib>
-#include <iostream>
-#include <regex>
 
 namespace {
 
@@ -36,18 +33,8 @@ TEST_CASE("the solve's HTML report renders in a headless browser with its images
   CHECK(count(html, "<tr><td>") >= 4 + 3);  // four lights, and timings
   CHECK(html.find("http") == html.find("http://www.w3.org/2000/svg"));  // nothing fetched from elsewhere
 
-  if (std::system("chromium --version > /dev/null 2>&1") != 0) {
-    std::cout << "SKIPPED: chromium is not installed (setup.sh installs it)" << std::endl;
-    return;
-  }
-  const auto dom = dir / "dom.html", log = dir / "chromium.log";
-  const std::string command = "chromium --headless --no-sandbox --disable-gpu --enable-logging=stderr --v=0 --dump-dom 'file://" +
-                              (dir / "report.html").string() + "' > '" + dom.string() + "' 2> '" + log.string() + "'";
-  REQUIRE(std::system(command.c_str()) == 0);
-  const std::string rendered = test::read_file(dom), messages = test::read_file(log);
-  INFO(messages.substr(0, 2000));
-  CHECK(rendered.find("data-images-ok=\"true\"") != std::string::npos);
-  // The page's own console: no errors, no uncaught exceptions.
-  CHECK_FALSE(std::regex_search(messages, std::regex("CONSOLE[^\\n]*(Uncaught|rror)")));
-  CHECK(messages.find("Uncaught") == std::string::npos);
+  if (test::skip_without_chromium()) return;
+  const test::BrowserPage page = test::open_in_chromium(dir / "report.html");
+  INFO(page.log.substr(0, 2000));
+  CHECK(test::page_is_clean(page));
 }

@@ -40,22 +40,31 @@ bool in_area(const Regions& regions, const GridArea& area, const Bounds& box, co
 }
 
 /// The lowest upward-facing surface on the vertical line through (x, z)
-/// within the box's height, or nothing.
+/// within the box's height, or nothing. An object standing on the floor
+/// (a closed box) hides the floor under it (its base and the floor are one
+/// plane): when the last hit is such a base, under a top, it is the floor.
 std::optional<float> floor_under(const RayScene& rays, const Bounds& box, float x, float z) {
   std::optional<float> floor;
   const float eps = rays.epsilon();
   // A floor on the box's face (the scene's own bounds) must still be hit.
   const float margin = std::max(0.01f * box.extent().y, 16.f * eps);
   Vec3 origin(x, box.hi.y + margin, z);
+  std::optional<float> base;
+  bool top = false;
   for (int step = 0; step < 64; ++step) {
     const float span = origin.y - (box.lo.y - margin);
     if (!(span > 0.f)) break;
     const Hit hit = rays.intersect(origin, Vec3(0.f, -1.f, 0.f), span);
     if (!hit.valid()) break;
     const Vec3 p = rays.hit_position(hit);
-    if (rays.face_normals()[hit.triangle].y > kUp) floor = p.y;
+    const float ny = rays.face_normals()[hit.triangle].y;
+    base.reset();
+    if (ny < -kUp && top) base = p.y;  // the underside of what we entered through its top
+    top = ny > kUp;
+    if (top) floor = p.y;
     origin = Vec3(x, p.y - eps, z);
   }
+  if (base) floor = base;
   return floor;
 }
 

@@ -117,4 +117,17 @@ Scene furnished_room() {
   return scene;
 }
 
+Scene open_plan_office(float width, float depth) {
+  Scene scene;
+  scene.source = "builtin:open_plan_office";
+  add_box(scene, {0.f, 0.f, 0.f}, {width, 3.f, depth}, Rgb(0.7f, 0.7f, 0.68f), true, "walls");
+  int desk = 0;
+  for (float z = 1.5f; z + 0.8f <= depth - 1.f; z += 2.f)
+    for (float x = 1.5f; x + 1.6f <= width - 1.f; x += 2.4f)
+      add_box(scene, {x, 0.f, z}, {x + 1.6f, 0.75f, z + 0.8f}, Rgb(0.55f, 0.45f, 0.35f), false, "desk " + std::to_string(desk++));
+  for (float x = 1.f; x + 1.2f <= width - 1.f; x += 4.f)
+    add_box(scene, {x, 0.f, 0.f}, {x + 1.2f, 1.2f, 0.45f}, Rgb(0.4f, 0.4f, 0.45f), false, "cabinet");
+  return scene;
+}
+
 } // namespace hilight::builders

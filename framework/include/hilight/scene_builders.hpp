@@ -26,5 +26,9 @@ void add_table(Scene& scene);
 /// A 6 x 3 x 5 room with a table, a cabinet, a bench and a pillar: the
 /// interior test scene (cf. the paper's Table 1), and the bundled demo.
 Scene furnished_room();
+/// An open-plan office `width` (x) by `depth` (z), 3 m high: rows of desks
+/// (1.6 × 0.8, tops at 0.75) two metres apart and cabinets along one wall.
+/// The illuminance design's benchmark (hilight bench lux).
+Scene open_plan_office(float width = 20.f, float depth = 10.f);
 
 } // namespace hilight::builders
