@@ -4,7 +4,9 @@
 
 #include <cstdlib>
 
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <iostream>
 #include <regex>
 
@@ -83,7 +85,10 @@ RunResult run_hilight(const std::vector<std::string>& args, unsigned long long a
   return run_hilight(args, Environment{}, address_space);
 }
 
-RunResult run_hilight(const std::vector<std::string>& args, const Environment& env, unsigned long long address_space) {
+namespace {
+
+RunResult spawn_hilight(const std::vector<std::string>& args, const Environment& env, unsigned long long address_space,
+                        double interrupt_after, int interrupt_signal) {
   // Output goes through files, not pipes, so large outputs cannot deadlock.
   static int counter = 0;
   fs::path dir = output_dir("run_hilight_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
@@ -123,13 +128,32 @@ RunResult run_hilight(const std::vector<std::string>& args, const Environment& e
   }
   int status = 0;
   struct rusage usage = {};
-  ::wait4(pid, &status, 0, &usage);
+  bool waited = false;
+  if (interrupt_after > 0) {  // poll until it ends or the time comes, then signal it
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(interrupt_after);
+    while (!waited && std::chrono::steady_clock::now() < until) {
+      waited = ::wait4(pid, &status, WNOHANG, &usage) == pid;
+      if (!waited) ::usleep(2000);
+    }
+    if (!waited) ::kill(pid, interrupt_signal);
+  }
+  if (!waited) ::wait4(pid, &status, 0, &usage);
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   r.out = read_file(out_path);
   r.err = read_file(err_path);
   r.max_rss_kb = usage.ru_maxrss;
   return r;
+}
+
+} // namespace
+
+RunResult run_hilight(const std::vector<std::string>& args, const Environment& env, unsigned long long address_space) {
+  return spawn_hilight(args, env, address_space, 0.0, 0);
+}
+
+RunResult run_hilight_interrupted(const std::vector<std::string>& args, double seconds, int signal) {
+  return spawn_hilight(args, {}, 0, seconds, signal);
 }
 
 fs::path output_dir(const std::string& test_name) {

@@ -44,6 +44,10 @@ using Environment = std::vector<std::pair<std::string, std::string>>;
 /// As above, with `env` set in the child (the test's own environment is untouched).
 RunResult run_hilight(const std::vector<std::string>& args, const Environment& env, unsigned long long address_space = 0);
 
+/// Runs `hilight <args>` and sends it `signal` after `seconds` unless it has
+/// ended by then. exit_code: 128 + the signal when the signal ended it.
+RunResult run_hilight_interrupted(const std::vector<std::string>& args, double seconds, int signal);
+
 /// The red, green, blue of every vertex of a PLY (what `hilight render` writes).
 std::vector<hilight::Rgb> ply_colours(const std::filesystem::path& path);
 

@@ -93,4 +93,12 @@ double Photometry::flux() const {
 
 double Photometry::peak() const { return candela.empty() ? 0.0 : *std::max_element(candela.begin(), candela.end()); }
 
+std::vector<float> distinct_spins(const Photometry& profile) {
+  switch (profile.symmetry) {
+    case Photometry::Symmetry::Rotational: return {0.f};
+    case Photometry::Symmetry::Quadrants: return {0.f, 90.f};
+    default: return {0.f, 90.f, 180.f, 270.f};
+  }
+}
+
 } // namespace hilight

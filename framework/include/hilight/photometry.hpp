@@ -34,4 +34,9 @@ struct Photometry {
   double peak() const;
 };
 
+/// Turns about the aim (degrees, from 0) that the profile's symmetry tells
+/// apart: one for a rotational profile, 0 and 90 for one symmetric in its
+/// quadrants, else 0, 90, 180 and 270. The solves try these.
+std::vector<float> distinct_spins(const Photometry& profile);
+
 } // namespace hilight

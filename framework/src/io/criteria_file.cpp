@@ -3,11 +3,11 @@
 
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
+#include "hilight/io/text_file.hpp"
 
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 namespace hilight {
 
@@ -101,17 +101,7 @@ IlluminanceCriteria parse_criteria(const std::string& text, const std::string& s
 }
 
 IlluminanceCriteria read_criteria(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string(), "is a folder, not a criteria file");
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-    throw InputError(path.string(), "not a regular file");
-  if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) > (uintmax_t(64) << 20))
-    throw InputError(path.string(), "larger than 64 MB: not a criteria file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), std::filesystem::exists(path, ec) ? "cannot open" : "no such file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_criteria(ss.str(), path.string());
+  return parse_criteria(read_text_file(path, "criteria"), path.string());
 }
 
 void write_criteria(const std::filesystem::path& path, const IlluminanceCriteria& criteria) {

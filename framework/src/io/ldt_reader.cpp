@@ -1,6 +1,7 @@
 // EULUMDAT reader (io/photometry_io.hpp): one value per line, in the order
 // the format fixes; intensities in cd per 1000 lm of lamp flux.
 #include "hilight/error.hpp"
+#include "hilight/io/text_file.hpp"
 #include "hilight/io/photometry_io.hpp"
 
 #include <algorithm>
@@ -126,18 +127,11 @@ Photometry parse_ldt(const std::string& text, const std::string& source) {
 }
 
 Photometry read_photometry(const std::filesystem::path& path) {
-  // A regular file of sane size first: a device (/dev/zero) would never end.
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string(), "not a regular file (or no such file)");
-  if (std::filesystem::file_size(path, ec) > (uintmax_t(64) << 20)) throw InputError(path.string(), "larger than 64 MB: not a photometry file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_text_file(path, "photometry");
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext == ".ies") return parse_ies(text.str(), path.string());
-  if (ext == ".ldt") return parse_ldt(text.str(), path.string());
+  if (ext == ".ies") return parse_ies(text, path.string());
+  if (ext == ".ldt") return parse_ldt(text, path.string());
   throw InputError(path.string(), "a luminaire file must be .ies (IES LM-63) or .ldt (EULUMDAT)");
 }
 

@@ -1,4 +1,5 @@
 #include "hilight/io/lights_json.hpp"
+#include "hilight/io/text_file.hpp"
 
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
@@ -134,17 +135,7 @@ Lighting parse_lights_json(const std::string& text, const std::string& source) {
 }
 
 Lighting read_lights_json(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string(), "is a folder, not a lights file");
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-    throw InputError(path.string(), "not a regular file");  // a device would never end
-  if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) > (uintmax_t(64) << 20))
-    throw InputError(path.string(), "larger than 64 MB: not a lights file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), std::filesystem::exists(path, ec) ? "cannot open lights file" : "no such file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_lights_json(ss.str(), path.string());
+  return parse_lights_json(read_text_file(path, "lights"), path.string());
 }
 
 std::string lights_to_json(const Lighting& lights) {

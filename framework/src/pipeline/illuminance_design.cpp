@@ -25,15 +25,6 @@ struct Candidate {
   glm::ivec4 cell{0};  ///< lattice x, layer, z, spin index
 };
 
-/// Spins (about the aim) that the profile's symmetry tells apart.
-std::vector<float> spins_for(const Photometry& profile) {
-  switch (profile.symmetry) {
-    case Photometry::Symmetry::Rotational: return {0.f};
-    case Photometry::Symmetry::Quadrants: return {0.f, 90.f};
-    default: return {0.f, 90.f, 180.f, 270.f};
-  }
-}
-
 /// The program's rows, one column per candidate: per grid, its mean
 /// (Ē ≥ lux, with a hair of margin so that rounding never misses it) and,
 /// with u0 > 0, per point E_i − u0·Ē ≥ 0.
@@ -244,7 +235,7 @@ std::vector<Candidate> make_candidates(const LightSpace& space, const Light& lum
     const float bottom = std::max(space.bounds().lo.y, plane + step), top = space.bounds().hi.y - 1e-3f;
     for (int k = 0; k < 3; ++k) layers.push_back(bottom + (top - bottom) * float(k + 1) / 3.f);
   }
-  const std::vector<float> spins = spins_for(*luminaire.profile);
+  const std::vector<float> spins = distinct_spins(*luminaire.profile);
   std::vector<Candidate> out;
   for (int iz = 0; iz < nz; ++iz)
     for (size_t iy = 0; iy < layers.size(); ++iy)

@@ -1,4 +1,5 @@
 #include "hilight/pipeline/solver.hpp"
+#include "hilight/pipeline/luminaire_aim.hpp"
 
 #include "hilight/error.hpp"
 #include "hilight/light_bounds.hpp"
@@ -13,6 +14,7 @@
 #include "solver_internal.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <tbb/task_group.h>
@@ -311,6 +313,8 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
   open_space_for(m_settings.spot_hints);
   require_admissible(m_settings.spot_hints, "spot hints");
   Lighting lights = solve_in_space(target, report);
+  if (m_settings.luminaire && distinct_spins(*m_settings.luminaire->profile).size() > 1)
+    lights = solve_each_spin(target, std::move(lights), report);
   // Lights inside cannot explain the target: perhaps it is lit from outside
   // (a product, a facade). Look again beyond the open sides; keep the better.
   const bool can_open = !m_open &&
@@ -358,6 +362,14 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
     }
   }
   drop_idle_lights(lights);
+  if (m_settings.luminaire && distinct_spins(*m_settings.luminaire->profile).size() > 1 && !lights.empty()) {
+    // An asymmetric luminaire: each one's turn about its aim, then measured again.
+    stage("aiming the luminaires");
+    Stopwatch watch;
+    lights = aim_luminaires(m_reference, sample(target, report), to_output(std::move(lights)), report.dbar_samples);
+    report.dbar_points = 0;
+    report.seconds["aim"] += watch.seconds();
+  }
   finish_report(target, lights, report);
   if (report.dbar > kPoorFitDbar) report.unreachable = unreachable_share(target, *m_space);
   report.seconds["total"] = total.seconds();
@@ -401,6 +413,38 @@ Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {
   lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
   report.seconds["reference polish"] += polish_watch.seconds();
   return finish_in_space(target, std::move(samples), std::move(lights), report);
+}
+
+Lighting Solver::solve_each_spin(const Target& target, Lighting lights, SolveReport& report) {
+  const float base = m_settings.luminaire->spin_deg;
+  float best = base;
+  for (float spin : distinct_spins(*m_settings.luminaire->profile)) {
+    if (spin == 0.f) continue;  // solved already
+    stage("solving with the luminaire turned " + std::to_string(int(spin)) + "°");
+    turn_luminaire(std::fmod(base + spin, 360.f));
+    SolveReport turned;
+    turned.seconds = report.seconds;
+    Lighting found = solve_in_space(target, turned);
+    if (turned.dbar < report.dbar) {
+      report = std::move(turned);
+      lights = std::move(found);
+      best = m_settings.luminaire->spin_deg;
+    } else {
+      report.seconds = turned.seconds;
+    }
+  }
+  turn_luminaire(best);
+  return lights;
+}
+
+void Solver::turn_luminaire(float spin_deg) {
+  if (m_settings.luminaire->spin_deg == spin_deg) return;
+  m_settings.luminaire->spin_deg = spin_deg;
+  m_luminaire_renderer->set_luminaire(*m_settings.luminaire);
+  m_luminaire_reference->set_luminaire(*m_settings.luminaire);
+  // A light cache is of one luminaire turned one way (its key says so).
+  m_cache.reset();
+  m_other_cache.reset();
 }
 
 Lighting Solver::spots_in_space(const Target& target, double points_dbar, SolveReport& report) {

@@ -145,6 +145,11 @@ private:
   /// The whole solve in the current light space: seeding to residual polish.
   /// The point-light solve in the current light space.
   Lighting solve_in_space(const Target& target, SolveReport& report);
+  /// With an asymmetric luminaire: the solve again with the template turned
+  /// to each spin its symmetry tells apart; the best D̄ keeps its turn.
+  Lighting solve_each_spin(const Target& target, Lighting lights, SolveReport& report);
+  /// Turns the template luminaire (renderers and caches follow).
+  void turn_luminaire(float spin_deg);
   /// Spotlights from nothing in the current light space, point lights
   /// beside them where they pay (empty when no spot helps, or when the spots
   /// alone explain less than `points_dbar`, D̄ at the samples of the point
