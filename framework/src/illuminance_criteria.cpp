@@ -145,7 +145,9 @@ CriterionGrid make_work_plane(const RayScene& rays, const Regions& regions, cons
       const auto floor = floor_under(rays, box, x, z);
       if (!floor) continue;
       const Vec3 p(x, *floor + height, z);
-      if (!in_area(regions, area, box, p) || rays.inside_solid(p) || near_wall(rays, p, border)) continue;
+      // A point on a desk top at the plane's height is on the plane: look a hair above it.
+      const Vec3 above = p + Vec3(0.f, 4.f * rays.epsilon(), 0.f);
+      if (!in_area(regions, area, box, p) || rays.inside_solid(above) || near_wall(rays, above, border)) continue;
       grid.points.push_back(p);
       grid.normals.push_back(Vec3(0.f, 1.f, 0.f));
     }
