@@ -313,7 +313,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
   open_space_for(m_settings.spot_hints);
   require_admissible(m_settings.spot_hints, "spot hints");
   Lighting lights = solve_in_space(target, report);
-  if (m_settings.luminaire && distinct_spins(*m_settings.luminaire->profile).size() > 1)
+  if (m_settings.luminaire && distinct_spins(*m_settings.luminaire->profile).size() > 1 && report.dbar > kTurnDbar)
     lights = solve_each_spin(target, std::move(lights), report);
   // Lights inside cannot explain the target: perhaps it is lit from outside
   // (a product, a facade). Look again beyond the open sides; keep the better.

@@ -21,6 +21,11 @@ constexpr int kMaxSpots = 4;
 /// error of far or bounce-lit lights (the product sweep: 20 of 20 at 1%, 19
 /// at 0.5%).
 constexpr double kSplitDbar = 0.01;
+/// D̄ above which a solve with an asymmetric luminaire tries the template
+/// turned to its other spins (a whole solve each): a fit this poor may be a
+/// wrong turn (a luminaire turned 90° from the template: 33%); below it the
+/// turn is right, and each light's own turn is still chosen afterwards.
+constexpr double kTurnDbar = 0.01;
 /// D̄ above which a solve looks for the cause (unreachable painted light).
 constexpr double kPoorFitDbar = 0.05;
 
