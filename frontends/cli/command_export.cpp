@@ -4,6 +4,7 @@
 // KHR_lights_punctual (docs/interchange.md) for Blender, game engines and
 // other glTF tools.
 #include "cli_common.hpp"
+#include "hilight/scene_origin.hpp"
 #include "commands.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
@@ -46,6 +47,13 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   std::optional<Camera> camera;
   if (!camera_text.empty()) camera = Camera::parse(camera_text);
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
+  // In the scene's coordinates (scene_origin.hpp): the glTF puts them back in the world; a
+  // .pov file stays in the scene's own, camera and lights with it.
+  lights = lights_to_local(std::move(lights), scene->origin);
+  if (camera) {
+    camera->eye = to_local(camera->eye, scene->origin);
+    camera->target = to_local(camera->target, scene->origin);
+  }
   if (gltf) {
     GltfExport contents;
     contents.scene = scene.get();

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "hilight/light_bounds.hpp"
 #include "hilight/regions.hpp"
+#include "hilight/scene_origin.hpp"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -20,7 +21,10 @@ int run_info(const std::vector<std::string>& args) {
   if (auto code = parse_arguments(app, args)) return *code;
 
   Scene scene = load_scene(scene_path, {max_edge});
+  // Positions said in the world's coordinates (the scene may have been moved home: scene_origin.hpp).
+  const auto world = [&](const Vec3& v) { return to_world(v, scene.origin); };
   const Bounds& b = scene.bounds;
+  const glm::dvec3 lo = world(b.lo), hi = world(b.hi), o = scene.origin;
   if (as_json) {
     nlohmann::json j = {{"file", scene_path},
                         {"triangles_input", scene.input_triangle_count},
@@ -28,8 +32,9 @@ int run_info(const std::vector<std::string>& args) {
                         {"triangles", scene.triangles.size()},
                         {"vertices", scene.positions.size()},
                         {"materials", scene.materials.size()},
-                        {"bounds_min", {b.lo.x, b.lo.y, b.lo.z}},
-                        {"bounds_max", {b.hi.x, b.hi.y, b.hi.z}},
+                        {"bounds_min", {lo.x, lo.y, lo.z}},
+                        {"bounds_max", {hi.x, hi.y, hi.z}},
+                        {"origin", {o.x, o.y, o.z}},
                         {"diagonal", scene.diagonal()},
                         {"max_edge", scene.max_edge}};
     std::printf("%s\n", j.dump(2).c_str());
@@ -39,15 +44,19 @@ int run_info(const std::vector<std::string>& args) {
   std::printf("triangles  %zu (input %zu)\n", scene.triangles.size(), scene.input_triangle_count);
   std::printf("vertices   %zu (input %zu)\n", scene.positions.size(), scene.input_vertex_count);
   std::printf("materials  %zu\n", scene.materials.size());
-  std::printf("bounds     [%g, %g, %g] .. [%g, %g, %g]\n", b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z);
+  std::printf("bounds     [%.9g, %.9g, %.9g] .. [%.9g, %.9g, %.9g]\n", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+  if (o != glm::dvec3(0.0))
+    std::printf("origin     [%.9g, %.9g, %.9g] (far from the world's origin: computed relative to this)\n", o.x, o.y, o.z);
   std::printf("diagonal   %g\n", scene.diagonal());
-  const Bounds lb = scene.light_bounds();
-  std::printf("lights in  [%g, %g, %g] .. [%g, %g, %g]\n", lb.lo.x, lb.lo.y, lb.lo.z, lb.hi.x, lb.hi.y, lb.hi.z);
+  const auto print_box = [&](const char* label, const Bounds& box, const char* tail) {
+    const glm::dvec3 a = world(box.lo), c = world(box.hi);
+    std::printf("%s[%.9g, %.9g, %.9g] .. [%.9g, %.9g, %.9g]%s", label, a.x, a.y, a.z, c.x, c.y, c.z, tail);
+  };
+  print_box("lights in  ", scene.light_bounds(), "\n");
   const auto open = side_openness(scene);
   std::printf("open sides -x %.2f +x %.2f -y %.2f +y %.2f -z %.2f +z %.2f (lights may go beyond a side from %.2f)\n", open[0], open[1], open[2],
               open[3], open[4], open[5], kOpenSide);
-  const Bounds ob = open_light_bounds(scene);
-  std::printf("open space [%g, %g, %g] .. [%g, %g, %g] (lit from outside)\n", ob.lo.x, ob.lo.y, ob.lo.z, ob.hi.x, ob.hi.y, ob.hi.z);
+  print_box("open space ", open_light_bounds(scene), " (lit from outside)\n");
   std::printf("max edge   %g\n", scene.max_edge);
   // The connected parts of free space: what --place region:K / not-region:K name.
   const RayScene rays(scene);
@@ -58,8 +67,9 @@ int run_info(const std::vector<std::string>& args) {
       std::printf("  ... %zu more\n", regions.list().size() - 20);
       break;
     }
-    std::printf("  %-3d [%g, %g, %g] .. [%g, %g, %g], volume %g\n", r.id, r.box.lo.x, r.box.lo.y, r.box.lo.z, r.box.hi.x, r.box.hi.y,
-                r.box.hi.z, r.volume);
+    std::printf("  %-3d ", r.id);
+    print_box("", r.box, "");
+    std::printf(", volume %g\n", r.volume);
   }
   return 0;
 }

@@ -1,5 +1,6 @@
 // hilight render SCENE --lights L.json -o OUT[.ply|.png|.exr]
 #include "cli_common.hpp"
+#include "hilight/scene_origin.hpp"
 #include "commands.hpp"
 #include "hilight/shadow_refinement.hpp"
 #include "hilight/error.hpp"
@@ -92,6 +93,11 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
 
   auto start = std::chrono::steady_clock::now();
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
+  lights = lights_to_local(std::move(lights), scene->origin);  // where the scene was moved (scene_origin.hpp)
+  if (camera) {
+    camera->eye = to_local(camera->eye, scene->origin);
+    camera->target = to_local(camera->target, scene->origin);
+  }
   const bool any_ply = std::any_of(paths.begin(), paths.end(), [](const fs::path& p) { return p.extension() == ".ply"; });
   const long long refine_budget = refine_text == "auto" ? 4 * (long long)scene->positions.size() : std::stoll(refine_text);
   if (any_ply && refine_budget > (long long)scene->positions.size()) {

@@ -11,6 +11,7 @@
 #include "hilight/light_cache_store.hpp"
 #include "hilight/io/photometry_io.hpp"
 #include "hilight/units.hpp"
+#include "hilight/scene_origin.hpp"
 #include "hilight/pipeline/solve_session.hpp"
 #include "hilight/threads.hpp"
 
@@ -215,6 +216,10 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   set_thread_limit(ropts.threads);
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
   auto rays = std::make_shared<const RayScene>(*scene);
+  // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).
+  initial = lights_to_local(std::move(initial), scene->origin);
+  s.spot_hints = lights_to_local(std::move(s.spot_hints), scene->origin);
+  s.placement = rules_to_local(std::move(s.placement), scene->origin);
   Target target = read_target(target_path, *scene, *rays);
   target_from_units(target, units, quantity);
   s.seed = seed;
@@ -250,7 +255,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     }
     write_gltf(output, gltf);
   } else {
-    write_lights_file(output, lights, units);
+    write_lights_file(output, lights_to_world(lights, scene->origin), units);
   }
   if (!report_path.empty()) {
     nlohmann::json j = report_json(report, spec.renderer, spec.optimizer, spec.sampler, mode);

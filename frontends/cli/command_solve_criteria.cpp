@@ -8,6 +8,7 @@
 #include "hilight/io/lights_file.hpp"
 #include "hilight/threads.hpp"
 #include "hilight/units.hpp"
+#include "hilight/scene_origin.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -69,7 +70,10 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, {a.max_edge}));
   auto rays = std::make_shared<const RayScene>(*scene);
   const auto reference = a.renderer.create(registry, scene);
-  PlacementRules rules = a.placement;
+  // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).
+  for (auto& g : criteria.grids)
+    for (auto& p : g.points) p = to_local(p, scene->origin);
+  PlacementRules rules = rules_to_local(a.placement, scene->origin);
   // Luminaires for a lux target hang from the ceiling unless told otherwise.
   if (!rules.ceiling_offset && !std::isfinite(rules.min_height) && !std::isfinite(rules.max_height)) rules.add("ceiling");
   DesignSettings settings = a.design;
@@ -87,7 +91,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
     gltf.figures = {{"lights", double(lights.size())}, {"total_luminous_flux_lm", report.flux_lm}};
     write_gltf(a.output, gltf);
   } else {
-    write_lights_file(a.output, lights, units);
+    write_lights_file(a.output, lights_to_world(lights, scene->origin), units);
   }
   CriteriaSolve with_rules = a;
   with_rules.placement = rules;

@@ -5,6 +5,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/criteria_file.hpp"
 #include "hilight/regions.hpp"
+#include "hilight/scene_origin.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -73,9 +74,15 @@ int run_target(const std::vector<std::string>& args) {
   const Scene scene = load_scene(scene_path, {max_edge});
   const RayScene rays(scene);
   const Regions regions(rays);
+  // Positions in the scene's coordinates here, the world's in the file (scene_origin.hpp).
+  for (auto& g : criteria.grids)
+    for (auto& p : g.points) p = to_local(p, scene.origin);
   GridArea area;
   if (region >= 0) area.region = region;
-  if (!box_text.empty()) area.box = parse_box(box_text);
+  if (!box_text.empty()) {
+    Bounds b = parse_box(box_text);
+    area.box = Bounds{to_local(b.lo, scene.origin), to_local(b.hi, scene.origin)};
+  }
   const auto in_scene = [&](const std::string& what) { return scene_path + ": " + what; };
   try {
     const CriterionGrid plane = make_work_plane(rays, regions, area, height, lux, u0, spacing, border);
@@ -86,7 +93,10 @@ int run_target(const std::vector<std::string>& args) {
   } catch (const InputError& e) {
     throw InputError(in_scene(e.what()));
   }
-  write_criteria(output, criteria);
+  IlluminanceCriteria world = criteria;
+  for (auto& g : world.grids)
+    for (auto& p : g.points) p = Vec3(to_world(p, scene.origin));
+  write_criteria(output, world);
   for (const auto& g : criteria.grids)
     std::fprintf(stderr, "hilight: %s: %zu points, spacing %.2f, Ē ≥ %g lx, U0 ≥ %g\n", g.name.c_str(), g.points.size(), g.spacing,
                  g.lux, g.u0);

@@ -28,6 +28,10 @@ struct Scene {
   size_t input_vertex_count = 0;               ///< before tessellation
   size_t input_triangle_count = 0;
   float max_edge = 0.f;                        ///< tessellation limit used
+  /// Where the scene sits: world = local + origin. A file far from the
+  /// origin is moved near it when loaded (scene_origin.hpp), so precision
+  /// does not depend on where it sits; positions cross at the file boundary.
+  glm::dvec3 origin{0.0};
 
   float diagonal() const { return bounds.diagonal(); }
   /// Where lights may stand: the bounds, except that an axis shorter than a

@@ -153,7 +153,7 @@ glm::dquat aim(const Vec3& direction) {
   return glm::normalize(glm::dquat(1.0 + d, axis.x, axis.y, axis.z));
 }
 
-void add_light(tinygltf::Model& model, const Light& l, size_t index, tinygltf::Node& node) {
+void add_light(tinygltf::Model& model, const Light& l, size_t index, const glm::dvec3& origin, tinygltf::Node& node) {
   if (l.type == LightType::Luminaire)
     throw InputError("light " + std::to_string(index) + " is a luminaire with a measured profile: KHR_lights_punctual has only point and spot lights");
   tinygltf::Light light;
@@ -171,7 +171,8 @@ void add_light(tinygltf::Model& model, const Light& l, size_t index, tinygltf::N
   }
   model.lights.push_back(light);
   node.name = light.name;
-  node.translation = {l.position.x, l.position.y, l.position.z};
+  const glm::dvec3 world = glm::dvec3(l.position) + origin;  // exact in the file's doubles
+  node.translation = {world.x, world.y, world.z};
   tinygltf::Value::Object reference;
   reference["light"] = tinygltf::Value(int(model.lights.size() - 1));
   node.extensions["KHR_lights_punctual"] = tinygltf::Value(std::move(reference));
@@ -188,12 +189,15 @@ void write_gltf(const fs::path& path, const GltfExport& in) {
   if (in.scene && !in.scene->positions.empty()) {
     tinygltf::Node node;
     add_mesh(model, buffers, in, node);
+    // A scene moved home when loaded (scene_origin.hpp): its vertices stay
+    // local, the node puts them back where they were.
+    if (in.scene->origin != glm::dvec3(0.0)) node.translation = {in.scene->origin.x, in.scene->origin.y, in.scene->origin.z};
     model.nodes.push_back(node);
     scene.nodes.push_back(int(model.nodes.size() - 1));
   }
   for (size_t j = 0; j < in.lights.size(); ++j) {
     tinygltf::Node node;
-    add_light(model, in.lights[j], j, node);
+    add_light(model, in.lights[j], j, in.scene ? in.scene->origin : glm::dvec3(0.0), node);
     model.nodes.push_back(node);
     scene.nodes.push_back(int(model.nodes.size() - 1));
   }

@@ -15,17 +15,26 @@ void write_illuminated_ply(const std::filesystem::path& path, const Scene& scene
   if (radiance.size() != scene.positions.size()) throw std::logic_error("write_illuminated_ply: one colour per vertex expected");
   write_atomically(path, [&](const std::filesystem::path& temp) {
     std::ofstream out(temp, std::ios::binary);
+    // Far from the origin the world positions need doubles (scene_origin.hpp).
+    const bool far = scene.origin != glm::dvec3(0.0);
     out << "ply\nformat binary_little_endian 1.0\ncomment hilight illuminated scene: linear outgoing radiance\n"
         << "element vertex " << scene.positions.size() << "\n"
-        << "property float x\nproperty float y\nproperty float z\n"
+        << (far ? "property double x\nproperty double y\nproperty double z\n" : "property float x\nproperty float y\nproperty float z\n")
         << "property float nx\nproperty float ny\nproperty float nz\n"
         << "property float red\nproperty float green\nproperty float blue\n"
         << "element face " << scene.triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
-    std::vector<float> row(9);
     for (size_t i = 0; i < scene.positions.size(); ++i) {
       const Vec3 &p = scene.positions[i], &n = scene.normals[i];
       const Rgb& c = radiance[i];
-      float values[9] = {p.x, p.y, p.z, n.x, n.y, n.z, c.r, c.g, c.b};
+      if (far) {
+        const glm::dvec3 world = glm::dvec3(p) + scene.origin;
+        const double xyz[3] = {world.x, world.y, world.z};
+        out.write(reinterpret_cast<const char*>(xyz), sizeof(xyz));
+      } else {
+        const float xyz[3] = {p.x, p.y, p.z};
+        out.write(reinterpret_cast<const char*>(xyz), sizeof(xyz));
+      }
+      const float values[6] = {n.x, n.y, n.z, c.r, c.g, c.b};
       out.write(reinterpret_cast<const char*>(values), sizeof(values));
     }
     for (const auto& t : scene.triangles) {

@@ -1,4 +1,5 @@
 #include "hilight/io/scene_io.hpp"
+#include "hilight/scene_origin.hpp"
 
 #include "hilight/error.hpp"
 #include "hilight/io/tessellate.hpp"
@@ -183,6 +184,11 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
       scene.triangle_material.push_back(material);
     }
   }
+  // Far from the origin: move it home (scene_origin.hpp), exactly.
+  scene.update_bounds();
+  scene.origin = recentring_origin(scene.bounds);
+  if (scene.origin != glm::dvec3(0.0))
+    for (auto& p : scene.positions) p = to_local(p, scene.origin);
   return finish_scene(std::move(scene), options);
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/target_ply.hpp"
 #include "hilight/io/gltf.hpp"
+#include "hilight/scene_origin.hpp"
 #include "hilight/io/lights_file.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/lights_json.hpp"
@@ -139,7 +140,7 @@ void Document::save_target(const std::filesystem::path& path) const {
     write_gltf(path, gltf);
     return;
   }
-  write_target_ply(path, points);
+  write_target_ply(path, points, m_scene->origin);
 }
 
 void Document::load_target(const std::filesystem::path& path) {
@@ -183,11 +184,11 @@ void Document::save_lights(const std::filesystem::path& path) const {
     write_gltf(path, gltf);
     return;
   }
-  write_lights_json(path, m_state.lights);
+  write_lights_json(path, lights_to_world(m_state.lights, m_scene->origin));  // the world's coordinates in files
 }
 
 void Document::load_lights(const std::filesystem::path& path) {
-  Lighting lights = read_lights_file(path);
+  Lighting lights = lights_to_local(read_lights_file(path), m_scene->origin);
   set_lights(lights, "load lights " + path.filename().string());
 }
 

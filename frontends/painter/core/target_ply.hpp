@@ -16,6 +16,7 @@ struct TargetPoints {
 };
 
 /// Written through write_atomically: the file appears whole or not at all.
-void write_target_ply(const std::filesystem::path& path, const TargetPoints& points);
+/// Positions are local to the scene; `origin` puts them back in the world (doubles when it is not 0).
+void write_target_ply(const std::filesystem::path& path, const TargetPoints& points, const glm::dvec3& origin = glm::dvec3(0.0));
 
 } // namespace hilight::painter

@@ -27,7 +27,7 @@ bool is_gltf_path(const std::filesystem::path& path);
 
 struct GltfExport {
   const Scene* scene = nullptr;   ///< its meshes (nullptr: the lights only)
-  Lighting lights;
+  Lighting lights;  ///< in the scene's local coordinates: written where they stand in the world (scene.origin)
   /// Per scene vertex (empty: not written): COLOR_0 = what the lights give,
   /// COLOR_1 = the target, alpha its weight (0: no target point there).
   std::vector<Rgb> result, target;

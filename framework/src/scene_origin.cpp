@@ -1,0 +1,42 @@
+// Where a scene sits (scene_origin.hpp).
+#include "hilight/scene_origin.hpp"
+
+#include <cmath>
+
+namespace hilight {
+
+glm::dvec3 recentring_origin(const Bounds& bounds) {
+  if (bounds.empty()) return glm::dvec3(0.0);
+  const glm::dvec3 lo(bounds.lo), hi(bounds.hi);
+  const double size = glm::length(hi - lo);
+  if (!(size > 0) || !std::isfinite(size)) return glm::dvec3(0.0);
+  // A power of two at least the scene's size: the origin is a multiple of
+  // it, so world − origin is exact (both are multiples of the vertices' float
+  // step) and small enough for a float to hold it exactly.
+  const double step = std::exp2(std::ceil(std::log2(size)));
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  return glm::dvec3(std::round(centre.x / step) * step, std::round(centre.y / step) * step, std::round(centre.z / step) * step);
+}
+
+Lighting lights_to_local(Lighting lights, const glm::dvec3& origin) {
+  for (auto& l : lights) l.position = to_local(l.position, origin);
+  return lights;
+}
+
+Lighting lights_to_world(Lighting lights, const glm::dvec3& origin) {
+  for (auto& l : lights) l.position = Vec3(to_world(l.position, origin));
+  return lights;
+}
+
+PlacementRules rules_to_local(PlacementRules rules, const glm::dvec3& origin) {
+  for (auto* list : {&rules.boxes, &rules.excluded})
+    for (auto& b : *list) {
+      b.lo = to_local(b.lo, origin);
+      b.hi = to_local(b.hi, origin);
+    }
+  rules.min_height = float(double(rules.min_height) - origin.y);  // ±infinity stays
+  rules.max_height = float(double(rules.max_height) - origin.y);
+  return rules;
+}
+
+} // namespace hilight
