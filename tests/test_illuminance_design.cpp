@@ -212,10 +212,7 @@ TEST_CASE("an asymmetric luminaire is turned along the corridor it lights", "[lu
   // in z, C0 must run in z too (spin 90 or 270 from +x), else light is wasted on the walls.
   const auto dir = test::output_dir("lux_spin");
   const auto path = dir / "linear.ies";
-  std::ofstream(path) << test::ies_text(test::angles(0, 90, 5), test::angles(0, 90, 15), [](double c, double g) {
-    const double cc = std::cos(c * kPi / 180.0), gg = std::cos(g * kPi / 180.0);
-    return 1000.0 * (cc * cc * std::pow(gg, 0.5) + (1 - cc * cc) * std::pow(gg, 12.0));
-  }, 1, "TILT=NONE", 1, 1, 2000, 20);
+  std::ofstream(path) << test::linear_ies();  // wide in C0–C180, narrow across it
   Light luminaire;
   luminaire.type = LightType::Luminaire;
   luminaire.profile = std::make_shared<const Photometry>(read_photometry(path));

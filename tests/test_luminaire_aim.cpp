@@ -17,11 +17,7 @@ using namespace hilight;
 TEST_CASE("solve --luminaire turns asymmetric luminaires to the painted target's light", "[photometry][solve][aim]") {
   const auto dir = test::output_dir("luminaire_aim");
   const auto profile = dir / "linear.ies";
-  // Quadrant-symmetric: wide in C0–C180, narrow across it.
-  std::ofstream(profile) << test::ies_text(test::angles(0, 90, 5), test::angles(0, 90, 15), [](double c, double g) {
-    const double cc = std::cos(c * kPi / 180.0), gg = std::cos(g * kPi / 180.0);
-    return 1000.0 * (cc * cc * std::pow(gg, 0.5) + (1 - cc * cc) * std::pow(gg, 12.0));
-  }, 1, "TILT=NONE", 1, 1, 2000, 20);
+  std::ofstream(profile) << test::linear_ies();  // wide in C0–C180, narrow across it
   std::mt19937_64 rng(1401);
   std::uniform_real_distribution<float> x(1.0f, 2.4f), z(1.0f, 4.0f);
   nlohmann::json lights = nlohmann::json::array();

@@ -31,6 +31,8 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--width", width, "image width the camera is set up for (.pov)")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height the camera is set up for (.pov)")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
+  size_t max_vertices = SceneLoadOptions{}.max_vertices;
+  app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
   std::string units_name = "radiometric";
   app.add_option("--units", units_name, "a lights JSON's intensities: radiometric (W/sr) or photometric (candela)")
       ->check(CLI::IsMember({"radiometric", "photometric"}))
@@ -46,7 +48,7 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   Lighting lights = read_lights_file(lights_path, parse_units(units_name));
   std::optional<Camera> camera;
   if (!camera_text.empty()) camera = Camera::parse(camera_text);
-  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
+  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices}));
   // In the scene's coordinates (scene_origin.hpp): the glTF puts them back in the world; a
   // .pov file stays in the scene's own, camera and lights with it.
   lights = lights_to_local(std::move(lights), scene->origin);

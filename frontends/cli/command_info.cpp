@@ -17,10 +17,12 @@ int run_info(const std::vector<std::string>& args) {
   bool as_json = false;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
+  size_t max_vertices = SceneLoadOptions{}.max_vertices;
+  app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
   app.add_flag("--json", as_json, "print JSON instead of text");
   if (auto code = parse_arguments(app, args)) return *code;
 
-  Scene scene = load_scene(scene_path, {max_edge});
+  Scene scene = load_scene(scene_path, {max_edge, max_vertices});
   // Positions said in the world's coordinates (the scene may have been moved home: scene_origin.hpp).
   const auto world = [&](const Vec3& v) { return to_world(v, scene.origin); };
   const Bounds& b = scene.bounds;

@@ -54,6 +54,8 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--lights", lights_path, "lights: hilight JSON, or a glTF's KHR_lights_punctual (.gltf/.glb); default: a glTF scene's own lights");
   app.add_option("-o,--output", outputs, "output: OUT.ply, OUT.png, OUT.exr, or OUT for .ply + .png (repeatable)")->required();
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
+  size_t max_vertices = SceneLoadOptions{}.max_vertices;
+  app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
   app.add_option("--camera", camera_text, "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (default frames the scene)");
   app.add_option("--width", width, "image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
@@ -92,7 +94,7 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   registry.renderer_unavailable_reason(ropts.name);  // unknown renderer fails here, before loading
 
   auto start = std::chrono::steady_clock::now();
-  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge}));
+  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices}));
   lights = lights_to_local(std::move(lights), scene->origin);  // where the scene was moved (scene_origin.hpp)
   if (camera) {
     camera->eye = to_local(camera->eye, scene->origin);

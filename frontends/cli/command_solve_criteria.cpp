@@ -67,7 +67,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   if (!a.luminaire) throw InputError(a.target_path + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
   IlluminanceCriteria criteria = read_criteria(a.target_path);
   set_thread_limit(a.renderer.threads);
-  auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, {a.max_edge}));
+  auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, {a.max_edge, a.max_vertices}));
   auto rays = std::make_shared<const RayScene>(*scene);
   const auto reference = a.renderer.create(registry, scene);
   // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).

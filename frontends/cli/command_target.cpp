@@ -65,13 +65,15 @@ int run_target(const std::vector<std::string>& args) {
   app.add_option("--border", border, "no work-plane point within this of a wall (EN 12464-1: 0.5)")->check(FiniteNonNegative)->capture_default_str();
   app.add_flag("--append", append, "add these grids to the criteria already in the output file");
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
+  size_t max_vertices = SceneLoadOptions{}.max_vertices;
+  app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
   if (auto code = parse_arguments(app, args)) return *code;
   if (region >= 0 && !box_text.empty()) throw InputError("--region and --box: give one area");
   check_writable(output);
   IlluminanceCriteria criteria;
   if (append && std::filesystem::exists(output)) criteria = read_criteria(output);
 
-  const Scene scene = load_scene(scene_path, {max_edge});
+  const Scene scene = load_scene(scene_path, {max_edge, max_vertices});
   const RayScene rays(scene);
   const Regions regions(rays);
   // Positions in the scene's coordinates here, the world's in the file (scene_origin.hpp).

@@ -205,8 +205,9 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
   for (size_t j = 0; j < page.lights.size(); ++j) {
     const Light& l = page.lights[j];
     const Rgb shown = photometric ? l.intensity * float(kLumensPerWatt) : l.intensity;
-    html << "<tr><td>" << j << "</td><td>" << to_string(l.type) << "</td><td>" << l.position.x << "</td><td>" << l.position.y
-         << "</td><td>" << l.position.z << "</td><td>" << shown.r << ", " << shown.g << ", " << shown.b << "</td><td>"
+    const glm::dvec3 at = glm::dvec3(l.position) + scene.origin;  // where it stands in the world (scene_origin.hpp)
+    html << "<tr><td>" << j << "</td><td>" << to_string(l.type) << "</td><td>" << at.x << "</td><td>" << at.y
+         << "</td><td>" << at.z << "</td><td>" << shown.r << ", " << shown.g << ", " << shown.b << "</td><td>"
          << luminous_flux(l) << "</td></tr>\n";
   }
   html << "</table>\n<h2>Timings</h2><table id=\"timings\"><tr><th>stage</th><th>seconds</th></tr>\n";

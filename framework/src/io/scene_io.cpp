@@ -22,7 +22,6 @@ namespace {
 
 // Scenes with more than this many triangles after tessellation are refused
 // rather than exhausting memory on a too-small --max-edge.
-constexpr size_t kMaxTriangles = 20'000'000;
 
 Rgb material_albedo(const aiScene& scene, const aiMaterial& mat, const fs::path& folder, const std::string& file) {
   aiString name;
@@ -130,9 +129,12 @@ Scene finish_scene(Scene scene, const SceneLoadOptions& options) {
     double ratio = std::max(1.0, double(longest) / max_edge);
     estimate += ratio * ratio;
   }
-  if (!(estimate <= double(kMaxTriangles))) {
-    char text[160];
-    std::snprintf(text, sizeof(text), "--max-edge %g would make about %.3g triangles (limit %zu)", double(max_edge), estimate, kMaxTriangles);
+  // A tessellated mesh has about half as many vertices as triangles (Euler).
+  const double vertices = std::max(double(scene.positions.size()), 0.5 * estimate);
+  if (!(vertices <= double(options.max_vertices))) {
+    char text[200];
+    std::snprintf(text, sizeof(text), "--max-edge %g would make about %.3g vertices, more than --max-vertices %zu (a larger --max-edge, or a larger limit if the memory is there)",
+                  double(max_edge), vertices, options.max_vertices);
     throw InputError(scene.source, text);
   }
   tessellate(scene, max_edge);

@@ -10,6 +10,9 @@ struct SceneLoadOptions {
   /// Longest edge allowed after tessellation, in scene units; <= 0 picks
   /// kDefaultEdgeFraction of the scene diagonal.
   float max_edge = 0.f;
+  /// The most vertices the tessellation may make (`--max-vertices`): a scene
+  /// that would make more fails before committing the memory, naming it.
+  size_t max_vertices = 10'000'000;
 };
 
 constexpr float kDefaultEdgeFraction = 1.f / 40.f;
