@@ -75,8 +75,8 @@ TEST_CASE("a scene 10^4 away is moved home when loaded, exactly", "[far][scene]"
   }
   const Copies c = make_copies("far_load");
   const Scene home = load_scene(c.home_obj), far = load_scene(c.far_obj);
-  CHECK(home.origin == glm::dvec3(0.0));
-  CHECK(far.origin == kFar);
+  CHECK(home.frame.origin == glm::dvec3(0.0));
+  CHECK(far.frame.origin == kFar);
   REQUIRE(far.positions.size() == home.positions.size());
   CHECK(far.positions == home.positions);  // the same local scene, bit for bit
   const auto info = test::run_hilight({"info", c.far_obj.string()});

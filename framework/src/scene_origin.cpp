@@ -1,6 +1,8 @@
 // Where a scene sits (scene_origin.hpp).
 #include "hilight/scene_origin.hpp"
 
+#include "hilight/error.hpp"
+
 #include <cmath>
 
 namespace hilight {
@@ -18,24 +20,34 @@ glm::dvec3 recentring_origin(const Bounds& bounds) {
   return glm::dvec3(std::round(centre.x / step) * step, std::round(centre.y / step) * step, std::round(centre.z / step) * step);
 }
 
-Lighting lights_to_local(Lighting lights, const glm::dvec3& origin) {
-  for (auto& l : lights) l.position = to_local(l.position, origin);
+double metres_per_unit(const std::string& unit) {
+  if (unit == "mm") return 0.001;
+  if (unit == "cm") return 0.01;
+  if (unit == "m") return 1.0;
+  if (unit == "in") return 0.0254;
+  if (unit == "ft") return 0.3048;
+  throw InputError("--unit " + unit + ": mm, cm, m, in or ft");
+}
+
+Lighting lights_to_local(Lighting lights, const SceneFrame& frame) {
+  for (auto& l : lights) l.position = to_local(l.position, frame);
   return lights;
 }
 
-Lighting lights_to_world(Lighting lights, const glm::dvec3& origin) {
-  for (auto& l : lights) l.position = Vec3(to_world(l.position, origin));
+Lighting lights_to_world(Lighting lights, const SceneFrame& frame) {
+  for (auto& l : lights) l.position = Vec3(to_world(l.position, frame));
   return lights;
 }
 
-PlacementRules rules_to_local(PlacementRules rules, const glm::dvec3& origin) {
+PlacementRules rules_to_local(PlacementRules rules, const SceneFrame& frame) {
   for (auto* list : {&rules.boxes, &rules.excluded})
     for (auto& b : *list) {
-      b.lo = to_local(b.lo, origin);
-      b.hi = to_local(b.hi, origin);
+      b.lo = to_local(b.lo, frame);
+      b.hi = to_local(b.hi, frame);
     }
-  rules.min_height = float(double(rules.min_height) - origin.y);  // ±infinity stays
-  rules.max_height = float(double(rules.max_height) - origin.y);
+  rules.min_height = float((double(rules.min_height) - frame.origin.y) * frame.scale);  // ±infinity stays
+  rules.max_height = float((double(rules.max_height) - frame.origin.y) * frame.scale);
+  if (rules.ceiling_offset) rules.ceiling_offset = length_to_local(*rules.ceiling_offset, frame);
   return rules;
 }
 

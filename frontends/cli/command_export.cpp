@@ -33,6 +33,9 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
   size_t max_vertices = SceneLoadOptions{}.max_vertices;
   app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
+  std::string length_unit;
+  app.add_option("--unit", length_unit, "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); positions in files and options are in it")
+      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
   std::string units_name = "radiometric";
   app.add_option("--units", units_name, "a lights JSON's intensities: radiometric (W/sr) or photometric (candela)")
       ->check(CLI::IsMember({"radiometric", "photometric"}))
@@ -48,13 +51,13 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   Lighting lights = read_lights_file(lights_path, parse_units(units_name));
   std::optional<Camera> camera;
   if (!camera_text.empty()) camera = Camera::parse(camera_text);
-  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices}));
+  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices, length_unit}));
   // In the scene's coordinates (scene_origin.hpp): the glTF puts them back in the world; a
   // .pov file stays in the scene's own, camera and lights with it.
-  lights = lights_to_local(std::move(lights), scene->origin);
+  lights = lights_to_local(std::move(lights), scene->frame);
   if (camera) {
-    camera->eye = to_local(camera->eye, scene->origin);
-    camera->target = to_local(camera->target, scene->origin);
+    camera->eye = to_local(camera->eye, scene->frame);
+    camera->target = to_local(camera->target, scene->frame);
   }
   if (gltf) {
     GltfExport contents;

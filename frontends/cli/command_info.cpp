@@ -19,14 +19,18 @@ int run_info(const std::vector<std::string>& args) {
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
   size_t max_vertices = SceneLoadOptions{}.max_vertices;
   app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
+  std::string length_unit;
+  app.add_option("--unit", length_unit, "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); positions in files and options are in it")
+      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
   app.add_flag("--json", as_json, "print JSON instead of text");
   if (auto code = parse_arguments(app, args)) return *code;
 
-  Scene scene = load_scene(scene_path, {max_edge, max_vertices});
+  Scene scene = load_scene(scene_path, {max_edge, max_vertices, length_unit});
   // Positions said in the world's coordinates (the scene may have been moved home: scene_origin.hpp).
-  const auto world = [&](const Vec3& v) { return to_world(v, scene.origin); };
+  const auto world = [&](const Vec3& v) { return to_world(v, scene.frame); };
   const Bounds& b = scene.bounds;
-  const glm::dvec3 lo = world(b.lo), hi = world(b.hi), o = scene.origin;
+  const glm::dvec3 lo = world(b.lo), hi = world(b.hi), o = scene.frame.origin;
+  const double metres = double(scene.diagonal());  // hilight computes in metres
   if (as_json) {
     nlohmann::json j = {{"file", scene_path},
                         {"triangles_input", scene.input_triangle_count},
@@ -37,6 +41,8 @@ int run_info(const std::vector<std::string>& args) {
                         {"bounds_min", {lo.x, lo.y, lo.z}},
                         {"bounds_max", {hi.x, hi.y, hi.z}},
                         {"origin", {o.x, o.y, o.z}},
+                        {"unit", scene.frame.unit},
+                        {"size_m", metres},
                         {"diagonal", scene.diagonal()},
                         {"max_edge", scene.max_edge}};
     std::printf("%s\n", j.dump(2).c_str());
@@ -47,6 +53,7 @@ int run_info(const std::vector<std::string>& args) {
   std::printf("vertices   %zu (input %zu)\n", scene.positions.size(), scene.input_vertex_count);
   std::printf("materials  %zu\n", scene.materials.size());
   std::printf("bounds     [%.9g, %.9g, %.9g] .. [%.9g, %.9g, %.9g]\n", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+  std::printf("unit       %s (%g m); %.4g m across\n", scene.frame.unit.c_str(), scene.frame.scale, metres);
   if (o != glm::dvec3(0.0))
     std::printf("origin     [%.9g, %.9g, %.9g] (far from the world's origin: computed relative to this)\n", o.x, o.y, o.z);
   std::printf("diagonal   %g\n", scene.diagonal());

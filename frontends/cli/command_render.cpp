@@ -56,6 +56,9 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
   size_t max_vertices = SceneLoadOptions{}.max_vertices;
   app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
+  std::string length_unit;
+  app.add_option("--unit", length_unit, "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); positions in files and options are in it")
+      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
   app.add_option("--camera", camera_text, "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (default frames the scene)");
   app.add_option("--width", width, "image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
@@ -94,11 +97,11 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   registry.renderer_unavailable_reason(ropts.name);  // unknown renderer fails here, before loading
 
   auto start = std::chrono::steady_clock::now();
-  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices}));
-  lights = lights_to_local(std::move(lights), scene->origin);  // where the scene was moved (scene_origin.hpp)
+  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices, length_unit}));
+  lights = lights_to_local(std::move(lights), scene->frame);  // where the scene was moved (scene_origin.hpp)
   if (camera) {
-    camera->eye = to_local(camera->eye, scene->origin);
-    camera->target = to_local(camera->target, scene->origin);
+    camera->eye = to_local(camera->eye, scene->frame);
+    camera->target = to_local(camera->target, scene->frame);
   }
   const bool any_ply = std::any_of(paths.begin(), paths.end(), [](const fs::path& p) { return p.extension() == ".ply"; });
   const long long refine_budget = refine_text == "auto" ? 4 * (long long)scene->positions.size() : std::stoll(refine_text);

@@ -127,6 +127,9 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
   size_t max_vertices = SceneLoadOptions{}.max_vertices;
   app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
+  std::string length_unit;
+  app.add_option("--unit", length_unit, "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); positions in files and options are in it")
+      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
   app.add_option("--evaluation-points", s.evaluation_points, "D̄ is measured on every target point up to this many, else on this many evenly spaced ones (an estimate; 0: every point)")
       ->capture_default_str();
   app.add_flag("--no-residual-samples", [&](int64_t) { s.residual_samples = false; },
@@ -192,6 +195,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     criteria.units_name = units_name;
     criteria.max_edge = max_edge;
     criteria.max_vertices = max_vertices;
+    criteria.length_unit = length_unit;
     criteria.quiet = quiet;
     criteria.luminaire = s.luminaire;
     criteria.placement = s.placement;
@@ -217,12 +221,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
 
   const bool progress = !quiet && ::isatty(2);
   set_thread_limit(ropts.threads);
-  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices}));
+  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices, length_unit}));
   auto rays = std::make_shared<const RayScene>(*scene);
   // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).
-  initial = lights_to_local(std::move(initial), scene->origin);
-  s.spot_hints = lights_to_local(std::move(s.spot_hints), scene->origin);
-  s.placement = rules_to_local(std::move(s.placement), scene->origin);
+  initial = lights_to_local(std::move(initial), scene->frame);
+  s.spot_hints = lights_to_local(std::move(s.spot_hints), scene->frame);
+  s.placement = rules_to_local(std::move(s.placement), scene->frame);
   Target target = read_target(target_path, *scene, *rays);
   target_from_units(target, units, quantity);
   s.seed = seed;
@@ -258,7 +262,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     }
     write_gltf(output, gltf);
   } else {
-    write_lights_file(output, lights_to_world(lights, scene->origin), units);
+    write_lights_file(output, lights_to_world(lights, scene->frame), units, scene->frame.unit);
   }
   if (!report_path.empty()) {
     nlohmann::json j = report_json(report, spec.renderer, spec.optimizer, spec.sampler, mode);

@@ -56,7 +56,7 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
           {"count_walk", walk},
           {"placement", a.placement.describe()},
           {"seconds", r.seconds},
-          {"length_unit", "m"},
+          {"length_unit", a.length_unit.empty() ? "m" : a.length_unit},
           {"units", a.units_name},
           {"renderer", a.renderer.name}};
 }
@@ -67,13 +67,16 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   if (!a.luminaire) throw InputError(a.target_path + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
   IlluminanceCriteria criteria = read_criteria(a.target_path);
   set_thread_limit(a.renderer.threads);
-  auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, {a.max_edge, a.max_vertices}));
+  auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, {a.max_edge, a.max_vertices, a.length_unit}));
   auto rays = std::make_shared<const RayScene>(*scene);
   const auto reference = a.renderer.create(registry, scene);
+  if (criteria.length_unit != scene->frame.unit)
+    throw InputError(a.target_path, "its points are in " + criteria.length_unit + ", the scene in " + scene->frame.unit +
+                                        " (--unit " + criteria.length_unit + "?)");
   // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).
   for (auto& g : criteria.grids)
-    for (auto& p : g.points) p = to_local(p, scene->origin);
-  PlacementRules rules = rules_to_local(a.placement, scene->origin);
+    for (auto& p : g.points) p = to_local(p, scene->frame);
+  PlacementRules rules = rules_to_local(a.placement, scene->frame);
   // Luminaires for a lux target hang from the ceiling unless told otherwise.
   if (!rules.ceiling_offset && !std::isfinite(rules.min_height) && !std::isfinite(rules.max_height)) rules.add("ceiling");
   DesignSettings settings = a.design;
@@ -91,7 +94,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
     gltf.figures = {{"lights", double(lights.size())}, {"total_luminous_flux_lm", report.flux_lm}};
     write_gltf(a.output, gltf);
   } else {
-    write_lights_file(a.output, lights_to_world(lights, scene->origin), units);
+    write_lights_file(a.output, lights_to_world(lights, scene->frame), units, scene->frame.unit);
   }
   CriteriaSolve with_rules = a;
   with_rules.placement = rules;

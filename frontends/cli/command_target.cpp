@@ -67,23 +67,31 @@ int run_target(const std::vector<std::string>& args) {
   app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
   size_t max_vertices = SceneLoadOptions{}.max_vertices;
   app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
+  std::string length_unit;
+  app.add_option("--unit", length_unit, "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); positions in files and options are in it")
+      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
   if (auto code = parse_arguments(app, args)) return *code;
   if (region >= 0 && !box_text.empty()) throw InputError("--region and --box: give one area");
   check_writable(output);
   IlluminanceCriteria criteria;
   if (append && std::filesystem::exists(output)) criteria = read_criteria(output);
+  const auto same_unit = [&](const std::string& unit) {
+    if (criteria.grids.size() && criteria.length_unit != unit)
+      throw InputError(output, "its points are in " + criteria.length_unit + ", the scene in " + unit + " (--unit)");
+  };
 
-  const Scene scene = load_scene(scene_path, {max_edge, max_vertices});
+  const Scene scene = load_scene(scene_path, {max_edge, max_vertices, length_unit});
+  same_unit(scene.frame.unit);
   const RayScene rays(scene);
   const Regions regions(rays);
   // Positions in the scene's coordinates here, the world's in the file (scene_origin.hpp).
   for (auto& g : criteria.grids)
-    for (auto& p : g.points) p = to_local(p, scene.origin);
+    for (auto& p : g.points) p = to_local(p, scene.frame);
   GridArea area;
   if (region >= 0) area.region = region;
   if (!box_text.empty()) {
     Bounds b = parse_box(box_text);
-    area.box = Bounds{to_local(b.lo, scene.origin), to_local(b.hi, scene.origin)};
+    area.box = Bounds{to_local(b.lo, scene.frame), to_local(b.hi, scene.frame)};
   }
   const auto in_scene = [&](const std::string& what) { return scene_path + ": " + what; };
   try {
@@ -96,8 +104,9 @@ int run_target(const std::vector<std::string>& args) {
     throw InputError(in_scene(e.what()));
   }
   IlluminanceCriteria world = criteria;
+  world.length_unit = scene.frame.unit;
   for (auto& g : world.grids)
-    for (auto& p : g.points) p = Vec3(to_world(p, scene.origin));
+    for (auto& p : g.points) p = Vec3(to_world(p, scene.frame));
   write_criteria(output, world);
   for (const auto& g : criteria.grids)
     std::fprintf(stderr, "hilight: %s: %zu points, spacing %.2f, Ē ≥ %g lx, U0 ≥ %g\n", g.name.c_str(), g.points.size(), g.spacing,

@@ -29,6 +29,7 @@ struct CriterionGrid {
 
 struct IlluminanceCriteria {
   std::string source;  ///< file, for messages
+  std::string length_unit = "m";  ///< of the points in the file: the scene file's (scene_origin.hpp)
   std::vector<CriterionGrid> grids;
   size_t size() const;  ///< points over every grid
   /// Every grid's points in grid order, with albedo 1: a renderer's radiance

@@ -16,6 +16,14 @@ struct Material {
   Rgb albedo{0.8f};
 };
 
+/// A file's coordinates against hilight's (scene_origin.hpp).
+struct SceneFrame {
+  glm::dvec3 origin{0.0};  ///< in the file's unit: the scene was moved home by this
+  double scale = 1.0;      ///< metres per file unit
+  std::string unit = "m";  ///< the file's length unit: mm, cm, m, in or ft
+  bool identity() const { return origin == glm::dvec3(0.0) && scale == 1.0; }
+};
+
 struct Scene {
   std::string source;                          ///< file it was loaded from (for messages)
   std::vector<Vec3> positions;                 ///< per vertex
@@ -28,10 +36,10 @@ struct Scene {
   size_t input_vertex_count = 0;               ///< before tessellation
   size_t input_triangle_count = 0;
   float max_edge = 0.f;                        ///< tessellation limit used
-  /// Where the scene sits: world = local + origin. A file far from the
-  /// origin is moved near it when loaded (scene_origin.hpp), so precision
-  /// does not depend on where it sits; positions cross at the file boundary.
-  glm::dvec3 origin{0.0};
+  /// Where the scene sits and its unit (scene_origin.hpp): positions in its
+  /// file are `world`, inside hilight `local` = (world − origin) · scale,
+  /// in metres near the origin. They cross at the file boundary.
+  SceneFrame frame;
 
   float diagonal() const { return bounds.diagonal(); }
   /// Where lights may stand: the bounds, except that an axis shorter than a

@@ -1,16 +1,21 @@
 #pragma once
-/// Where a scene sits (issue 15): floats near 10⁴ carry millimetres, so a
-/// scene far from the origin would be ray traced, tessellated and solved
-/// more coarsely than the same scene at home. load_scene moves it: its
-/// vertices become local = world − origin, with the origin the centre of
-/// its bounds snapped to a power of two at least its size (so the move is
-/// exact in float and a scene near the origin is not moved at all). Every
-/// position a command reads (lights, targets, criteria, cameras, placement
-/// boxes) goes to local coordinates, every position it writes back to world
-/// ones. docs/rendering-model.md, "Where a scene sits".
+/// Where a scene sits and its length unit (issues 15 and 19): floats near
+/// 10⁴ carry only millimetres, so a scene far from the origin would be ray
+/// traced, tessellated and solved more coarsely than the same scene at home;
+/// and lux is per square metre, so a model in millimetres must be computed
+/// in metres. load_scene gives every scene a SceneFrame: its vertices become
+/// local = (world − origin) · scale, with the origin the centre of its bounds
+/// rounded to a multiple of a power of two at least its size (exact in float;
+/// a scene near the origin is not moved) and scale the metres per file unit.
+/// Every position a command reads (lights, targets, criteria, cameras,
+/// placement boxes) goes to local coordinates, every position it writes back
+/// to world ones. docs/rendering-model.md, "Where a scene sits".
 #include "hilight/light_space.hpp"
 #include "hilight/lighting.hpp"
 #include "hilight/math.hpp"
+#include "hilight/scene.hpp"
+
+#include <string>
 
 namespace hilight {
 
@@ -18,14 +23,20 @@ namespace hilight {
 /// centre is within about its size of the origin).
 glm::dvec3 recentring_origin(const Bounds& bounds);
 
-inline Vec3 to_local(const Vec3& world, const glm::dvec3& origin) { return Vec3(glm::dvec3(world) - origin); }
-inline glm::dvec3 to_world(const Vec3& local, const glm::dvec3& origin) { return glm::dvec3(local) + origin; }
+/// Metres per unit: "mm", "cm", "m", "in", "ft"; InputError otherwise.
+double metres_per_unit(const std::string& unit);
+
+inline Vec3 to_local(const Vec3& world, const SceneFrame& f) { return Vec3((glm::dvec3(world) - f.origin) * f.scale); }
+inline glm::dvec3 to_world(const Vec3& local, const SceneFrame& f) { return glm::dvec3(local) / f.scale + f.origin; }
+/// A length (an offset, an edge) in the file's unit, in hilight's.
+inline float length_to_local(double length, const SceneFrame& f) { return float(length * f.scale); }
 
 /// Light positions moved in (read from a file) or out (to be written).
-Lighting lights_to_local(Lighting lights, const glm::dvec3& origin);
-Lighting lights_to_world(Lighting lights, const glm::dvec3& origin);
+Lighting lights_to_local(Lighting lights, const SceneFrame& frame);
+Lighting lights_to_world(Lighting lights, const SceneFrame& frame);
 
-/// Placement rules given in world coordinates (boxes, heights) in local ones.
-PlacementRules rules_to_local(PlacementRules rules, const glm::dvec3& origin);
+/// Placement rules given in the file's coordinates (boxes, heights, the
+/// ceiling offset) in hilight's.
+PlacementRules rules_to_local(PlacementRules rules, const SceneFrame& frame);
 
 } // namespace hilight

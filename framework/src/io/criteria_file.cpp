@@ -5,6 +5,7 @@
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/text_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -57,12 +58,15 @@ IlluminanceCriteria parse_criteria(const std::string& text, const std::string& s
   }
   if (!doc.is_object() || !doc.contains("illuminance_criteria"))
     throw InputError(source, "not an illuminance criteria file (hilight target workplane writes them)");
-  if (doc.contains("length_unit") && doc["length_unit"] != "m")
-    throw InputError(source, "length_unit must be \"m\"");
+  static const std::vector<std::string> kUnits = {"mm", "cm", "m", "in", "ft"};
+  const std::string unit = doc.contains("length_unit") && doc["length_unit"].is_string() ? doc["length_unit"].get<std::string>() : "m";
+  if (std::find(kUnits.begin(), kUnits.end(), unit) == kUnits.end())
+    throw InputError(source, "length_unit must be mm, cm, m, in or ft, not \"" + unit + "\"");
   if (!doc.contains("grids") || !doc["grids"].is_array() || doc["grids"].empty())
     throw InputError(source, "expected a non-empty \"grids\" array");
   IlluminanceCriteria c;
   c.source = source;
+  c.length_unit = unit;
   try {
     for (size_t g = 0; g < doc["grids"].size(); ++g) {
       const json& obj = doc["grids"][g];
@@ -115,7 +119,7 @@ void write_criteria(const std::filesystem::path& path, const IlluminanceCriteria
     grids.push_back({{"name", g.name}, {"kind", to_string(g.kind)}, {"lux", g.lux}, {"u0", g.u0}, {"spacing", g.spacing},
                      {"points", points}, {"normals", normals}});
   }
-  const std::string text = json{{"illuminance_criteria", 1}, {"length_unit", "m"}, {"grids", grids}}.dump(1) + "\n";
+  const std::string text = json{{"illuminance_criteria", 1}, {"length_unit", criteria.length_unit}, {"grids", grids}}.dump(1) + "\n";
   write_atomically(path, [&](const std::filesystem::path& temp) { std::ofstream(temp, std::ios::binary) << text; });
 }
 

@@ -191,13 +191,15 @@ void write_gltf(const fs::path& path, const GltfExport& in) {
     add_mesh(model, buffers, in, node);
     // A scene moved home when loaded (scene_origin.hpp): its vertices stay
     // local, the node puts them back where they were.
-    if (in.scene->origin != glm::dvec3(0.0)) node.translation = {in.scene->origin.x, in.scene->origin.y, in.scene->origin.z};
+    // glTF is in metres: the origin too.
+    const glm::dvec3 origin = in.scene->frame.origin * in.scene->frame.scale;
+    if (origin != glm::dvec3(0.0)) node.translation = {origin.x, origin.y, origin.z};
     model.nodes.push_back(node);
     scene.nodes.push_back(int(model.nodes.size() - 1));
   }
   for (size_t j = 0; j < in.lights.size(); ++j) {
     tinygltf::Node node;
-    add_light(model, in.lights[j], j, in.scene ? in.scene->origin : glm::dvec3(0.0), node);
+    add_light(model, in.lights[j], j, in.scene ? in.scene->frame.origin * in.scene->frame.scale : glm::dvec3(0.0), node);
     model.nodes.push_back(node);
     scene.nodes.push_back(int(model.nodes.size() - 1));
   }

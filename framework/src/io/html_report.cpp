@@ -3,6 +3,7 @@
 #include "hilight/io/html_report.hpp"
 
 #include "html_lux_maps.hpp"
+#include "hilight/scene_origin.hpp"
 
 #include "hilight/camera.hpp"
 #include "hilight/io/atomic_file.hpp"
@@ -205,7 +206,7 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
   for (size_t j = 0; j < page.lights.size(); ++j) {
     const Light& l = page.lights[j];
     const Rgb shown = photometric ? l.intensity * float(kLumensPerWatt) : l.intensity;
-    const glm::dvec3 at = glm::dvec3(l.position) + scene.origin;  // where it stands in the world (scene_origin.hpp)
+    const glm::dvec3 at = to_world(l.position, scene.frame);  // where it stands in the file's coordinates (scene_origin.hpp)
     html << "<tr><td>" << j << "</td><td>" << to_string(l.type) << "</td><td>" << at.x << "</td><td>" << at.y
          << "</td><td>" << at.z << "</td><td>" << shown.r << ", " << shown.g << ", " << shown.b << "</td><td>"
          << luminous_flux(l) << "</td></tr>\n";

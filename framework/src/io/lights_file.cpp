@@ -9,8 +9,8 @@ Lighting read_lights_file(const std::filesystem::path& path, Units units) {
   return is_gltf_path(path) ? read_gltf_lights(path) : lights_from_units(read_lights_json(path), units);
 }
 
-void write_lights_file(const std::filesystem::path& path, const Lighting& lights, Units units) {
-  write_lights_json(path, lights_to_units(lights, units));
+void write_lights_file(const std::filesystem::path& path, const Lighting& lights, Units units, const std::string& length_unit) {
+  write_lights_json(path, lights_to_units(lights, units), length_unit);
 }
 
 } // namespace hilight

@@ -138,7 +138,7 @@ Lighting read_lights_json(const std::filesystem::path& path) {
   return parse_lights_json(read_text_file(path, "lights"), path.string());
 }
 
-std::string lights_to_json(const Lighting& lights) {
+std::string lights_to_json(const Lighting& lights, const std::string& length_unit) {
   json arr = json::array();
   for (const auto& l : lights) {
     json o;
@@ -157,11 +157,11 @@ std::string lights_to_json(const Lighting& lights) {
     o["intensity"] = {l.intensity.r, l.intensity.g, l.intensity.b};
     arr.push_back(o);
   }
-  return json{{"lights", arr}}.dump(2) + "\n";
+  return json{{"length_unit", length_unit}, {"lights", arr}}.dump(2) + "\n";
 }
 
-void write_lights_json(const std::filesystem::path& path, const Lighting& lights) {
-  std::string text = lights_to_json(lights);
+void write_lights_json(const std::filesystem::path& path, const Lighting& lights, const std::string& length_unit) {
+  std::string text = lights_to_json(lights, length_unit);
   write_atomically(path, [&](const std::filesystem::path& temp) {
     std::ofstream out(temp, std::ios::binary);
     out << text;

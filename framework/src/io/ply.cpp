@@ -3,6 +3,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/scene.hpp"
+#include "hilight/scene_origin.hpp"
 
 #include <bit>
 #include <fstream>
@@ -16,7 +17,7 @@ void write_illuminated_ply(const std::filesystem::path& path, const Scene& scene
   write_atomically(path, [&](const std::filesystem::path& temp) {
     std::ofstream out(temp, std::ios::binary);
     // Far from the origin the world positions need doubles (scene_origin.hpp).
-    const bool far = scene.origin != glm::dvec3(0.0);
+    const bool far = !scene.frame.identity();
     out << "ply\nformat binary_little_endian 1.0\ncomment hilight illuminated scene: linear outgoing radiance\n"
         << "element vertex " << scene.positions.size() << "\n"
         << (far ? "property double x\nproperty double y\nproperty double z\n" : "property float x\nproperty float y\nproperty float z\n")
@@ -27,7 +28,7 @@ void write_illuminated_ply(const std::filesystem::path& path, const Scene& scene
       const Vec3 &p = scene.positions[i], &n = scene.normals[i];
       const Rgb& c = radiance[i];
       if (far) {
-        const glm::dvec3 world = glm::dvec3(p) + scene.origin;
+        const glm::dvec3 world = to_world(p, scene.frame);
         const double xyz[3] = {world.x, world.y, world.z};
         out.write(reinterpret_cast<const char*>(xyz), sizeof(xyz));
       } else {

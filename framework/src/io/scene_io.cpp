@@ -9,6 +9,7 @@
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -186,12 +187,30 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
       scene.triangle_material.push_back(material);
     }
   }
-  // Far from the origin: move it home (scene_origin.hpp), exactly.
+  // Its unit, then home from far away, exactly, in metres (scene_origin.hpp).
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const bool metric = ext == ".gltf" || ext == ".glb" || ext == ".ifc" || ext == ".ifczip";
+  scene.frame.unit = options.unit.empty() ? "m" : options.unit;
+  scene.frame.scale = metres_per_unit(scene.frame.unit);
+  if (metric && scene.frame.unit != "m")
+    throw InputError(file, std::string(ext == ".ifc" || ext == ".ifczip" ? "IFC files say their unit (assimp converts it to metres)"
+                                                                        : "glTF files are in metres (their specification)") +
+                               ": --unit " + scene.frame.unit + " does not apply");
   scene.update_bounds();
-  scene.origin = recentring_origin(scene.bounds);
-  if (scene.origin != glm::dvec3(0.0))
-    for (auto& p : scene.positions) p = to_local(p, scene.origin);
-  return finish_scene(std::move(scene), options);
+  scene.frame.origin = recentring_origin(scene.bounds);
+  if (!scene.frame.identity())
+    for (auto& p : scene.positions) p = to_local(p, scene.frame);
+  SceneLoadOptions in_metres = options;
+  in_metres.max_edge = options.max_edge > 0.f ? length_to_local(options.max_edge, scene.frame) : 0.f;
+  Scene out = finish_scene(std::move(scene), in_metres);
+  // A size no model has in its unit is said once: the unit is likely wrong.
+  const double metres = double(out.diagonal());  // hilight's are metres
+  if (metres < 0.01 || metres > 5000.0)
+    std::fprintf(stderr, "hilight: warning: %s is %.3g m across in %s%s: if that is not its size, give --unit (mm, cm, m, in, ft)\n",
+                 file.c_str(), metres, out.frame.unit == "m" ? "metres" : out.frame.unit.c_str(),
+                 options.unit.empty() && !metric ? " (the default: the file does not say)" : "");
+  return out;
 }
 
 } // namespace hilight

@@ -18,7 +18,7 @@ Target read_target(const std::filesystem::path& path, const Scene& scene, const 
   const std::string file = path.string();
   if (is_gltf_path(path)) {  // vertex colours (COLOR_0) as the target
     GltfColours colours = read_gltf_colours(path);
-    for (auto& p : colours.positions) p = to_local(p, scene.origin);
+    for (auto& p : colours.positions) p = to_local(p, scene.frame);
     return bind_target(file, colours.positions, colours.values, colours.weights, scene, rays, colours.normals);
   }
   PlyVertices ply = read_ply_vertices(path);
@@ -34,7 +34,7 @@ Target read_target(const std::filesystem::path& path, const Scene& scene, const 
   const auto &x = ply.properties["x"], &y = ply.properties["y"], &z = ply.properties["z"];
   const auto &r = ply.properties["red"], &g = ply.properties["green"], &b = ply.properties["blue"];
   for (size_t i = 0; i < ply.count; ++i) {
-    positions[i] = Vec3(glm::dvec3(x[i], y[i], z[i]) - scene.origin);  // world → local (scene_origin.hpp)
+    positions[i] = Vec3((glm::dvec3(x[i], y[i], z[i]) - scene.frame.origin) * scene.frame.scale);  // world → local (scene_origin.hpp)
     values[i] = srgb ? Rgb(float(srgb_decode(r[i] / 255.0)), float(srgb_decode(g[i] / 255.0)), float(srgb_decode(b[i] / 255.0)))
                      : Rgb(float(r[i]), float(g[i]), float(b[i]));
   }

@@ -140,7 +140,7 @@ void Document::save_target(const std::filesystem::path& path) const {
     write_gltf(path, gltf);
     return;
   }
-  write_target_ply(path, points, m_scene->origin);
+  write_target_ply(path, points, m_scene->frame);
 }
 
 void Document::load_target(const std::filesystem::path& path) {
@@ -184,11 +184,11 @@ void Document::save_lights(const std::filesystem::path& path) const {
     write_gltf(path, gltf);
     return;
   }
-  write_lights_json(path, lights_to_world(m_state.lights, m_scene->origin));  // the world's coordinates in files
+  write_lights_json(path, lights_to_world(m_state.lights, m_scene->frame), m_scene->frame.unit);  // the world's coordinates in files
 }
 
 void Document::load_lights(const std::filesystem::path& path) {
-  Lighting lights = lights_to_local(read_lights_file(path), m_scene->origin);
+  Lighting lights = lights_to_local(read_lights_file(path), m_scene->frame);
   set_lights(lights, "load lights " + path.filename().string());
 }
 

@@ -3,6 +3,7 @@
 /// `float x y z nx ny nz red green blue weight` (linear colours), no faces —
 /// exactly what `hilight solve --target` reads (docs/solve.md).
 #include "hilight/math.hpp"
+#include "hilight/scene.hpp"
 
 #include <filesystem>
 #include <vector>
@@ -16,7 +17,8 @@ struct TargetPoints {
 };
 
 /// Written through write_atomically: the file appears whole or not at all.
-/// Positions are local to the scene; `origin` puts them back in the world (doubles when it is not 0).
-void write_target_ply(const std::filesystem::path& path, const TargetPoints& points, const glm::dvec3& origin = glm::dvec3(0.0));
+/// Positions are local to the scene; `frame` puts them back in the file's
+/// coordinates (doubles when it moved or scaled them: scene_origin.hpp).
+void write_target_ply(const std::filesystem::path& path, const TargetPoints& points, const SceneFrame& frame = {});
 
 } // namespace hilight::painter

@@ -13,6 +13,7 @@ namespace hilight {
 Lighting read_lights_file(const std::filesystem::path& path, Units units = Units::Radiometric);
 
 /// Writes `lights` (hilight's units) as a lights JSON in `units`.
-void write_lights_file(const std::filesystem::path& path, const Lighting& lights, Units units = Units::Radiometric);
+void write_lights_file(const std::filesystem::path& path, const Lighting& lights, Units units = Units::Radiometric,
+                       const std::string& length_unit = "m");
 
 } // namespace hilight

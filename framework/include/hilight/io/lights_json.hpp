@@ -11,7 +11,8 @@ namespace hilight {
 /// Reads and validates; InputError names the file, the light index and the problem.
 Lighting read_lights_json(const std::filesystem::path& path);
 Lighting parse_lights_json(const std::string& text, const std::string& source_name);
-std::string lights_to_json(const Lighting& lights);
-void write_lights_json(const std::filesystem::path& path, const Lighting& lights);
+/// `length_unit`: the unit positions are in (the scene file's), stated in the file.
+std::string lights_to_json(const Lighting& lights, const std::string& length_unit = "m");
+void write_lights_json(const std::filesystem::path& path, const Lighting& lights, const std::string& length_unit = "m");
 
 } // namespace hilight

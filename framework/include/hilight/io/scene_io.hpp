@@ -13,6 +13,12 @@ struct SceneLoadOptions {
   /// The most vertices the tessellation may make (`--max-vertices`): a scene
   /// that would make more fails before committing the memory, naming it.
   size_t max_vertices = 10'000'000;
+  /// The file's length unit (`--unit mm|cm|m|in|ft`) for formats that do not
+  /// say (OBJ, PLY, STL, OFF, ...); empty: metres. glTF is in metres by its
+  /// specification and assimp brings IFC to metres from its unit assignment:
+  /// another unit for them is an InputError. The scene is computed in
+  /// metres (scene_origin.hpp); `max_edge` is in the file's unit.
+  std::string unit;
 };
 
 constexpr float kDefaultEdgeFraction = 1.f / 40.f;

@@ -1,0 +1,121 @@
+// Known units (issue 19 §2): a scene file has a length unit (--unit for
+// formats that do not say; glTF metres; IFC as its unit assignment says, which
+// assimp applies); hilight computes in metres, so the same room in
+// millimetres renders the same light, `info` says the unit and the size in
+// metres, and an implausible size is said once.
+#include "hilight/io/lights_json.hpp"
+#include "hilight/real_model_scenes.hpp"
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+using namespace hilight;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kRoom = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+const std::string kLights = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room-4lights.json";
+
+/// The bundled room and its lights in millimetres (every coordinate × 1000).
+void write_room_in_mm(const fs::path& dir) {
+  std::ifstream in(kRoom);
+  std::ofstream out(dir / "room_mm.obj");
+  out << std::setprecision(17);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("v ", 0) == 0) {
+      std::istringstream v(line.substr(2));
+      double x, y, z;
+      v >> x >> y >> z;
+      out << "v " << x * 1000 << ' ' << y * 1000 << ' ' << z * 1000 << "\n";
+    } else {
+      out << line << "\n";
+    }
+  }
+  fs::copy_file(std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.mtl", dir / "room.mtl", fs::copy_options::overwrite_existing);
+  nlohmann::json lights = nlohmann::json::parse(test::read_file(kLights));
+  for (auto& l : lights["lights"])
+    for (auto& c : l["position"]) c = c.get<double>() * 1000;
+  std::ofstream(dir / "lights_mm.json") << lights.dump();
+}
+
+} // namespace
+
+TEST_CASE("info says a scene's unit and its size in metres, and warns of an implausible one", "[units][cli]") {
+  const auto dir = test::output_dir("units_info");
+  write_room_in_mm(dir);
+  const auto m = test::run_hilight({"info", kRoom});
+  CHECK(m.exit_code == 0);
+  CHECK(m.out.find("unit       m (1 m); 8.367 m across") != std::string::npos);
+  CHECK(m.err.find("warning") == std::string::npos);
+  // The millimetre file read as metres: an 8 km room, said once, naming --unit.
+  const auto wrong = test::run_hilight({"info", (dir / "room_mm.obj").string()});
+  CHECK(wrong.exit_code == 0);
+  CHECK(test::line_count(wrong.err) == 1);
+  CHECK(wrong.err.find("--unit") != std::string::npos);
+  const auto mm = test::run_hilight({"info", (dir / "room_mm.obj").string(), "--unit", "mm"});
+  CHECK(mm.exit_code == 0);
+  CHECK(mm.out.find("unit       mm (0.001 m); 8.367 m across") != std::string::npos);
+  CHECK(mm.err.find("warning") == std::string::npos);
+  // The metre file said to be in millimetres: 8 mm across, said.
+  const auto tiny = test::run_hilight({"info", kRoom, "--unit", "mm"});
+  CHECK(tiny.err.find("--unit") != std::string::npos);
+  CHECK(tiny.out.find("0.008367 m across") != std::string::npos);
+}
+
+TEST_CASE("the same room in millimetres renders the same light and solves to the same lights, in millimetres", "[units][cli]") {
+  const auto dir = test::output_dir("units_render");
+  write_room_in_mm(dir);
+  REQUIRE(test::run_hilight({"render", kRoom, "--lights", kLights, "-o", (dir / "m.ply").string()}).exit_code == 0);
+  const auto r = test::run_hilight({"render", (dir / "room_mm.obj").string(), "--unit", "mm", "--lights", (dir / "lights_mm.json").string(),
+                                    "-o", (dir / "mm.ply").string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto a = test::ply_colours(dir / "m.ply"), b = test::ply_colours(dir / "mm.ply");
+  REQUIRE(a.size() == b.size());
+  CHECK(test::dbar(b, a) <= 1e-6);
+  // Solved from its own render: the lights come back in millimetres, and the file says so.
+  const auto s = test::run_hilight({"solve", (dir / "room_mm.obj").string(), "--unit", "mm", "--target", (dir / "mm.ply").string(), "-o",
+                                    (dir / "found.json").string(), "--no-cache"});
+  INFO(s.err);
+  REQUIRE(s.exit_code == 0);
+  const auto found = nlohmann::json::parse(test::read_file(dir / "found.json"));
+  CHECK(found["length_unit"] == "mm");
+  const Lighting lights = read_lights_json(dir / "found.json"), truth = read_lights_json(dir / "lights_mm.json");
+  REQUIRE(lights.size() == truth.size());
+  for (const auto& t : truth) {
+    float nearest = 1e30f;
+    for (const auto& l : lights) nearest = std::min(nearest, glm::length(l.position - t.position));
+    CHECK(nearest < 50.f);  // 5 cm, in millimetres
+  }
+}
+
+TEST_CASE("IFC says its unit (assimp applies it); glTF and IFC refuse another --unit", "[units][cli][real]") {
+  const fs::path house = builders::testmodels_dir() / "IFC" / "AC14-FZK-Haus.ifc";
+  if (!fs::exists(house)) {
+    std::cout << "SKIPPED: assimp-testmodels is not installed" << std::endl;
+    return;
+  }
+  // The same coordinates with the length unit declared as millimetres: a thousandth of the size, in metres.
+  const auto dir = test::output_dir("units_ifc");
+  std::string text = test::read_file(house);
+  const std::string metre = "IFCSIUNIT(*,.LENGTHUNIT.,$,.METRE.)";
+  REQUIRE(text.find(metre) != std::string::npos);
+  text.replace(text.find(metre), metre.size(), "IFCSIUNIT(*,.LENGTHUNIT.,.MILLI.,.METRE.)");
+  test::write_text(dir / "house_mm.ifc", text);
+  const auto m = test::run_hilight({"info", house.string(), "--json"});
+  const auto mm = test::run_hilight({"info", (dir / "house_mm.ifc").string(), "--json"});
+  REQUIRE(m.exit_code == 0);
+  REQUIRE(mm.exit_code == 0);
+  const double size_m = nlohmann::json::parse(m.out)["size_m"], size_mm = nlohmann::json::parse(mm.out)["size_m"];
+  CHECK(size_m == Approx(25.17).epsilon(0.01));
+  CHECK(size_mm == Approx(size_m / 1000).epsilon(1e-4));
+  const auto refused = test::run_hilight({"info", house.string(), "--unit", "mm"});
+  CHECK(refused.exit_code == 2);
+  CHECK(refused.err.find("does not apply") != std::string::npos);
+}
