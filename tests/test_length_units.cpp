@@ -95,7 +95,7 @@ TEST_CASE("the same room in millimetres renders the same light and solves to the
   }
 }
 
-TEST_CASE("IFC says its unit (assimp applies it); glTF and IFC refuse another --unit", "[units][cli][real]") {
+TEST_CASE("IFC says its unit (assimp applies it), and IFC refuses another --unit", "[units][cli][real]") {
   const fs::path house = builders::testmodels_dir() / "IFC" / "AC14-FZK-Haus.ifc";
   if (!fs::exists(house)) {
     std::cout << "SKIPPED: assimp-testmodels is not installed" << std::endl;
