@@ -8,7 +8,7 @@ namespace {
 const std::string kRoom = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
 }
 
-TEST_CASE("--max-vertices: a tessellation beyond it fails early, naming the limit", "[cli][limits][bad-input]") {
+TEST_CASE("a tessellation beyond --max-vertices fails early, naming the limit", "[cli][limits][bad-input]") {
   const auto fine = test::run_hilight({"info", kRoom, "--max-vertices", "20000"});
   INFO(fine.err);
   CHECK(fine.exit_code == 0);  // the default tessellation: 11,614 vertices
