@@ -50,4 +50,16 @@ std::unique_ptr<Renderer> RendererOptions::create(const Registry& registry, std:
 }
 
 
+void add_scene_options(CLI::App& app, SceneLoadOptions& options) {
+  app.add_option("--max-edge", options.max_edge, "longest edge after tessellation, in the file's unit (default: diagonal/40)")
+      ->check(FiniteNonNegative);
+  app.add_option("--max-vertices", options.max_vertices, "the most vertices the tessellation may make")
+      ->check(CLI::Range(size_t(1), size_t(2000000000)))
+      ->capture_default_str();
+  app.add_option("--unit", options.unit,
+                 "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); "
+                 "positions in files and options are in it")
+      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
+}
+
 } // namespace hilight::cli

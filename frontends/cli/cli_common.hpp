@@ -32,6 +32,9 @@ struct RendererOptions {
   std::unique_ptr<Renderer> create(const Registry& registry, std::shared_ptr<const Scene> scene) const;
 };
 
+/// --max-edge, --max-vertices and --unit: how a command loads its scene.
+void add_scene_options(CLI::App& app, SceneLoadOptions& options);
+
 /// CLI11 validator: a finite number ≥ 0 (NonNegativeNumber lets NaN through).
 extern const CLI::Validator FiniteNonNegative;
 

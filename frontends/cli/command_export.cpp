@@ -20,7 +20,6 @@ namespace hilight::cli {
 int run_export(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Write the scene and its lights for another tool: POV-Ray 3.7 (.pov, following hilight's rendering model) or glTF 2.0 (.gltf/.glb)", "export");
   std::string scene_path, lights_path, output, camera_text;
-  float max_edge = 0.f;
   int bounces = 1, width = 960, height = 720;
   bool vertex_colours = false;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
@@ -30,12 +29,8 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--camera", camera_text, "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (.pov; default frames the scene)");
   app.add_option("--width", width, "image width the camera is set up for (.pov)")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height the camera is set up for (.pov)")->check(CLI::Range(1, 16384))->capture_default_str();
-  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
-  size_t max_vertices = SceneLoadOptions{}.max_vertices;
-  app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
-  std::string length_unit;
-  app.add_option("--unit", length_unit, "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); positions in files and options are in it")
-      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
+  SceneLoadOptions scene_options;
+  add_scene_options(app, scene_options);
   std::string units_name = "radiometric";
   app.add_option("--units", units_name, "a lights JSON's intensities: radiometric (W/sr) or photometric (candela)")
       ->check(CLI::IsMember({"radiometric", "photometric"}))
@@ -51,7 +46,7 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   Lighting lights = read_lights_file(lights_path, parse_units(units_name));
   std::optional<Camera> camera;
   if (!camera_text.empty()) camera = Camera::parse(camera_text);
-  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices, length_unit}));
+  auto scene = std::make_shared<const Scene>(load_scene(scene_path, scene_options));
   // In the scene's coordinates (scene_origin.hpp): the glTF puts them back in the world; a
   // .pov file stays in the scene's own, camera and lights with it.
   lights = lights_to_local(std::move(lights), scene->frame);

@@ -13,19 +13,14 @@ namespace hilight::cli {
 int run_info(const std::vector<std::string>& args) {
   CLI::App app("Print a scene's triangles, vertices (before/after tessellation), bounds and diagonal", "info");
   std::string scene_path;
-  float max_edge = 0.f;
   bool as_json = false;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
-  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
-  size_t max_vertices = SceneLoadOptions{}.max_vertices;
-  app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
-  std::string length_unit;
-  app.add_option("--unit", length_unit, "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); positions in files and options are in it")
-      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
+  SceneLoadOptions scene_options;
+  add_scene_options(app, scene_options);
   app.add_flag("--json", as_json, "print JSON instead of text");
   if (auto code = parse_arguments(app, args)) return *code;
 
-  Scene scene = load_scene(scene_path, {max_edge, max_vertices, length_unit});
+  Scene scene = load_scene(scene_path, scene_options);
   // Positions said in the world's coordinates (the scene may have been moved home: scene_origin.hpp).
   const auto world = [&](const Vec3& v) { return to_world(v, scene.frame); };
   const Bounds& b = scene.bounds;

@@ -44,7 +44,7 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Illuminate a scene with lights: per-vertex PLY, and/or a PNG/EXR image", "render");
   std::string scene_path, lights_path, camera_text;
   std::vector<std::string> outputs;
-  float max_edge = 0.f, exposure = 0.f;
+  float exposure = 0.f;
   int width = 960, height = 720;
   // Off by default: a refined mesh depends on the lights, so two renders of
   // one scene would no longer add up vertex by vertex (superposition).
@@ -53,12 +53,8 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
   app.add_option("--lights", lights_path, "lights: hilight JSON, or a glTF's KHR_lights_punctual (.gltf/.glb); default: a glTF scene's own lights");
   app.add_option("-o,--output", outputs, "output: OUT.ply, OUT.png, OUT.exr, or OUT for .ply + .png (repeatable)")->required();
-  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
-  size_t max_vertices = SceneLoadOptions{}.max_vertices;
-  app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
-  std::string length_unit;
-  app.add_option("--unit", length_unit, "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); positions in files and options are in it")
-      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
+  SceneLoadOptions scene_options;
+  add_scene_options(app, scene_options);
   app.add_option("--camera", camera_text, "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (default frames the scene)");
   app.add_option("--width", width, "image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
@@ -97,7 +93,7 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   registry.renderer_unavailable_reason(ropts.name);  // unknown renderer fails here, before loading
 
   auto start = std::chrono::steady_clock::now();
-  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices, length_unit}));
+  auto scene = std::make_shared<const Scene>(load_scene(scene_path, scene_options));
   lights = lights_to_local(std::move(lights), scene->frame);  // where the scene was moved (scene_origin.hpp)
   if (camera) {
     camera->eye = to_local(camera->eye, scene->frame);

@@ -71,7 +71,6 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   std::string scene_path, target_path, output, report_path, initial_path, mode = "solve", hints_path, cache_dir;
   std::vector<std::string> place_rules;
   SolveSpec spec;
-  float max_edge = 0.f;
   bool no_cache = false, quiet = false;
   double max_dbar = -1;
   unsigned long long seed = 1;
@@ -124,12 +123,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       ->capture_default_str();
   app.add_option("--spot-hints", hints_path, "lights JSON of spotlights wanted (position, direction, cutoff; intensity ignored)");
   app.add_option("--seed", seed, "seed of sampling and of the renderer's sample streams")->capture_default_str();
-  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
-  size_t max_vertices = SceneLoadOptions{}.max_vertices;
-  app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
-  std::string length_unit;
-  app.add_option("--unit", length_unit, "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); positions in files and options are in it")
-      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
+  SceneLoadOptions scene_options;
+  add_scene_options(app, scene_options);
   app.add_option("--evaluation-points", s.evaluation_points, "D̄ is measured on every target point up to this many, else on this many evenly spaced ones (an estimate; 0: every point)")
       ->capture_default_str();
   app.add_flag("--no-residual-samples", [&](int64_t) { s.residual_samples = false; },
@@ -193,9 +188,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     criteria.report_path = report_path;
     criteria.html_path = html_path;
     criteria.units_name = units_name;
-    criteria.max_edge = max_edge;
-    criteria.max_vertices = max_vertices;
-    criteria.length_unit = length_unit;
+    criteria.scene_options = scene_options;
     criteria.quiet = quiet;
     criteria.luminaire = s.luminaire;
     criteria.placement = s.placement;
@@ -221,7 +214,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
 
   const bool progress = !quiet && ::isatty(2);
   set_thread_limit(ropts.threads);
-  auto scene = std::make_shared<const Scene>(load_scene(scene_path, {max_edge, max_vertices, length_unit}));
+  auto scene = std::make_shared<const Scene>(load_scene(scene_path, scene_options));
   auto rays = std::make_shared<const RayScene>(*scene);
   // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).
   initial = lights_to_local(std::move(initial), scene->frame);

@@ -56,7 +56,7 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
           {"count_walk", walk},
           {"placement", a.placement.describe()},
           {"seconds", r.seconds},
-          {"length_unit", a.length_unit.empty() ? "m" : a.length_unit},
+          {"length_unit", a.scene_options.unit.empty() ? "m" : a.scene_options.unit},
           {"units", a.units_name},
           {"renderer", a.renderer.name}};
 }
@@ -67,7 +67,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   if (!a.luminaire) throw InputError(a.target_path + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
   IlluminanceCriteria criteria = read_criteria(a.target_path);
   set_thread_limit(a.renderer.threads);
-  auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, {a.max_edge, a.max_vertices, a.length_unit}));
+  auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, a.scene_options));
   auto rays = std::make_shared<const RayScene>(*scene);
   const auto reference = a.renderer.create(registry, scene);
   if (criteria.length_unit != scene->frame.unit)

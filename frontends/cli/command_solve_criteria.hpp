@@ -12,9 +12,7 @@ namespace hilight::cli {
 
 struct CriteriaSolve {
   std::string scene_path, target_path, output, report_path, html_path, units_name;
-  float max_edge = 0.f;
-  size_t max_vertices = 0;
-  std::string length_unit;
+  SceneLoadOptions scene_options;
   bool quiet = false;
   std::optional<Light> luminaire;
   PlacementRules placement;

@@ -41,7 +41,7 @@ Bounds parse_box(const std::string& text) {
 int run_target(const std::vector<std::string>& args) {
   CLI::App app("Make illuminance criteria to solve for (hilight solve SCENE --target C.json --luminaire L.ies)", "target");
   std::string kind, scene_path, output, box_text;
-  float height = 0.75f, border = 0.5f, max_edge = 0.f;
+  float height = 0.75f, border = 0.5f;
   double lux = 500, u0 = 0.6, walls = 0, ceiling = 0, surface_u0 = 0.1, spacing = 0;
   int region = -1;
   bool append = false;
@@ -64,12 +64,8 @@ int run_target(const std::vector<std::string>& args) {
       ->check(CLI::Range(1e-4, 1e6));
   app.add_option("--border", border, "no work-plane point within this of a wall (EN 12464-1: 0.5)")->check(FiniteNonNegative)->capture_default_str();
   app.add_flag("--append", append, "add these grids to the criteria already in the output file");
-  app.add_option("--max-edge", max_edge, "longest edge after tessellation (default: diagonal/40)")->check(FiniteNonNegative);
-  size_t max_vertices = SceneLoadOptions{}.max_vertices;
-  app.add_option("--max-vertices", max_vertices, "the most vertices the tessellation may make")->check(CLI::Range(size_t(1), size_t(2000000000)))->capture_default_str();
-  std::string length_unit;
-  app.add_option("--unit", length_unit, "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); positions in files and options are in it")
-      ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
+  SceneLoadOptions scene_options;
+  add_scene_options(app, scene_options);
   if (auto code = parse_arguments(app, args)) return *code;
   if (region >= 0 && !box_text.empty()) throw InputError("--region and --box: give one area");
   check_writable(output);
@@ -80,7 +76,7 @@ int run_target(const std::vector<std::string>& args) {
       throw InputError(output, "its points are in " + criteria.length_unit + ", the scene in " + unit + " (--unit)");
   };
 
-  const Scene scene = load_scene(scene_path, {max_edge, max_vertices, length_unit});
+  const Scene scene = load_scene(scene_path, scene_options);
   same_unit(scene.frame.unit);
   const RayScene rays(scene);
   const Regions regions(rays);
