@@ -3,7 +3,8 @@
 # HILIGHT_SANITIZE=ON (cmake/HilightSanitizers.cmake) into build-asan/ and
 # runs the test cases listed in tools/sanitize-subset.txt, which reach every
 # reader of files (lights JSON, IES/EULUMDAT, PLY targets, glTF, scenes
-# through assimp, light cache files, plugin modules) and one whole solve.
+# through assimp, illuminance criteria, light cache files, plugin modules)
+# and one whole solve.
 #   bash tools/sanitize.sh          the subset (the CI step of setup.sh test)
 #   bash tools/sanitize.sh --all    every test case but ism-vulkan's, the painter's
 #                                   included (about an hour on 2 cores; not in CI)
