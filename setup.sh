@@ -65,6 +65,9 @@ run_tests() {
   (cd "$BUILD_DIR" && "${display[@]}" ctest --output-on-failure -j "$(nproc)")
   # Each file reader fuzzed for a few seconds; any crash, leak or hang fails.
   bash tools/fuzz.sh 8
+  # A subset of the suite under AddressSanitizer + UBSan: every file reader and
+  # one whole solve (tools/sanitize-subset.txt); any report fails.
+  SANITIZE_BUILD_DIR="$BUILD_DIR-asan" bash tools/sanitize.sh
   # The other CMake generator: Unix Makefiles, Debug, builds the generated sources (the shaders).
   cmake -S . -B "$BUILD_DIR-make" -G "Unix Makefiles" -DCMAKE_BUILD_TYPE=Debug >/dev/null
   cmake --build "$BUILD_DIR-make" --target hilight-ism-shaders -j "$(nproc)" >/dev/null
