@@ -7,7 +7,7 @@
 # and one whole solve.
 #   bash tools/sanitize.sh          the subset (the CI step of setup.sh test)
 #   bash tools/sanitize.sh --all    every test case but ism-vulkan's, the painter's
-#                                   included (about an hour on 2 cores; not in CI)
+#                                   included (well over an hour on 2 cores; not in CI)
 # SANITIZE_BUILD_DIR (default build-asan) and JOBS (default nproc) may be set.
 # Prints one JSON line: test cases, build and run seconds, sanitizer reports.
 #
@@ -20,11 +20,12 @@
 # each started `hilight` leaves under $OUT/tests/output/. Leaks inside
 # third-party libraries only may be suppressed in tools/lsan-suppressions.txt.
 #
-# Built so that CI can afford it: -O0 -g1 (half the compile time of -O1;
-# the subset's run costs a minute or two more), only the test files that hold
-# the subset's cases (HILIGHT_TEST_FILES), no painter (its session scripts
-# are fuzzed under the same sanitizers by tools/fuzz.sh) and no ism-vulkan
-# (most of it shaders, which no sanitizer sees).
+# Built so that CI can afford it (5.3 min on 2 cores, docs/benchmarks.md):
+# -O0 -g1 (half the compile time of -O1; the subset runs 69 s instead of
+# 31 s), only the test files that hold the subset's cases
+# (HILIGHT_TEST_FILES), no painter (its session scripts are fuzzed under the
+# same sanitizers by tools/fuzz.sh) and no ism-vulkan (most of it shaders,
+# which no sanitizer sees).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 OUT=${SANITIZE_BUILD_DIR:-build-asan}
