@@ -11,7 +11,12 @@ cd "$(dirname "$0")/.."
 SECONDS_EACH=${1:-8}
 OUT=${FUZZ_BUILD_DIR:-build-fuzz}
 cmake -S fuzz -B "$OUT" -G Ninja -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$OUT" -j "$(nproc)" >/dev/null
+mkdir -p "$OUT"
+if ! cmake --build "$OUT" -j "$(nproc)" >"$OUT/fuzz-build.log" 2>&1; then
+  grep -E -A3 'error|undefined reference' "$OUT/fuzz-build.log" | head -40 >&2
+  echo "fuzz: the build failed (log: $OUT/fuzz-build.log)" >&2
+  exit 1
+fi
 failed=0
 for target in lights_json photometry session ply gltf scene; do
   corpus="$OUT/corpus/$target" findings="$OUT/findings/$target"
