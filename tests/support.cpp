@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -34,6 +35,16 @@ double dbar(const std::vector<hilight::Rgb>& a, const std::vector<hilight::Rgb>&
 }
 
 bool skip_without_renderer(const std::string& name) {
+  // Not built in this configuration (e.g. ism-vulkan without libvulkan-dev):
+  // a skip. A module that was built but failed to load is a failure (the
+  // registry's error names why).
+  const std::string file = "hilight-renderer-" + name + ".so";
+  const bool built = std::any_of(registry().modules().begin(), registry().modules().end(),
+                                 [&](const auto& m) { return m->path.filename() == file; });
+  if (!built) {
+    std::cout << "SKIPPED: the " << name << " renderer was not built in this configuration" << std::endl;
+    return true;
+  }
   std::string why = registry().renderer_unavailable_reason(name);
   if (!why.empty()) std::cout << "SKIPPED: " << name << " renderer unavailable: " << why << std::endl;
   return !why.empty();
@@ -49,7 +60,11 @@ bool skip_without_display() {
 hilight::Registry& registry() {
   static hilight::Registry reg = [] {
     hilight::Registry r;
-    r.load_directory(HILIGHT_PLUGIN_DIR);
+    r.load_directory(HILIGHT_PLUGIN_DIR, "installed");
+    // Plugins built outside the tree (tests/sdk/test_example_plugin.sh) join
+    // through HILIGHT_PLUGIN_PATH, as they join the launcher.
+    for (const auto& dir : hilight::Registry::default_search_dirs(HILIGHT_BINARY))
+      if (dir.origin == "HILIGHT_PLUGIN_PATH") r.load_directory(dir.path, dir.origin);
     return r;
   }();
   return reg;

@@ -1,5 +1,6 @@
 // Good paths of the `hilight` launcher: info, render (PLY, PNG, EXR), plugins,
 // and the refusal of modules built for another ABI / build key.
+#include "hilight/version.hpp"
 #include "support.hpp"
 
 #include <algorithm>
@@ -311,7 +312,7 @@ TEST_CASE("plugins: the embree renderer and the cli frontend are ok", "[cli][ren
   REQUIRE(cli);
   CHECK((*embree)[0] == "renderer");
   CHECK((*cli)[0] == "frontend");
-  CHECK((*embree)[2] == "0.1.0");
+  CHECK((*embree)[2] == HILIGHT_VERSION);
   CHECK((*embree)[3].rfind("ok", 0) == 0);
   CHECK((*cli)[3].rfind("ok", 0) == 0);
 }

@@ -9,6 +9,7 @@
 #include "hilight/light_cache.hpp"
 #include "hilight/light_cache_nodes.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 #include "cell_refiner.hpp"
 
@@ -112,6 +113,6 @@ void register_adaptive(PluginRegistrar& registrar) {
 } // namespace
 } // namespace hilight
 
-HILIGHT_PLUGIN("cache", HILIGHT_PLUGIN_NAME, "0.1.0",
+HILIGHT_PLUGIN("cache", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION,
                "light cache whose cells are split where the blend is measured wrong (cells=8 depth=1 tolerance=0.05 growth=1.5)",
                hilight::register_adaptive)

@@ -6,6 +6,7 @@
 #include "hilight/light_cache.hpp"
 #include "hilight/light_cache_nodes.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 
 #include <algorithm>
@@ -157,5 +158,5 @@ void register_grid(PluginRegistrar& registrar) {
 } // namespace
 } // namespace hilight
 
-HILIGHT_PLUGIN("cache", HILIGHT_PLUGIN_NAME, "0.1.0", "light cache on a regular grid of cells (cells=8 along the longest axis)",
+HILIGHT_PLUGIN("cache", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "light cache on a regular grid of cells (cells=8 along the longest axis)",
                hilight::register_grid)

@@ -1,7 +1,9 @@
 // The `hilight` launcher: loads every plugin module, then hands the command to
 // the frontend module that owns it. It knows no command itself.
 #include "hilight/error.hpp"
+#include "hilight/plugin.hpp"
 #include "hilight/registry.hpp"
+#include "hilight/version.hpp"
 
 #include <cstdio>
 #include <exception>
@@ -21,7 +23,10 @@ void print_usage(hilight::Registry& registry) {
 
 int main(int argc, char** argv) {
   hilight::Registry registry;
-  for (const auto& dir : hilight::Registry::default_search_dirs("/proc/self/exe")) registry.load_directory(dir);
+  for (const auto& dir : hilight::Registry::default_search_dirs("/proc/self/exe")) registry.load_directory(dir.path, dir.origin);
+  // Never a silent pick between two plugins of one kind and name.
+  for (const auto* m : registry.shadowed())
+    std::cerr << "hilight: warning: " << m->path.string() << " is not loaded: " << m->problem << "\n";
 
   std::string command = argc > 1 ? argv[1] : "";
   if (command.empty() || command == "--help" || command == "-h" || command == "help") {
@@ -29,7 +34,8 @@ int main(int argc, char** argv) {
     return command.empty() ? hilight::kExitInputError : 0;
   }
   if (command == "--version") {
-    std::cout << "hilight 0.1.0\n";
+    // The plugin ABI and build key too: what a plugin built elsewhere must match.
+    std::cout << "hilight " HILIGHT_VERSION " (plugin ABI " << HILIGHT_ABI_VERSION << ", build key " HILIGHT_BUILD_KEY ")\n";
     return 0;
   }
   try {

@@ -13,6 +13,11 @@ namespace hilight {
 
 namespace fs = std::filesystem;
 
+namespace {
+/// How a module that another of the same kind and name shadows is recorded.
+constexpr const char* kShadowedBy = "shadowed by ";
+} // namespace
+
 void PluginRegistrar::renderer(RendererFactory create, ProbeFunction probe, ProbeFunction detail) {
   if (m_record.kind != "renderer") throw std::logic_error("module " + m_record.name + " registers a renderer but says it is a " + m_record.kind);
   m_record.create_renderer = std::move(create);
@@ -45,21 +50,30 @@ void PluginRegistrar::cache(CacheFactory create) {
   m_record.create_cache = std::move(create);
 }
 
-std::vector<fs::path> Registry::default_search_dirs(const fs::path& executable) {
-  std::vector<fs::path> dirs;
-  std::error_code ec;
-  fs::path exe = fs::weakly_canonical(executable, ec);
-  if (!ec) dirs.push_back(exe.parent_path().parent_path() / "lib" / "hilight");
+fs::path Registry::user_plugin_dir() {
+  const char* data = std::getenv("XDG_DATA_HOME");
+  if (data && *data == '/') return fs::path(data) / "hilight" / "plugins";
+  const char* home = std::getenv("HOME");
+  if (home && *home) return fs::path(home) / ".local" / "share" / "hilight" / "plugins";
+  return {};
+}
+
+std::vector<PluginDir> Registry::default_search_dirs(const fs::path& executable) {
+  std::vector<PluginDir> dirs;
   if (const char* env = std::getenv("HILIGHT_PLUGIN_PATH")) {
     std::stringstream ss(env);
     std::string item;
     while (std::getline(ss, item, ':'))
-      if (!item.empty()) dirs.emplace_back(item);
+      if (!item.empty()) dirs.push_back({item, "HILIGHT_PLUGIN_PATH"});
   }
+  if (fs::path user = user_plugin_dir(); !user.empty()) dirs.push_back({user, "user folder"});
+  std::error_code ec;
+  fs::path exe = fs::weakly_canonical(executable, ec);
+  if (!ec) dirs.push_back({exe.parent_path().parent_path() / "lib" / "hilight", "installed"});
   return dirs;
 }
 
-void Registry::load_directory(const fs::path& dir) {
+void Registry::load_directory(const fs::path& dir, const std::string& origin) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return;
   std::vector<fs::path> files;
@@ -68,12 +82,20 @@ void Registry::load_directory(const fs::path& dir) {
     if (name.rfind("hilight-", 0) == 0 && entry.path().extension() == ".so") files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
-  for (const auto& f : files) load_module(f);
+  for (const auto& f : files) load_module(f, origin);
 }
 
-const ModuleRecord& Registry::load_module(const fs::path& file) {
+std::vector<const ModuleRecord*> Registry::shadowed() const {
+  std::vector<const ModuleRecord*> out;
+  for (const auto& m : m_modules)
+    if (!m->loaded && m->problem.rfind(kShadowedBy, 0) == 0) out.push_back(m.get());
+  return out;
+}
+
+const ModuleRecord& Registry::load_module(const fs::path& file, const std::string& origin) {
   auto record = std::make_unique<ModuleRecord>();
   record->path = file;
+  record->origin = origin;
   record->name = file.stem().string();
   auto fail = [&](const std::string& why) -> const ModuleRecord& {
     record->problem = why;
@@ -104,8 +126,15 @@ const ModuleRecord& Registry::load_module(const fs::path& file) {
   if (record->kind != "renderer" && record->kind != "frontend" && record->kind != "optimizer" && record->kind != "sampler" &&
       record->kind != "cache")
     return fail("unknown plugin kind '" + record->kind + "'");
-  if (const ModuleRecord* other = find(record->kind, record->name))
-    return fail("duplicate " + record->kind + " '" + record->name + "', already loaded from " + other->path.string());
+  if (const ModuleRecord* other = find(record->kind, record->name)) {
+    // Two copies of one file (a folder listed twice) are the same module, not a rival.
+    std::error_code ec;
+    if (fs::equivalent(other->path, file, ec))
+      return fail("duplicate " + record->kind + " '" + record->name + "': the same file was loaded already");
+    return fail(std::string(kShadowedBy) + other->path.string() +
+                (other->origin.empty() ? std::string() : " (" + other->origin + ")") + ", found first: a duplicate " +
+                record->kind + " '" + record->name + "'");
+  }
   try {
     PluginRegistrar registrar(*record);
     entry->register_plugin(&registrar);

@@ -1,6 +1,7 @@
 // The `cli` frontend module: the command-line subcommands of `hilight`.
 #include "commands.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 
 namespace hilight::cli {
@@ -41,5 +42,5 @@ void register_cli(PluginRegistrar& registrar) {
 } // namespace
 } // namespace hilight::cli
 
-HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, "0.1.0", "command-line interface: info, render, solve, export, target, luminaire, plugins, bench, cache",
+HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "command-line interface: info, render, solve, export, target, luminaire, plugins, bench, cache",
                hilight::cli::register_cli)

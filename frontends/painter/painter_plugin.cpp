@@ -1,5 +1,6 @@
 // The `painter` frontend module: owns the launcher's `paint` command.
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 #include "paint_command.hpp"
 
@@ -24,5 +25,5 @@ void register_painter(PluginRegistrar& registrar) {
 } // namespace
 } // namespace hilight::painter
 
-HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, "0.1.0", "the painter: paint illumination in a window (GLFW + ImGui), find the lights",
+HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "the painter: paint illumination in a window (GLFW + ImGui), find the lights",
                hilight::painter::register_painter)

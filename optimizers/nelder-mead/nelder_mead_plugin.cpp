@@ -9,6 +9,7 @@
 #include "hilight/pipeline/light_parameters.hpp"
 #include "hilight/pipeline/simplex.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 
 #include <cmath>
@@ -75,5 +76,5 @@ void register_nelder_mead(PluginRegistrar& registrar) {
 
 } // namespace
 
-HILIGHT_PLUGIN("optimizer", HILIGHT_PLUGIN_NAME, "0.1.0", "Nelder-Mead simplex over positions, intensities and spot cones (the paper)",
+HILIGHT_PLUGIN("optimizer", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "Nelder-Mead simplex over positions, intensities and spot cones (the paper)",
                register_nelder_mead)

@@ -17,6 +17,7 @@
 #include "hilight/pipeline/light_parameters.hpp"
 #include "hilight/pipeline/simplex.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 
 namespace {
@@ -83,5 +84,5 @@ void register_varpro(PluginRegistrar& registrar) {
 
 } // namespace
 
-HILIGHT_PLUGIN("optimizer", HILIGHT_PLUGIN_NAME, "0.1.0",
+HILIGHT_PLUGIN("optimizer", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION,
                "variable projection: simplex over positions, light by light, intensities by NNLS", register_varpro)

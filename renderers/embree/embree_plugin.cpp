@@ -13,6 +13,7 @@
 #include "embree_renderer.hpp"
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 
 namespace {
@@ -46,5 +47,5 @@ void register_embree(hilight::PluginRegistrar& registrar) {
 
 } // namespace
 
-HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, "0.1.0", "CPU ray tracing (Embree 3): direct light and first bounce by gathering",
+HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "CPU ray tracing (Embree 3): direct light and first bounce by gathering",
                register_embree)

@@ -22,6 +22,7 @@
 #include "ism_renderer.hpp"
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 
 #include <cstdlib>
@@ -86,5 +87,5 @@ void register_ism(hilight::PluginRegistrar& registrar) {
 
 } // namespace
 
-HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, "0.1.0",
+HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION,
                "imperfect shadow maps on Vulkan: cube ID shadow maps, first bounce from VPLs", register_ism)

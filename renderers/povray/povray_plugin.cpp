@@ -10,6 +10,7 @@
 // | bounce_samples, seed      | accepted for interface compatibility, unused  |
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 #include "povray_process.hpp"
 #include "povray_renderer.hpp"
@@ -41,5 +42,5 @@ void register_povray(hilight::PluginRegistrar& registrar) { registrar.renderer(c
 
 } // namespace
 
-HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, "0.1.0", "reference renderer: the real POV-Ray 3.7 (mesh_camera baking, radiosity)",
+HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "reference renderer: the real POV-Ray 3.7 (mesh_camera baking, radiosity)",
                register_povray)

@@ -14,6 +14,7 @@
 // spot cannot take every sample.
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 #include "hilight/sampler.hpp"
 
@@ -106,5 +107,5 @@ void register_importance(PluginRegistrar& registrar) {
 
 } // namespace
 
-HILIGHT_PLUGIN("sampler", HILIGHT_PLUGIN_NAME, "0.1.0", "more samples at shadow edges, highlights and in shadow (the paper)",
+HILIGHT_PLUGIN("sampler", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "more samples at shadow edges, highlights and in shadow (the paper)",
                register_importance)

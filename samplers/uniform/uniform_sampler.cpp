@@ -2,6 +2,7 @@
 // (tessellation is near-uniform, so this is near-uniform over the surface).
 // The baseline the importance sampler is measured against.
 #include "hilight/plugin.hpp"
+#include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 #include "hilight/sampler.hpp"
 
@@ -20,4 +21,4 @@ void register_uniform(hilight::PluginRegistrar& registrar) {
 
 } // namespace
 
-HILIGHT_PLUGIN("sampler", HILIGHT_PLUGIN_NAME, "0.1.0", "target points in proportion to their weight", register_uniform)
+HILIGHT_PLUGIN("sampler", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "target points in proportion to their weight", register_uniform)

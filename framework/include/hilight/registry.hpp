@@ -49,6 +49,7 @@ struct RendererTraits {
 
 struct ModuleRecord {
   std::filesystem::path path;
+  std::string origin;  ///< which search folder it came from (PluginDir::origin); "" if loaded by path
   std::string kind, name, version, description;
   bool loaded = false;
   std::string problem;  ///< why it did not load (empty when loaded)
@@ -80,16 +81,30 @@ private:
   ModuleRecord& m_record;
 };
 
+/// A folder that plugins are loaded from, and what put it on the list.
+struct PluginDir {
+  std::filesystem::path path;
+  std::string origin;  ///< "HILIGHT_PLUGIN_PATH", "user folder" or "installed"
+};
+
 class Registry {
 public:
-  /// lib/hilight beside the executable's bin/, then every entry of
-  /// HILIGHT_PLUGIN_PATH (colon-separated).
-  static std::vector<std::filesystem::path> default_search_dirs(const std::filesystem::path& executable);
+  /// Where plugins come from, first to last (docs/plugins.md): every entry of
+  /// HILIGHT_PLUGIN_PATH (colon-separated), then the user's folder
+  /// ($XDG_DATA_HOME/hilight/plugins, else ~/.local/share/hilight/plugins),
+  /// then lib/hilight beside the executable's bin/ (the installed plugins).
+  /// The first module of a kind and name wins; a later one is recorded as
+  /// shadowed, never loaded.
+  static std::vector<PluginDir> default_search_dirs(const std::filesystem::path& executable);
+  /// The user's plugin folder (which need not exist); empty without HOME and XDG_DATA_HOME.
+  static std::filesystem::path user_plugin_dir();
 
   /// Loads every hilight-*.so in `dir` (sorted by name, so the order is stable).
-  void load_directory(const std::filesystem::path& dir);
+  void load_directory(const std::filesystem::path& dir, const std::string& origin = "");
   /// Loads one module; failures are recorded, never thrown.
-  const ModuleRecord& load_module(const std::filesystem::path& file);
+  const ModuleRecord& load_module(const std::filesystem::path& file, const std::string& origin = "");
+  /// Modules that a module of the same kind and name, found first, shadows.
+  std::vector<const ModuleRecord*> shadowed() const;
 
   const std::vector<std::unique_ptr<ModuleRecord>>& modules() const { return m_modules; }
   const ModuleRecord* find(const std::string& kind, const std::string& name) const;
