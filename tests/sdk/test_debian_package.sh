@@ -27,17 +27,20 @@ for lib in libembree3 libassimp libtbb libc6; do
   echo "$depends" | grep -q "$lib" || fail "Depends lacks $lib"
 done
 [ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || fail "the package's version is not $version"
-dpkg-deb -f "$dev" Depends | grep -q "hilight (= $version)" || fail "hilight-dev does not depend on hilight (= $version)"
-dpkg-deb -c "$dev" | grep -q './usr/include/hilight/plugin.hpp' || fail "hilight-dev has no plugin.hpp"
-dpkg-deb -c "$dev" | grep -q './usr/lib/cmake/hilight/hilightConfig.cmake' || fail "hilight-dev has no hilightConfig.cmake"
-if dpkg-deb -c "$deb" | grep -q './usr/include/'; then fail "headers are in the run-time package"; fi
+grep -q "hilight (= $version)" <<<"$(dpkg-deb -f "$dev" Depends)" || fail "hilight-dev does not depend on hilight (= $version)"
+# (Listed first: grep -q stops reading early, and dpkg-deb would fail on the broken pipe.)
+dev_files=$(dpkg-deb -c "$dev") deb_files=$(dpkg-deb -c "$deb")
+grep -q './usr/include/hilight/plugin.hpp' <<<"$dev_files" || fail "hilight-dev has no plugin.hpp"
+grep -q './usr/lib/cmake/hilight/hilightConfig.cmake' <<<"$dev_files" || fail "hilight-dev has no hilightConfig.cmake"
+grep -q './usr/lib/hilight/hilight-renderer-embree.so' <<<"$deb_files" || fail "hilight has no embree plugin"
+if grep -q './usr/include/' <<<"$deb_files"; then fail "headers are in the run-time package"; fi
 
 root=$work/root
 dpkg -x "$deb" "$root"
 dpkg -x "$dev" "$root"
 hl=$root/usr/bin/hilight
 [ -x "$hl" ] || fail "no usr/bin/hilight in the package"
-"$hl" --version | grep -q "^hilight $version " || fail "hilight --version is not $version"
+grep -q "^hilight $version " <<<"$("$hl" --version)" || fail "hilight --version is not $version"
 listing=$(env -u HILIGHT_PLUGIN_PATH HOME="$work/home" "$hl" plugins)
 echo "$listing"
 for plugin in "renderer +embree" "frontend +cli" "optimizer +varpro" "sampler +importance" "cache +grid"; do
