@@ -38,7 +38,7 @@ Lighting scaled_lights(std::span<const Light> lights, float scale) {
 void PovrayRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   const float diagonal = scene->diagonal();
   int exponent = 0;
-  if (diagonal > 0.f && std::isfinite(diagonal)) std::frexp(diagonal / 64.f, &exponent);  // size/64 in [2^(e-1), 2^e)
+  if (diagonal > 0.f && std::isfinite(diagonal)) std::frexp(diagonal / 8.f, &exponent);  // diagonal/8 in [2^(e-1), 2^e)
   m_pov_scale = std::ldexp(1.f, 1 - exponent);
   if (m_pov_scale != 1.f) {
     auto scaled = std::make_shared<Scene>(*scene);

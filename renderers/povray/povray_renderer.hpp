@@ -44,10 +44,10 @@ private:
 
   PovraySettings m_settings;
   /// The scene as POV-Ray sees it: scaled by m_pov_scale, a power of two
-  /// (exact in floats) that puts its size in [64, 128). POV-Ray's shadow
-  /// tolerance is absolute (it ignores shadow hits closer than 1e-3); there
-  /// it lies below hilight's relative step off creases
-  /// (RayScene::shading_step: 2.6e-3 to 5.1e-3) whatever the scene's own scale.
+  /// (exact in floats) that puts its diagonal in [8, 16). POV-Ray's
+  /// tolerances are absolute (it ignores shadow hits closer than 1e-3 and
+  /// surfaces closer than 1e-6); there they lie below hilight's relative
+  /// ones (RayScene::shading_step) whatever the scene's own scale.
   std::shared_ptr<const Scene> m_scene;
   float m_pov_scale = 1.f;
   std::unique_ptr<RayScene> m_rays;

@@ -69,12 +69,12 @@ public:
   /// Offset used to lift ray origins off the surface (scene-relative).
   float epsilon() const { return m_epsilon; }
   /// How far shading_point() moves a point off a crease into its face:
-  /// kShadingStep of the size (4ε; 0.34 mm in an 8.4 m room), so the same
+  /// kShadingStep of the diagonal (3.4 mm in an 8.4 m room), so the same
   /// scene at any scale is shaded at the same places (docs/rendering-model.md).
   /// The POV-Ray renderer scales its scenes so that this stays above
   /// POV-Ray's own absolute 1e-3 shadow tolerance (povray_renderer.cpp).
   float shading_step() const { return m_shading_step; }
-  static constexpr float kShadingStep = 4e-5f;
+  static constexpr float kShadingStep = 4e-4f;
 
   /// True if anything blocks the segment origin + t*dir, t in (0, tfar).
   bool occluded(const Vec3& origin, const Vec3& dir, float tfar) const {
