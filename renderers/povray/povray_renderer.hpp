@@ -43,18 +43,8 @@ private:
   float exposure_scale(std::span<const Light> lights) const;
 
   PovraySettings m_settings;
-  /// The scene as POV-Ray sees it: scaled by m_pov_scale, a power of two
-  /// (exact in floats) that puts its diagonal in [8, 16). POV-Ray's
-  /// tolerances are absolute (it ignores shadow hits closer than 1e-3 and
-  /// surfaces closer than 1e-6); there they lie below hilight's relative
-  /// ones (RayScene::shading_step) whatever the scene's own scale.
   std::shared_ptr<const Scene> m_scene;
-  float m_pov_scale = 1.f;
   std::unique_ptr<RayScene> m_rays;
-  /// Points and lights into POV-Ray's scale: positions × s, intensities × s²
-  /// (so the irradiance I/d² at every point stays the same).
-  SurfacePoints to_pov(const SurfacePoints& points) const;
-  Lighting to_pov(std::span<const Light> lights) const;
 };
 
 } // namespace hilight::povray

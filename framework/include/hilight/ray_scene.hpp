@@ -40,8 +40,8 @@ struct ShadingPoint {
   }
 };
 
-/// Smooth points stay where they are; others move a fixed step
-/// (RayScene::shading_step(), relative to the scene's size) into the
+/// Smooth points stay where they are; others move a fixed step (at least
+/// 3e-3 scene units: POV-Ray ignores shadow hits closer than 1e-3) into the
 /// face they lie on, away from the crease or from the surface touching them,
 /// the same on any tessellation of that face (docs/rendering-model.md), so
 /// that a point on an edge or corner never starts rays on a neighbouring
@@ -68,13 +68,6 @@ public:
   const Scene& scene() const { return m_scene; }
   /// Offset used to lift ray origins off the surface (scene-relative).
   float epsilon() const { return m_epsilon; }
-  /// How far shading_point() moves a point off a crease into its face:
-  /// kShadingStep of the diagonal (3.4 mm in an 8.4 m room), so the same
-  /// scene at any scale is shaded at the same places (docs/rendering-model.md).
-  /// The POV-Ray renderer scales its scenes so that this stays above
-  /// POV-Ray's own absolute 1e-3 shadow tolerance (povray_renderer.cpp).
-  float shading_step() const { return m_shading_step; }
-  static constexpr float kShadingStep = 4e-4f;
 
   /// True if anything blocks the segment origin + t*dir, t in (0, tfar).
   bool occluded(const Vec3& origin, const Vec3& dir, float tfar) const {
@@ -122,7 +115,6 @@ private:
   RTCDevice m_device = nullptr;
   RTCScene m_rtc_scene = nullptr;
   float m_epsilon = 1e-4f;
-  float m_shading_step = 3e-3f;
   std::vector<Vec3> m_face_normals;
 };
 
