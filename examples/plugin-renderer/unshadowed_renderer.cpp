@@ -16,25 +16,41 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <span>
 #include <string>
+#include <vector>
 
 namespace {
 
 using namespace hilight;
 
-/// Irradiance at `p` (unit normal `n`) from `light` at unit intensity: the
-/// two-sided cosine |n·ω| over the squared distance, times the light's
-/// angular factor (spot cone or measured profile).
-float unit_irradiance(const Vec3& p, const Vec3& n, const Light& light) {
-  const Vec3 d = light.position - p;
-  const float dist2 = glm::dot(d, d);
-  if (dist2 <= 0.f) return 0.f;
-  const Vec3 w = d / std::sqrt(dist2);
-  float angular = 1.f;
-  if (light.type == LightType::Spot) angular = SpotCone::of(light).factor(glm::dot(light.direction, -w));
-  if (light.type == LightType::Luminaire) angular = luminaire_factor(light, LuminaireFrame::of(light), -w);
-  return std::abs(glm::dot(n, w)) * angular / dist2;
-}
+/// A light with its spot cone or luminaire frame worked out once per call,
+/// not once per point.
+struct PreparedLight {
+  const Light* light;
+  SpotCone cone;
+  LuminaireFrame frame;
+
+  explicit PreparedLight(const Light& l) : light(&l) {
+    if (l.type == LightType::Spot) cone = SpotCone::of(l);
+    if (l.type == LightType::Luminaire) frame = LuminaireFrame::of(l);
+  }
+
+  /// Irradiance at `p` (unit normal `n`) at unit intensity: the two-sided
+  /// cosine |n·ω| over the squared distance, times the angular factor.
+  float unit_irradiance(const Vec3& p, const Vec3& n) const {
+    const Vec3 d = light->position - p;
+    const float dist2 = glm::dot(d, d);
+    if (dist2 <= 0.f) return 0.f;
+    const Vec3 w = d / std::sqrt(dist2);
+    float angular = 1.f;
+    if (light->type == LightType::Spot) angular = cone.factor(glm::dot(light->direction, -w));
+    if (light->type == LightType::Luminaire) angular = luminaire_factor(*light, frame, -w);
+    return std::abs(glm::dot(n, w)) * angular / dist2;
+  }
+};
+
+std::vector<PreparedLight> prepare(std::span<const Light> lights) { return {lights.begin(), lights.end()}; }
 
 class UnshadowedRenderer final : public Renderer {
 public:
@@ -46,19 +62,20 @@ public:
   }
 
   std::vector<Rgb> illuminate(const SurfacePoints& points, std::span<const Light> lights) override {
-    std::vector<Rgb> out(points.size(), Rgb(0.f));
-    for (size_t i = 0; i < points.size(); ++i)
-      for (const Light& light : lights)
-        out[i] += radiance(points.albedo[i], unit_irradiance(points.positions[i], points.normals[i], light)) * light.intensity;
+    const std::vector<PreparedLight> prepared = prepare(lights);
+    std::vector<Rgb> out(points.size());
+    for (size_t i = 0; i < points.size(); ++i) out[i] = lit(points.albedo[i], points.positions[i], points.normals[i], prepared);
     return out;
   }
 
   std::vector<Rgb> unit_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport) override {
     std::vector<Rgb> out(points.size() * lights.size(), Rgb(0.f));
     if (transport == Transport::IndirectOnly) return out;  // no bounce
-    for (size_t j = 0; j < lights.size(); ++j)
+    for (size_t j = 0; j < lights.size(); ++j) {
+      const PreparedLight light(lights[j]);
       for (size_t i = 0; i < points.size(); ++i)
-        out[j * points.size() + i] = radiance(points.albedo[i], unit_irradiance(points.positions[i], points.normals[i], lights[j]));
+        out[j * points.size() + i] = radiance(points.albedo[i], light.unit_irradiance(points.positions[i], points.normals[i]));
+    }
     return out;
   }
 
@@ -66,6 +83,7 @@ public:
 
   Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) override {
     if (!m_rays) throw std::logic_error("unshadowed: set_scene was not called");
+    const std::vector<PreparedLight> prepared = prepare(lights);
     Image image(width, height);
     const Camera::Basis b = camera.basis();
     const float aspect = float(width) / float(height);
@@ -76,10 +94,7 @@ public:
         const Vec3 dir = glm::normalize(b.forward + sx * b.right + sy * b.up);
         const Hit hit = m_rays->intersect(camera.eye, dir);
         if (!hit.valid()) continue;
-        const Vec3 p = m_rays->hit_position(hit), n = m_rays->hit_normal(hit);
-        Rgb value(0.f);
-        for (const Light& light : lights) value += radiance(m_scene->triangle_albedo(hit.triangle), unit_irradiance(p, n, light)) * light.intensity;
-        image.at(x, y) = value;
+        image.at(x, y) = lit(m_scene->triangle_albedo(hit.triangle), m_rays->hit_position(hit), m_rays->hit_normal(hit), prepared);
         image.covered[size_t(y) * width + x] = 1;
       }
     return image;
@@ -88,6 +103,12 @@ public:
 private:
   /// Lambertian: outgoing radiance = albedo / π × irradiance.
   Rgb radiance(const Rgb& albedo, float irradiance) const { return albedo * float(m_gain / M_PI) * irradiance; }
+  /// The radiance of a point under all the lights.
+  Rgb lit(const Rgb& albedo, const Vec3& p, const Vec3& n, const std::vector<PreparedLight>& lights) const {
+    Rgb value(0.f);
+    for (const PreparedLight& light : lights) value += radiance(albedo, light.unit_irradiance(p, n)) * light.light->intensity;
+    return value;
+  }
 
   float m_gain;
   std::shared_ptr<const Scene> m_scene;

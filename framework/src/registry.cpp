@@ -13,11 +13,6 @@ namespace hilight {
 
 namespace fs = std::filesystem;
 
-namespace {
-/// How a module that another of the same kind and name shadows is recorded.
-constexpr const char* kShadowedBy = "shadowed by ";
-} // namespace
-
 void PluginRegistrar::renderer(RendererFactory create, ProbeFunction probe, ProbeFunction detail) {
   if (m_record.kind != "renderer") throw std::logic_error("module " + m_record.name + " registers a renderer but says it is a " + m_record.kind);
   m_record.create_renderer = std::move(create);
@@ -88,7 +83,7 @@ void Registry::load_directory(const fs::path& dir, const std::string& origin) {
 std::vector<const ModuleRecord*> Registry::shadowed() const {
   std::vector<const ModuleRecord*> out;
   for (const auto& m : m_modules)
-    if (!m->loaded && m->problem.rfind(kShadowedBy, 0) == 0) out.push_back(m.get());
+    if (!m->shadowed_by.empty()) out.push_back(m.get());
   return out;
 }
 
@@ -131,7 +126,8 @@ const ModuleRecord& Registry::load_module(const fs::path& file, const std::strin
     std::error_code ec;
     if (fs::equivalent(other->path, file, ec))
       return fail("duplicate " + record->kind + " '" + record->name + "': the same file was loaded already");
-    return fail(std::string(kShadowedBy) + other->path.string() +
+    record->shadowed_by = other->path;
+    return fail("shadowed by " + other->path.string() +
                 (other->origin.empty() ? std::string() : " (" + other->origin + ")") + ", found first: a duplicate " +
                 record->kind + " '" + record->name + "'");
   }

@@ -53,6 +53,9 @@ struct ModuleRecord {
   std::string kind, name, version, description;
   bool loaded = false;
   std::string problem;  ///< why it did not load (empty when loaded)
+  /// The module of the same kind and name found first, when that is why
+  /// this one did not load (empty otherwise).
+  std::filesystem::path shadowed_by;
 
   RendererFactory create_renderer;
   ProbeFunction probe;
