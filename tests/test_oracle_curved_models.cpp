@@ -85,7 +85,7 @@ struct Oracle {
   explicit Oracle(const Scene& s) : scene(s), tris(triangles_of(s)) {
     double largest = 0;
     for (const auto& p : s.positions) largest = std::max({largest, double(std::abs(p.x)), double(std::abs(p.y)), double(std::abs(p.z))});
-    eps = std::max({1e-6, 1e-5 * double(s.diagonal()), 1e-6 * largest});
+    eps = std::max(1e-5 * double(s.diagonal()), 1e-6 * largest);  // relative only (rendering-model.md, Tolerances)
   }
 
   bool blocked(const D3& o, const D3& dir, double from, double to) const {
@@ -140,7 +140,7 @@ struct Oracle {
     }
     if (!chosen) return p;
     const D3 plane = chosen->face_normal, on = p - glm::dot(p - chosen->a, plane) * plane;
-    const double touch = 0.5 * eps, full_step = std::max(3e-3, 4 * eps);
+    const double touch = 0.5 * eps, full_step = std::max(4 * eps, 3e-4 * double(scene.diagonal()));
     D3 fan(0), away(0);
     std::vector<std::pair<D3, double>> planes;  // other surfaces counted once a plane
     for (const auto& t : tris) {
@@ -181,7 +181,7 @@ struct Oracle {
       }
     D3 to_centroid = (chosen->a + chosen->b + chosen->c) / 3.0 - p;
     double distance = glm::length(to_centroid);
-    double step = std::min(std::max(0.01 * distance, 3e-3), 0.1 * distance);
+    double step = std::min(std::max(0.01 * distance, full_step), 0.1 * distance);
     return p + to_centroid * (step / distance);
   }
 

@@ -2,6 +2,7 @@
 
 #include "hilight/hash.hpp"
 #include "hilight/io/atomic_file.hpp"
+#include "hilight/version.hpp"
 
 #include <cstring>
 #include <fstream>
@@ -17,6 +18,12 @@ namespace {
 constexpr char kMagic[8] = {'H', 'L', 'C', 'A', 'C', 'H', 'E', '2'};
 // 9: the cache is a plugin; the file carries a checksum of its contents.
 constexpr uint32_t kFileFormat = 9;
+// A cache holds rendered responses, so one made under another rendering model
+// is stale even for the same scene and settings. Bump this whenever shading
+// changes (where points are shaded, ray offsets: docs/rendering-model.md);
+// releases are told apart by HILIGHT_VERSION as well.
+// 2: tolerances relative to the scene's size (issue 19).
+constexpr uint32_t kRenderingModel = 2;
 
 struct Header {
   char magic[8];
@@ -33,6 +40,8 @@ uint64_t light_cache_key(const Scene& scene, const std::string& renderer_key, co
                          const Bounds& bounds) {
   uint64_t h = kFnvOffset;
   h = fnv1a(h, &kFileFormat, sizeof(kFileFormat));
+  h = fnv1a(h, &kRenderingModel, sizeof(kRenderingModel));
+  h = fnv1a(h, HILIGHT_VERSION, sizeof(HILIGHT_VERSION) - 1);
   h = hash_words(h, scene.positions.data(), scene.positions.size() * sizeof(Vec3));
   h = hash_words(h, scene.normals.data(), scene.normals.size() * sizeof(Vec3));
   h = hash_words(h, scene.triangles.data(), scene.triangles.size() * sizeof(scene.triangles[0]));

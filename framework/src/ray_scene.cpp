@@ -43,8 +43,10 @@ RayScene::RayScene(const Scene& scene) : m_scene(scene) {
   if (rtcGetDeviceError(m_device) != RTC_ERROR_NONE) throw_device_error(m_device, "BVH build");
   // Offsets off surfaces: small against the scene, yet several float ulps of
   // its largest coordinate (a scene far from the origin has coarse floats).
+  // Both relative, so a scene scaled by any k gets offsets scaled by k.
   float largest = std::max(glm::length(scene.bounds.lo), glm::length(scene.bounds.hi));
-  m_epsilon = std::max({1e-6f, 1e-5f * scene.diagonal(), 1e-6f * largest});
+  m_epsilon = std::max({1e-5f * scene.diagonal(), 1e-6f * largest, std::numeric_limits<float>::min()});
+  m_shading_step = std::max(kShadingStep * scene.diagonal(), 4.f * m_epsilon);
   m_face_normals.resize(scene.triangles.size());
   for (size_t t = 0; t < scene.triangles.size(); ++t) m_face_normals[t] = scene.face_normal(t);
 }
@@ -324,12 +326,12 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
   if (!h.valid()) return {position, false};
   if (rays.only_own_surface_near(position, normal, h.triangle, 2.f * rays.epsilon())) return {position, true, h.triangle};
   // Into the chosen triangle's face, away from the crease (or the touching
-  // surface), a fixed step — at least 3e-3: POV-Ray ignores shadow hits
-  // closer than 1e-3 — halved until the point is still on that face. All of
-  // it is the same on any tessellation of the same faces.
+  // surface), a fixed step relative to the scene (RayScene::shading_step)
+  // halved until the point is still on that face. All of it is the same on
+  // any tessellation of the same faces, and at any scale.
   const Vec3 plane = rays.face_normals()[h.triangle];
   const Vec3 on = position - glm::dot(position - rays.hit_position(h), plane) * plane;
-  const float touch = 0.5f * rays.epsilon(), full_step = std::max(3e-3f, 4.f * rays.epsilon());
+  const float touch = 0.5f * rays.epsilon(), full_step = rays.shading_step();
   FanQuery fan{&scene, &rays.face_normals(), on, plane, touch, full_step};
   query_triangles_near(rays.rtc_scene(), on, fan.near, fan_callback, &fan);
   // A crease's wedges sum to at least ~0.1 (a half-disk: 2); a face going on
@@ -349,7 +351,7 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
   Vec3 to_centroid = (scene.positions[tri[0]] + scene.positions[tri[1]] + scene.positions[tri[2]]) / 3.f - position;
   float distance = glm::length(to_centroid);
   if (!(distance > 0.f)) return {position, false, h.triangle};
-  float centroid_step = std::min(std::max(0.01f * distance, 3e-3f), 0.1f * distance);
+  float centroid_step = std::min(std::max(0.01f * distance, rays.shading_step()), 0.1f * distance);
   return {position + to_centroid * (centroid_step / distance), false, h.triangle};
 }
 

@@ -1,5 +1,7 @@
 #include "hilight/scene.hpp"
 
+#include "hilight/enclosing_ball.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -38,6 +40,8 @@ void Scene::for_each_surface_point(float spacing, const std::function<void(const
 void Scene::update_bounds() {
   bounds = Bounds{};
   for (const auto& p : positions) bounds.extend(p);
+  const Ball ball = smallest_enclosing_ball(positions);
+  size = ball.radius > 0.0 ? float(2.0 * ball.radius) : 0.f;
 }
 
 } // namespace hilight

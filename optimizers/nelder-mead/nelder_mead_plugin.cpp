@@ -12,6 +12,7 @@
 #include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -25,13 +26,19 @@ public:
   Lighting refine(RefineProblem& problem, const Lighting& start, RefineEffort effort) override {
     const float scale = problem.scale();
     std::vector<double> x, steps;
+    // A dark channel still gets a step: a share of the brightest one's, not an
+    // absolute amount (intensities scale with the scene's size squared).
+    double brightest = 0.0;
+    for (const auto& l : start)
+      for (int c = 0; c < 3; ++c) brightest = std::max(brightest, std::sqrt(std::max(0.0, double(l.intensity[c]))));
+    const double least_step = brightest > 0.0 ? 1e-3 * brightest : 1e-3;
     for (const auto& l : start) {
       append_geometry(l, scale, x, steps);
       // Intensities as square roots: any real value maps to l ≥ 0.
       for (int c = 0; c < 3; ++c) {
         double s = std::sqrt(std::max(0.f, l.intensity[c]));
         x.push_back(s);
-        steps.push_back(0.2 * s + 1e-3);
+        steps.push_back(0.2 * s + least_step);
       }
     }
     auto decode = [&](const std::vector<double>& p) {

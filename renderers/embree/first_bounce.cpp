@@ -2,6 +2,9 @@
 
 #include "sampling.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstring>
 
 #include <tbb/blocked_range.h>
@@ -9,6 +12,24 @@
 #include <tbb/parallel_for.h>
 
 namespace hilight::embree {
+
+namespace {
+/// The position on a grid of 1/4096 of the scene's diagonal from its box's
+/// low corner, and the normal on a grid of 1/256: a point's identity,
+/// whatever the scene's place and scale (a float rounding changes it only
+/// for a point within rounding of a grid line).
+std::array<uint32_t, 6> point_key(const Bounds& box, float diagonal, const Vec3& p, const Vec3& n) {
+  std::array<uint32_t, 6> key{};
+  const float cell = diagonal > 0.f ? diagonal / 4096.f : 1.f;
+  for (int k = 0; k < 3; ++k) {
+    // Clamped: a point far off the box (or not finite) must not overflow the conversion.
+    const float at = std::clamp(std::floor((p[k] - box.lo[k]) / cell + 0.5f), -1e9f, 1e9f);
+    key[k] = uint32_t(int64_t(std::isnan(at) ? 0.f : at));
+    key[3 + k] = uint32_t(int32_t(std::floor(std::clamp(n[k], -1.f, 1.f) * 256.f + 0.5f)));
+  }
+  return key;
+}
+} // namespace
 
 BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<ShadingPoint>& origins, int samples,
                            uint64_t seed)
@@ -20,12 +41,11 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
       // point gets the same gather in any point set: renders of subsets and
       // of the whole scene share random numbers (common random numbers), and
       // differences between them are differences of light, not of noise.
+      // The point is read on a grid relative to the scene's box, so the same
+      // scene moved or scaled gets the same streams (docs/rendering-model.md).
       const Vec3 n = points.normals[i];
-      uint32_t bits[6];
-      std::memcpy(bits, &points.positions[i], sizeof(Vec3));
-      std::memcpy(bits + 3, &n, sizeof(Vec3));
       uint64_t stream = mix64(seed);
-      for (uint32_t b : bits) stream = mix64(stream ^ b);
+      for (uint32_t b : point_key(es.scene().bounds, es.scene().diagonal(), points.positions[i], n)) stream = mix64(stream ^ b);
       for (int side = 0; side < 2; ++side) {
         const Vec3 axis = side == 0 ? n : -n;
         float rot1 = to_unit_float(stream = mix64(stream)), rot2 = to_unit_float(stream = mix64(stream));

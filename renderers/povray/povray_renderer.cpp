@@ -36,8 +36,33 @@ Lighting scaled_lights(std::span<const Light> lights, float scale) {
 } // namespace
 
 void PovrayRenderer::set_scene(std::shared_ptr<const Scene> scene) {
+  const float diagonal = scene->diagonal();
+  int exponent = 0;
+  if (diagonal > 0.f && std::isfinite(diagonal)) std::frexp(diagonal / 8.f, &exponent);  // size/8 in [2^(e-1), 2^e)
+  m_pov_scale = std::ldexp(1.f, 1 - exponent);
+  if (m_pov_scale != 1.f) {
+    auto scaled = std::make_shared<Scene>(*scene);
+    for (auto& p : scaled->positions) p *= m_pov_scale;
+    scaled->update_bounds();
+    scene = std::move(scaled);
+  }
   m_scene = std::move(scene);
   m_rays = std::make_unique<RayScene>(*m_scene);
+}
+
+SurfacePoints PovrayRenderer::to_pov(const SurfacePoints& points) const {
+  SurfacePoints out = points;
+  for (auto& p : out.positions) p *= m_pov_scale;
+  return out;
+}
+
+Lighting PovrayRenderer::to_pov(std::span<const Light> lights) const {
+  Lighting out(lights.begin(), lights.end());
+  for (auto& l : out) {
+    l.position *= m_pov_scale;
+    l.intensity *= m_pov_scale * m_pov_scale;
+  }
+  return out;
 }
 
 std::string PovrayRenderer::settings_key() const {
@@ -57,8 +82,10 @@ float PovrayRenderer::exposure_scale(std::span<const Light> lights) const {
   return float(kPi) * quarter * quarter / strongest;
 }
 
-std::vector<Rgb> PovrayRenderer::bake(const SurfacePoints& points, std::span<const Light> lights, int bounces) {
+std::vector<Rgb> PovrayRenderer::bake(const SurfacePoints& world_points, std::span<const Light> world_lights, int bounces) {
   if (!m_scene) throw std::logic_error("PovrayRenderer: set_scene was not called");
+  const SurfacePoints points = to_pov(world_points);
+  const Lighting lights = to_pov(world_lights);
   std::vector<Rgb> out = bake_direct(points, lights);
   if (bounces > 0 && points.size() > 0 && !lights.empty()) {
     // The bounce: POV-Ray's radiosity on the mesh itself (receivers would
@@ -223,13 +250,17 @@ std::vector<Rgb> PovrayRenderer::unit_responses(const SurfacePoints& points, std
 
 Image PovrayRenderer::render_image(const Camera& camera, std::span<const Light> lights, int width, int height) {
   if (!m_scene) throw std::logic_error("PovrayRenderer: set_scene was not called");
-  const float scale = exposure_scale(lights);
-  const Lighting scaled = scaled_lights(lights, scale);
+  const Lighting pov_lights = to_pov(lights);
+  const float scale = exposure_scale(pov_lights);
+  const Lighting scaled = scaled_lights(pov_lights, scale);
+  Camera pov_camera = camera;
+  pov_camera.eye *= m_pov_scale;
+  pov_camera.target *= m_pov_scale;
   TempFolder folder;
   {
     std::ofstream file(folder.path() / "image.pov");
     write_pov_scene(file, *m_scene, scaled, m_settings.pov);
-    write_pov_camera(file, camera, width, height);
+    write_pov_camera(file, pov_camera, width, height);
   }
   run_povray(m_settings.executable,
              {"-D", "-V", "-A", "+FE", "+W" + std::to_string(width), "+H" + std::to_string(height), "+Oimage.exr", "+Iimage.pov"},

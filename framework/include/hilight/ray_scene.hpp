@@ -40,8 +40,8 @@ struct ShadingPoint {
   }
 };
 
-/// Smooth points stay where they are; others move a fixed step (at least
-/// 3e-3 scene units: POV-Ray ignores shadow hits closer than 1e-3) into the
+/// Smooth points stay where they are; others move a fixed step
+/// (RayScene::shading_step(), relative to the scene's size) into the
 /// face they lie on, away from the crease or from the surface touching them,
 /// the same on any tessellation of that face (docs/rendering-model.md), so
 /// that a point on an edge or corner never starts rays on a neighbouring
@@ -68,6 +68,15 @@ public:
   const Scene& scene() const { return m_scene; }
   /// Offset used to lift ray origins off the surface (scene-relative).
   float epsilon() const { return m_epsilon; }
+  /// How far shading_point() moves a point off a crease into its face:
+  /// kShadingStep of the size (2.5 mm in an 8.4 m room), so the same scene
+  /// at any scale is shaded at the same places (docs/rendering-model.md,
+  /// "Tolerances"). Two needs meet here: fine meshes want it small against
+  /// their facets (the glTF engine's solve drifts at 4e-4), and POV-Ray,
+  /// which ignores shadow hits closer than an absolute 1e-3, wants it above
+  /// that at the scale it is handed (povray_renderer.hpp).
+  float shading_step() const { return m_shading_step; }
+  static constexpr float kShadingStep = 3e-4f;
 
   /// True if anything blocks the segment origin + t*dir, t in (0, tfar).
   bool occluded(const Vec3& origin, const Vec3& dir, float tfar) const {
@@ -115,6 +124,7 @@ private:
   RTCDevice m_device = nullptr;
   RTCScene m_rtc_scene = nullptr;
   float m_epsilon = 1e-4f;
+  float m_shading_step = 3e-3f;
   std::vector<Vec3> m_face_normals;
 };
 

@@ -41,7 +41,13 @@ struct Scene {
   /// in metres near the origin. They cross at the file boundary.
   SceneFrame frame;
 
-  float diagonal() const { return bounds.diagonal(); }
+  /// The scene's size, which every relative tolerance is a share of
+  /// (docs/rendering-model.md, "Tolerances"): the diameter of the smallest
+  /// ball holding its vertices. For a box-shaped scene (a room) it is the
+  /// diagonal of its box; unlike that diagonal it does not change when the
+  /// scene is turned. Set by update_bounds().
+  float diagonal() const { return size; }
+  float size = 0.f;
   /// Where lights may stand: the bounds, except that an axis shorter than a
   /// quarter of the diagonal (a flat or open scene: a floor with low objects)
   /// is grown to half the diagonal so there is room for lights: on the side

@@ -33,12 +33,17 @@ struct Refiner {
   }
 
   // Depth-first: split the longest edge (first of equals, for determinism).
+  // "Equal" and "not longer than the limit" hold within kTie: lengths that
+  // are equal or on the limit in exact arithmetic (a square's sides, a wall
+  // of 16 limits) round differently once the scene is turned or scaled, and
+  // must still be cut the same way (issue 19).
+  static constexpr float kTie = 1e-5f;  // of a squared length
   void refine(std::array<uint32_t, 3> t, uint32_t material) {
     float e[3] = {edge_sq(t[0], t[1]), edge_sq(t[1], t[2]), edge_sq(t[2], t[0])};
     int k = 0;
-    if (e[1] > e[k]) k = 1;
-    if (e[2] > e[k]) k = 2;
-    if (e[k] <= max_edge_sq) {
+    if (e[1] > e[k] * (1.f + kTie)) k = 1;
+    if (e[2] > e[k] * (1.f + kTie)) k = 2;
+    if (e[k] <= max_edge_sq * (1.f + kTie)) {
       out_tris.push_back(t);
       out_mat.push_back(material);
       return;

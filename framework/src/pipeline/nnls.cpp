@@ -67,7 +67,8 @@ NnlsResult solve_nnls(const Eigen::MatrixXd& ata, const Eigen::VectorXd& atb, do
       if (!infeasible) break;
       x += alpha * (z - x);
       for (int i = 0; i < n; ++i)
-        if (passive[i] && x(i) <= 1e-15 * std::max(1.0, x.cwiseAbs().maxCoeff())) {
+        // Relative to the largest: intensities scale with the scene's size squared.
+        if (passive[i] && x(i) <= 1e-15 * x.cwiseAbs().maxCoeff()) {
           passive[i] = 0;
           x(i) = 0.0;
         }

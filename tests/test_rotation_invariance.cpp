@@ -1,0 +1,124 @@
+// A turned scene gives the same light (issue 19): real models from
+// assimp-testmodels on a floor, turned by seeded random rotations about any
+// axis with their lights, tessellate to the same vertices (turned) and
+// render the same per-vertex values but at a few knife-edge vertices (see
+// below); the bounce's random streams and sample frames are tied to the
+// world's axes (docs/rendering-model.md, "Tolerances").
+// Scale is test_scale_invariance.cpp's, translation test_far_from_origin.cpp's.
+#include "hilight/io/ply_reader.hpp"
+#include "hilight/real_model_scenes.hpp"
+#include "support.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <random>
+
+using namespace hilight;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A rotation drawn uniformly (a random unit quaternion), from `seed`.
+glm::dmat3 random_rotation(uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal;
+  glm::dquat q(normal(rng), normal(rng), normal(rng), normal(rng));
+  return glm::mat3_cast(glm::normalize(q));
+}
+
+void write_obj(const fs::path& path, const Scene& scene, const glm::dmat3& r) {
+  std::ofstream obj(path);
+  obj << std::setprecision(17);
+  for (size_t v = 0; v < scene.positions.size(); ++v) {
+    const DVec3 p = r * DVec3(scene.positions[v]), n = r * DVec3(scene.normals[v]);
+    obj << "v " << p.x << ' ' << p.y << ' ' << p.z << "\nvn " << n.x << ' ' << n.y << ' ' << n.z << "\n";
+  }
+  for (const auto& t : scene.triangles)
+    obj << "f " << t[0] + 1 << "//" << t[0] + 1 << ' ' << t[1] + 1 << "//" << t[1] + 1 << ' ' << t[2] + 1 << "//" << t[2] + 1 << "\n";
+}
+
+/// A point light and a soft-edged spotlight over the models, turned by r.
+void write_lights(const fs::path& path, const glm::dmat3& r) {
+  const DVec3 a = r * DVec3(1.25, 2.5, 0.75), b = r * DVec3(-1.0, 2.25, 1.5), d = r * glm::normalize(DVec3(0.3, -1.0, -0.2));
+  std::ofstream out(path);
+  out << std::setprecision(17) << R"({"lights": [{"type": "point", "position": [)" << a.x << ", " << a.y << ", " << a.z
+      << R"(], "intensity": [2, 2, 2]}, {"type": "spot", "position": [)" << b.x << ", " << b.y << ", " << b.z
+      << R"(], "direction": [)" << d.x << ", " << d.y << ", " << d.z
+      << R"(], "cutoff_deg": 40, "falloff_deg": 8, "intensity": [3, 2.4, 1.8]}]})";
+}
+
+} // namespace
+
+TEST_CASE("rotation: real models turned at random render the same per-vertex values on the same tessellation",
+          "[invariance][rotation][render][cli][real]") {
+  if (!fs::exists(builders::testmodels_dir())) {
+    std::cout << "SKIPPED: assimp-testmodels is not installed" << std::endl;
+    return;
+  }
+  const fs::path dir = test::output_dir("rotation_render");
+  Scene scene = builders::curved_models_on_floor();
+  scene.update_bounds();
+  const glm::dmat3 identity(1.0);
+  write_obj(dir / "home.obj", scene, identity);
+  write_lights(dir / "home-lights.json", identity);
+  for (const std::string bounces : {"0", "1"}) {
+    const auto home = test::run_hilight({"render", (dir / "home.obj").string(), "--lights", (dir / "home-lights.json").string(), "-o",
+                                         (dir / ("home-b" + bounces + ".ply")).string(), "--bounces", bounces});
+    REQUIRE(home.exit_code == 0);
+  }
+  const PlyVertices home = read_ply_vertices(dir / "home-b0.ply");
+  for (uint64_t seed : {19u, 37u, 2026u}) {
+    const glm::dmat3 r = random_rotation(seed);
+    const std::string name = "turned" + std::to_string(seed);
+    write_obj(dir / (name + ".obj"), scene, r);
+    write_lights(dir / (name + "-lights.json"), r);
+    for (const std::string bounces : {"0", "1"}) {
+      const fs::path out = dir / (name + "-b" + bounces + ".ply");
+      const auto run = test::run_hilight({"render", (dir / (name + ".obj")).string(), "--lights", (dir / (name + "-lights.json")).string(),
+                                          "-o", out.string(), "--bounces", bounces});
+      INFO("seed " << seed << ", bounces " << bounces << ": " << run.err);
+      REQUIRE(run.exit_code == 0);
+      // The same tessellation, turned: vertex for vertex, by position and normal.
+      const PlyVertices turned = read_ply_vertices(out);
+      REQUIRE(turned.count == home.count);
+      const double size = scene.diagonal();
+      double worst_position = 0, worst_normal = 0;
+      for (size_t i = 0; i < home.count; ++i) {
+        auto at = [&](const PlyVertices& v, const char* x, const char* y, const char* z) {
+          return DVec3(v.properties.at(x)[i], v.properties.at(y)[i], v.properties.at(z)[i]);
+        };
+        worst_position = std::max(worst_position, glm::length(r * at(home, "x", "y", "z") - at(turned, "x", "y", "z")) / size);
+        worst_normal = std::max(worst_normal, glm::length(r * at(home, "nx", "ny", "nz") - at(turned, "nx", "ny", "nz")));
+      }
+      INFO("worst position " << worst_position << " of the size, worst normal " << worst_normal);
+      CHECK(worst_position < 1e-6);
+      CHECK(worst_normal < 1e-5);
+      const auto values = test::ply_colours(out), reference = test::ply_colours(dir / ("home-b" + bounces + ".ply"));
+      const double d = test::dbar(values, reference);
+      size_t off = 0;
+      for (size_t i = 0; i < values.size(); ++i)
+        if (glm::length(values[i] - reference[i]) > 0.05f * glm::length(reference[i]) + 1e-6f) ++off;
+      const double share_off = double(off) / double(values.size());
+      std::cout << "rotation seed " << seed << ", bounces " << bounces << ": D-bar " << d << ", vertices > 5% off " << share_off << std::endl;
+      INFO("D-bar " << d << ", vertices more than 5% off: " << share_off);
+      // Measured (docs/rendering-model.md, "Tolerances"): direct light is the
+      // same but at a few knife-edge vertices — the Wuson's mirror seam, feet
+      // touching the floor — whose side of a surface closer than ε turns on
+      // float rounding (0.13% of the vertices; D-bar 2.6-4.5%, since those
+      // flip between lit and dark). Was 0.4% before issue 19.
+      if (bounces == "0") {
+        CHECK(share_off <= 3e-3);
+        CHECK(d <= 0.06);
+      } else {
+        // Two draws of the bounce's estimator (its streams turn with the
+        // world's axes, not with the scene): measured D-bar 3.0-4.5% here.
+        CHECK(d <= 0.07);
+      }
+    }
+  }
+}
