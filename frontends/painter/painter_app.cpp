@@ -129,11 +129,10 @@ int PainterApp::run() {
 
   // Interactive: solves run in the background and the player polls them.
   m_headless = false;
-  Tool tool = m_player->tool();
-  BrushSettings brush = m_player->brush();
-  m_player = std::make_unique<SessionPlayer>(*m_document, *m_job, make_hooks(), PlayerOptions{false, ".", "session"});
-  m_player->set_tool(tool);
-  m_player->set_brush(brush);
+  auto interactive = std::make_unique<SessionPlayer>(*m_document, *m_job, make_hooks(), PlayerOptions{false, ".", "session"});
+  interactive->continue_from(*m_player);
+  m_player = std::move(interactive);
+  m_shown_visibility = ~uint64_t(0);  // a new player counts from 0: upload its visibility
   if (!m_record_path.empty()) status("recording this session to " + m_record_path.string());
   while (!m_window->should_close()) {
     try {
@@ -288,8 +287,16 @@ void PainterApp::draw_scene() {
   int w = 1, h = 1;
   m_window->framebuffer_size(w, h);
   build_overlays();
-  const glm::mat4 view_projection = m_camera.projection(aspect()) * m_camera.view();
-  const bool stale = m_view_buffer->resize(w, h) || view_projection != m_drawn_view_projection ||
+  const glm::mat4 view_projection = this->view_projection();
+  // The section and cutaway: what the mesh draws follows the player's visibility.
+  m_player->visibility();
+  const bool clip_changed = m_player->visibility_revision() != m_shown_visibility;
+  if (clip_changed) {
+    m_mesh->set_shown_triangles(*m_scene, m_player->visibility().triangles());
+    m_mesh->set_section(m_player->clip().section);
+    m_shown_visibility = m_player->visibility_revision();
+  }
+  const bool stale = clip_changed || m_view_buffer->resize(w, h) || view_projection != m_drawn_view_projection ||
                      m_drawn_colour_uploads != m_colour_uploads || m_lines->changed_since_draw();
   if (stale) {
     m_view_buffer->bind();
