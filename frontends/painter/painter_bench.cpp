@@ -37,7 +37,9 @@ void PainterApp::run_bench() {
     m_display.last_activity = "fine_tune_running";
     m_solve_panel.stroke_released = Clock::now();
     m_solve_panel.fine_tune_after_stroke = true;
-    m_job->start_fine_tune(m_document->target(), m_document->state().lights);
+    // Through the player, as a stroke's fine-tune starts (a job it did not
+    // start would be dropped as superseded when it ends).
+    m_player->start_in_background(JobKind::FineTune);
     const auto give_up = Clock::now() + std::chrono::seconds(30);
     // As the interactive loop does while work runs in the background: a frame
     // every kBackgroundFrameSeconds, or at once when the job or a display pass ends.

@@ -348,14 +348,24 @@ void SessionPlayer::start_job(JobKind kind, const std::string& where) {
     if (!m_options.wait_for_solves) throw InputError(where + ": a solve is already running");
     finish_solve(where);
   }
+  launch(kind, where);
+  if (m_options.wait_for_solves) finish_solve(where);
+}
+
+void SessionPlayer::start_in_background(JobKind kind) {
+  if (m_job.busy()) throw InputError(std::string(to_string(kind)) + ": a solve is already running");
+  launch(kind, to_string(kind));
+}
+
+void SessionPlayer::launch(JobKind kind, const std::string& where) {
   Target target = focused_target(where);
   const PaintState& s = m_document.state();
   if (kind != JobKind::Solve && s.lights.empty()) throw InputError(where + ": there are no lights yet (solve first)");
+  // poll() drops the result if the document changes from here on.
   m_job_revision = m_document.revision();
   if (kind == JobKind::Solve) m_job.start_solve(std::move(target), s.spot_hints);
   else if (kind == JobKind::FineTune) m_job.start_fine_tune(std::move(target), s.lights);
   else m_job.start_add_lights(std::move(target), s.lights);
-  if (m_options.wait_for_solves) finish_solve(where);
 }
 
 void SessionPlayer::run(const SolveAction&, const Action&, const std::string& where) { start_job(JobKind::Solve, where); }

@@ -101,6 +101,10 @@ public:
   /// the document has an open edit (a stroke in progress) the result waits
   /// for the next poll.
   std::optional<JobResult> poll();
+  /// Starts a solve, fine-tune or add-lights job and returns at once, even in
+  /// a replay (the window's --bench draws frames while it runs); poll()
+  /// commits it. InputError as the actions give.
+  void start_in_background(JobKind kind);
 
   Tool tool() const { return m_tool; }
   void set_tool(Tool tool) { m_tool = tool; }
@@ -166,6 +170,8 @@ private:
   void apply_placement();
   /// The painted target, only its points in the focused rooms when there are some.
   Target focused_target(const std::string& where) const;
+  /// Starts a job on the focused target (no waiting).
+  void launch(JobKind kind, const std::string& where);
   /// Starts a solve, fine-tune or add-lights job (waiting for it in replays).
   void start_job(JobKind kind, const std::string& where);
   /// The path of a save/load action, relative ones from base_dir.
