@@ -31,9 +31,9 @@ std::optional<SurfacePick> PainterApp::pick_at_mouse() const {
 
 void PainterApp::handle_input() {
   handle_keys();
-  // Walking, the mouse and WASD move the eye instead of the orbit.
+  // Walking, the mouse and WASD move the eye instead of the orbit; the plan is fixed by its area.
   if (m_building.walking) handle_walk_input();
-  else handle_camera_input();
+  else if (!m_plan) handle_camera_input();
   handle_tool_input();
 }
 
@@ -108,7 +108,7 @@ void PainterApp::handle_keys() {
     radius.radius = brush.radius;
     perform(radius);
   }
-  if (m_building.walking) return;
+  if (m_building.walking || m_plan) return;
   // Arrow keys orbit, +/- zoom: the camera without a mouse.
   const float step = 3.f;
   bool moved = false;

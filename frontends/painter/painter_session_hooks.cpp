@@ -30,7 +30,9 @@ PlayerHooks PainterApp::make_hooks() {
 CameraPose PainterApp::camera_pose() const {
   if (m_plan) return CameraPose{m_plan->eye(), Vec3(0.f, -1.f, 0.f), m_plan->target()};
   const Camera camera = m_camera.to_camera();
-  return CameraPose{camera.eye, glm::normalize(camera.target - camera.eye), camera.target};
+  // Walking one is inside the room: the cutaway (focus = eye) hides nothing,
+  // or a wall would vanish as the eye comes near it.
+  return CameraPose{camera.eye, glm::normalize(camera.target - camera.eye), m_building.walking ? camera.eye : camera.target};
 }
 
 glm::mat4 PainterApp::view_projection() const {

@@ -164,6 +164,10 @@ TEST_CASE("painter ui: in the IFC house a room focus frames a room, the plan sho
       shot("focus.exr"),
       {{"type", "plan"}, {"on", true}},
       shot("plan.exr"),
+      // Painting in the plan: the window's centre pixel is the room's centre, seen from straight above.
+      {{"type", "brush"}, {"radius", 0.3}, {"colour", {1, 0, 1}}, {"brightness", 1}, {"hardness", 1}},
+      {{"type", "stroke"}, {"screen", {{180, 135}}}},
+      {{"type", "save_target"}, {"path", (dir / "target.ply").string()}},
       {{"type", "plan"}, {"on", false}},
       // Into the room: stand at its centre, a step, look down at the floor and
       // place a spotlight from the eye; then walk into the wall and do it again.
@@ -197,6 +201,17 @@ TEST_CASE("painter ui: in the IFC house a room focus frames a room, the plan sho
     CHECK(c.g > 0.3f * c.r);
     CHECK(c.b < 0.1f * c.r);
   }
+  // The plan's stroke landed on the room's floor, under the window's centre.
+  size_t magenta = 0;
+  const Vec3 centre = regions.list()[room].box.center();
+  for (const auto& [p, c] : target_points(dir / "target.ply")) {
+    if (!(c.r > 0.5f && c.b > 0.5f && c.g < 0.1f)) continue;
+    ++magenta;
+    INFO("magenta at " << p.x << " " << p.y << " " << p.z);
+    CHECK(std::abs(p.y - floor.y) < 0.05f);
+    CHECK(std::hypot(p.x - centre.x, p.z - centre.z) < 0.5f);
+  }
+  CHECK(magenta > 0);
   // The walk stood in the room at eye height and its walls held it: both spotlights stand at the eye, in the room.
   const Lighting walked = read_lights_json(dir / "walk.json");
   REQUIRE(walked.size() == 2);
