@@ -37,10 +37,11 @@ void PainterApp::apply_walk(const WalkAction& a) {
     m_camera = ui::OrbitCamera::from_camera(pose, m_scene->diagonal(), m_scene->bounds.center());
   };
   if (a.on && *a.on && !m_building.walking) {
-    // Stand where the orbit looked (usually a floor), looking the same way, level.
+    // Stand on the floor under where the orbit looked (from just above it: a
+    // target on the floor itself), looking the same way, level.
     m_plan.reset();
     m_building.walking = true;
-    eye = stand_at(*m_rays, c.target + Vec3(0.f, WalkSettings{}.eye_height, 0.f));
+    eye = stand_at(*m_rays, c.target + Vec3(0.f, 0.1f, 0.f));
     look = horizontal(look);
   } else if (a.on && !*a.on && m_building.walking) {
     // Back to orbiting, about a point two metres ahead.
