@@ -3,6 +3,7 @@
 // recorded action (`cutaway`, `section`, `plan`, `walk`, `focus`), so a
 // replay sees what the designer saw and paints where they could.
 #include "painter_app.hpp"
+#include "ui/tooltip.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,11 +12,7 @@
 
 namespace hilight::painter {
 
-namespace {
-void tip(const char* text) {
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
-} // namespace
+using ui::tip;
 
 float PainterApp::section_height() {
   if (!m_building.section_height) {

@@ -1,6 +1,7 @@
 // The ImGui panels: tools and brush, view, solve, lights, files, help, status.
 // Buttons call perform() with the same actions a session script holds.
 #include "painter_app.hpp"
+#include "ui/tooltip.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +14,8 @@
 
 namespace hilight::painter {
 
+using ui::tip;
+
 namespace {
 
 /// Files-panel paths are recorded absolute: a replay from another folder
@@ -22,10 +25,6 @@ std::string absolute_path(const std::string& path) {
   std::error_code ec;
   const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
   return ec ? path : absolute.lexically_normal().string();
-}
-
-void tip(const char* text) {
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
 
 const char* kShortcuts[][2] = {

@@ -160,3 +160,25 @@ TEST_CASE("painter view clip: bad section and cutaway fields are input errors na
   CHECK_THAT(error_of(R"({"actions": [{"type": "cutaway", "on": "yes"}]})"), Contains("cutaway: 'on' must be true or false"));
   CHECK(error_of(R"({"actions": [{"type": "section", "height": 1.5}, {"type": "cutaway", "on": false}]})").empty());
 }
+
+TEST_CASE("painter view clip: hidden surfaces still cast shadows and bounce light, the solve is the same", "[painter][clip]") {
+  // The same painted floor solved with nothing hidden and with the roof,
+  // ceiling and upper walls hidden: the same lights, to the bit.
+  const auto world = walled_room();
+  auto solve_with = [&](const std::vector<Action>& clip) {
+    auto doc = world.document();
+    SolveJob job(test::registry(), world.scene, world.rays, painter_test::quick_options());
+    PlayerHooks hooks;
+    hooks.camera_pose = [] { return CameraPose{Vec3(3.f, 12.f, 2.f), Vec3(0.f, -1.f, 0.f), Vec3(3.f, 0.f, 2.f)}; };
+    SessionPlayer player(*doc, job, hooks, {});
+    for (const Action& a : clip) player.apply(a);
+    player.apply({"brush", {{"radius", 1.5}, {"brightness", 0.3}, {"hardness", 0.8}}});
+    player.apply({"stroke", {{"world", {{2.0, 0.0, 2.0}}}}});
+    player.apply({"solve", nlohmann::json::object()});
+    return doc->state().lights;
+  };
+  const Lighting open = solve_with({});
+  const Lighting hidden = solve_with({{"cutaway", {{"on", true}}}, {"section", {{"height", 1.0}}}});
+  REQUIRE(!open.empty());
+  CHECK(hidden == open);
+}
