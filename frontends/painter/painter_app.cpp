@@ -45,7 +45,8 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
                        std::optional<Session> script)
     : m_options(options), m_scene(std::move(scene)), m_script(std::move(script)) {
   m_rays = std::make_shared<const RayScene>(*m_scene);
-  m_preview = preview_radiance(*m_scene, m_scene->vertex_albedo());
+  m_albedo = m_scene->vertex_albedo();
+  m_preview = preview_radiance(*m_scene, m_albedo);
   m_document = std::make_unique<Document>(m_scene, m_rays);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
   std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "%s", m_options.job.settings.placement.describe().c_str());

@@ -118,7 +118,7 @@ private:
   void handle_building_keys();
   /// The room list: click focuses a room (Ctrl+click adds it), "none" clears.
   void panel_rooms();
-  /// Plan view: each light's number and intensity beside its marker.
+  /// Plan view: each light's number, intensity and the lux on the surface below it, beside its marker.
   void draw_plan_readouts();
   /// The view's matrices, the ray through a window pixel and the pose, from
   /// the plan camera while the plan shows, else the orbit (or walk) camera.
@@ -152,6 +152,7 @@ private:
   std::filesystem::path m_record_path;
   std::optional<size_t> m_job_action;  ///< recorded index of the running job's action
   std::vector<Rgb> m_preview;  ///< albedo under a fixed key light: the view before lights, and the "don't care" backdrop
+  std::vector<Rgb> m_albedo;   ///< per vertex (the plan's lux readouts)
 
   std::unique_ptr<ui::Window> m_window;
   std::unique_ptr<ui::SceneMesh> m_mesh;

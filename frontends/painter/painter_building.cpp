@@ -2,6 +2,7 @@
 // the section, the plan view, walk mode and the room focus. Each change is a
 // recorded action (`cutaway`, `section`, `plan`, `walk`, `focus`), so a
 // replay sees what the designer saw and paints where they could.
+#include "core/plan_readout.hpp"
 #include "painter_app.hpp"
 #include "ui/tooltip.hpp"
 
@@ -95,7 +96,7 @@ void PainterApp::panel_rooms() {
 
 void PainterApp::draw_plan_readouts() {
   if (!m_plan || !m_display.show_lights) return;
-  // Each light's number and intensity (luminance of its RGB intensity) beside its marker.
+  // Each light's number, intensity (luminance of its RGB intensity) and the lux below it, beside its marker.
   int w = 1, h = 1;
   m_window->framebuffer_size(w, h);
   const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
@@ -108,8 +109,12 @@ void PainterApp::draw_plan_readouts() {
     const float x = (0.5f + 0.5f * clip.x / clip.w) * float(w) / std::max(scale.x, 1e-3f);
     const float y = (0.5f - 0.5f * clip.y / clip.w) * float(h) / std::max(scale.y, 1e-3f);
     const Rgb& I = lights[i].intensity;
-    char text[64];
-    std::snprintf(text, sizeof text, "%zu: I %.3g", i, 0.2126 * I.r + 0.7152 * I.g + 0.0722 * I.b);
+    char text[96];
+    const int n = std::snprintf(text, sizeof text, "%zu: I %.3g", i, 0.2126 * I.r + 0.7152 * I.g + 0.0722 * I.b);
+    // The lux below it once the result view shows these lights.
+    if (m_display.radiance_lights == lights)
+      if (const auto lux = lux_below(*m_rays, m_display.radiance, m_albedo, lights[i].position))
+        std::snprintf(text + n, sizeof text - size_t(n), ", %.0f lx below", *lux);
     draw->AddText(ImVec2(x + 6.f, y - 6.f), IM_COL32(255, 240, 160, 255), text);
   }
 }
