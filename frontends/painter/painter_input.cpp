@@ -151,8 +151,11 @@ void PainterApp::handle_tool_input() {
   m_tools.hover = over_ui || m_tools.dragging_camera ? std::nullopt : pick_at_mouse();
   if (m_tools.dragging_camera || io.KeyAlt) return;
   const Tool tool = m_player->tool();
-  // A double click focuses the room of the surface under it (its second click paints nothing).
+  // A double click focuses the room of the surface under it. Its first click
+  // was a one-dab stroke (already recorded): undone, so it only focuses.
   if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !over_ui && m_tools.hover && !m_tools.stroke) {
+    if (m_tools.click_revision == m_document->revision()) perform(UndoAction{});
+    m_tools.click_revision.reset();
     FocusAction focus;
     focus.world = m_tools.hover->position;
     perform(focus);
@@ -164,6 +167,7 @@ void PainterApp::handle_tool_input() {
 
   if (tool == Tool::Brush || tool == Tool::Eraser) {
     if (pressed) {
+      m_tools.stroke_start_revision = m_document->revision();
       // Hidden surfaces (section, cutaway) take no paint; the camera does not move during a stroke.
       m_tools.stroke = std::make_unique<Stroke>(*m_document, m_player->brush(), tool == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint,
                                                 &m_player->visibility());
@@ -214,6 +218,8 @@ void PainterApp::finish_stroke() {
   std::vector<Vec3> normals = m_tools.stroke->normals();
   m_tools.stroke->finish();
   m_tools.stroke.reset();
+  m_tools.click_revision.reset();
+  if (points.size() == 1 && m_document->revision() != m_tools.stroke_start_revision) m_tools.click_revision = m_document->revision();
   if (points.empty()) return;
   // With the normals: a replay paints the same faces (pick_near may choose the other one at a crease).
   record(StrokeAction{PointSet{points, {}, normals}, mode == BrushMode::Erase});

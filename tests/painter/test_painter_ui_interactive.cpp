@@ -227,7 +227,7 @@ TEST_CASE("painter ui: mouse and keys paint, fine-tune, orbit, undo and quit", "
   CHECK(replay.exit_code == 0);
 }
 
-TEST_CASE("painter ui: the building keys record the cutaway, the section, the plan and a walk, and the recording replays",
+TEST_CASE("painter ui: a double click and the building keys record the focus, cutaway, section, plan and a walk, and the recording replays",
           "[painter-ui][building]") {
   PrivateXServer server;
   if (server.display().empty()) {
@@ -249,6 +249,14 @@ TEST_CASE("painter ui: the building keys record the cutaway, the section, the pl
   auto exited = [&] { return ::waitpid(pid, &status, WNOHANG) == pid; };
   // Nothing is recorded before the first key: give the window time to show.
   std::this_thread::sleep_for(4000ms);
+  // A double click on the floor (right of the panel) focuses its room; its
+  // first click's dab is taken back.
+  input.move(520, 565);
+  for (int click = 0; click < 2; ++click) {
+    input.button(1, true);
+    input.button(1, false);
+  }
+  const bool focus = wait_for([&] { return recorded("\"focus\""); }, 10s);
   input.move(900, 400);  // over the view, not a panel
   input.tap("c");
   const bool cutaway = wait_for([&] { return recorded("\"cutaway\""); }, 10s);
@@ -278,6 +286,8 @@ TEST_CASE("painter ui: the building keys record the cutaway, the section, the pl
   const std::string text = test::read_file(recording);
   INFO("recording: " << text);
   INFO("stderr: " << test::read_file(dir / "stderr.txt"));
+  CHECK(focus);
+  CHECK(text.find("\"undo\"") < text.find("\"focus\""));  // the click's dab undone, then the focus
   CHECK(cutaway);
   CHECK(section);
   CHECK(plan);
