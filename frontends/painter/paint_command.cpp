@@ -126,6 +126,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
     throw InputError("paint: renderer '" + o.job.renderer + "' is unavailable: " + why);
   std::optional<Session> session;
   if (!o.script.empty()) session = read_session(o.script);
+  o.started = std::chrono::steady_clock::now();  // --timings: open_to_first_frame counts from here
   auto loaded = std::make_shared<const Scene>(load_scene(o.scene, {o.max_edge}));
   PainterApp painter(o, registry, loaded, std::move(session));
   return painter.run();

@@ -2,6 +2,7 @@
 /// What `hilight paint` was asked to do (parsed by paint_command.cpp).
 #include "core/solve_job.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <string>
 
@@ -24,6 +25,8 @@ struct PaintOptions {
   std::string view = "result";       ///< the view to start in: result, target, difference
   bool auto_fine_tune = true;        ///< fine-tune after each stroke when there are lights
   SolveJobOptions job;               ///< renderer, optimizer, sampler and solve settings
+  /// When `hilight paint` began loading (--timings: open_to_first_frame).
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };
 
 } // namespace hilight::painter

@@ -45,11 +45,11 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
                        std::optional<Session> script)
     : m_options(options), m_scene(std::move(scene)), m_script(std::move(script)) {
   m_rays = std::make_shared<const RayScene>(*m_scene);
-  m_preview = preview_radiance(*m_scene, m_scene->vertex_albedo());
+  m_albedo = m_scene->vertex_albedo();
+  m_preview = preview_radiance(*m_scene, m_albedo);
   m_document = std::make_unique<Document>(m_scene, m_rays);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
   std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "%s", m_options.job.settings.placement.describe().c_str());
-  auto renderers = display_renderers(*m_job);
   if (!m_options.no_record || !m_options.record.empty()) {
     const bool interactive = !m_options.exit_after_script;
     if (!m_options.record.empty()) m_record_path = m_options.record;
@@ -75,7 +75,10 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_view_buffer = std::make_unique<ui::SceneFramebuffer>();
   m_camera = ui::OrbitCamera::framing(m_scene->bounds, aspect());
   // Background results wake the event loop at once (glfwPostEmptyEvent is thread-safe).
-  m_illumination_worker = std::make_unique<ui::IlluminationWorker>(std::move(renderers), *m_scene, [] { glfwPostEmptyEvent(); });
+  // The display's renderers are made on the worker's thread: binding a big
+  // scene takes seconds the first frame need not wait for.
+  m_illumination_worker = std::make_unique<ui::IlluminationWorker>([job = m_job.get()] { return display_renderers(*job); }, *m_scene,
+                                                                   [] { glfwPostEmptyEvent(); });
   m_job->set_on_finished([] { glfwPostEmptyEvent(); });  // a finished solve wakes the event loop at once
   m_display.view = m_options.view == "target" ? ui::ViewMode::Target : m_options.view == "difference" ? ui::ViewMode::Difference : ui::ViewMode::Result;
   m_headless = m_options.exit_after_script;
@@ -103,6 +106,8 @@ float PainterApp::aspect() const {
 
 int PainterApp::run() {
   frame(false);  // the scene as it opens
+  // Issue 20's figure: loading, the ray tracer, the GPU mesh and the first frame.
+  m_timer.add_latency("open_to_first_frame", std::chrono::duration<double, std::milli>(Clock::now() - m_options.started).count());
   if (m_script) {
     for (size_t i = 0; i < m_script->actions.size(); ++i) {
       const Action& action = m_script->actions[i];
@@ -129,11 +134,10 @@ int PainterApp::run() {
 
   // Interactive: solves run in the background and the player polls them.
   m_headless = false;
-  Tool tool = m_player->tool();
-  BrushSettings brush = m_player->brush();
-  m_player = std::make_unique<SessionPlayer>(*m_document, *m_job, make_hooks(), PlayerOptions{false, ".", "session"});
-  m_player->set_tool(tool);
-  m_player->set_brush(brush);
+  auto interactive = std::make_unique<SessionPlayer>(*m_document, *m_job, make_hooks(), PlayerOptions{false, ".", "session"});
+  interactive->continue_from(*m_player);
+  m_player = std::move(interactive);
+  m_shown_visibility = ~uint64_t(0);  // a new player counts from 0: upload its visibility
   if (!m_record_path.empty()) status("recording this session to " + m_record_path.string());
   while (!m_window->should_close()) {
     try {
@@ -288,8 +292,16 @@ void PainterApp::draw_scene() {
   int w = 1, h = 1;
   m_window->framebuffer_size(w, h);
   build_overlays();
-  const glm::mat4 view_projection = m_camera.projection(aspect()) * m_camera.view();
-  const bool stale = m_view_buffer->resize(w, h) || view_projection != m_drawn_view_projection ||
+  const glm::mat4 view_projection = this->view_projection();
+  // The section and cutaway: what the mesh draws follows the player's visibility.
+  m_player->visibility();
+  const bool clip_changed = m_player->visibility_revision() != m_shown_visibility;
+  if (clip_changed) {
+    m_mesh->set_shown_triangles(*m_scene, m_player->visibility().triangles());
+    m_mesh->set_section(m_player->clip().section);
+    m_shown_visibility = m_player->visibility_revision();
+  }
+  const bool stale = clip_changed || m_view_buffer->resize(w, h) || view_projection != m_drawn_view_projection ||
                      m_drawn_colour_uploads != m_colour_uploads || m_lines->changed_since_draw();
   if (stale) {
     m_view_buffer->bind();

@@ -5,6 +5,7 @@
 /// designer takes goes through the core's SessionPlayer and is recorded, so
 /// a session can be replayed exactly.
 #include "core/session_player.hpp"
+#include "building_state.hpp"
 #include "display_state.hpp"
 #include "files_panel_state.hpp"
 #include "paint_options.hpp"
@@ -14,6 +15,7 @@
 #include "ui/illumination_worker.hpp"
 #include "ui/line_batch.hpp"
 #include "ui/orbit_camera.hpp"
+#include "ui/plan_camera.hpp"
 #include "ui/scene_framebuffer.hpp"
 #include "ui/scene_mesh.hpp"
 #include "ui/vertex_colours.hpp"
@@ -111,6 +113,30 @@ private:
   void panel_status();
   void popup_shadow_pairs();
 
+  // --- inside buildings (painter_building.cpp, painter_walk.cpp) ---
+  void panel_building();
+  void handle_building_keys();
+  /// The room list: click focuses a room (Ctrl+click adds it), "none" clears.
+  void panel_rooms();
+  /// Plan view: each light's number, intensity and the lux on the surface below it, beside its marker.
+  void draw_plan_readouts();
+  /// The view's matrices, the ray through a window pixel and the pose, from
+  /// the plan camera while the plan shows, else the orbit (or walk) camera.
+  glm::mat4 view_projection() const;
+  std::optional<SurfacePick> pick_window_pixel(float x, float y) const;
+  CameraPose camera_pose() const;
+  void set_plan(bool on);
+  /// Frames a room (a `focus`): the orbit looks down at its floor from above and in front.
+  void frame_room(const Bounds& box);
+  /// A `walk` action: enter or leave walk mode, move (stopped by walls), look around.
+  void apply_walk(const WalkAction& action);
+  /// WASD and mouse look while walking; recorded as one camera action when let go.
+  void handle_walk_input();
+  /// The section height the slider shows (the middle of the scene until chosen).
+  float section_height();
+  /// Performs a `section` action (nullopt: off), remembering the height.
+  void set_section(std::optional<float> height);
+
   // --- bench (painter_bench.cpp) ---
   /// Scripted orbit, stroke and fine-tune with timings (--bench).
   void run_bench();
@@ -126,6 +152,7 @@ private:
   std::filesystem::path m_record_path;
   std::optional<size_t> m_job_action;  ///< recorded index of the running job's action
   std::vector<Rgb> m_preview;  ///< albedo under a fixed key light: the view before lights, and the "don't care" backdrop
+  std::vector<Rgb> m_albedo;   ///< per vertex (the plan's lux readouts)
 
   std::unique_ptr<ui::Window> m_window;
   std::unique_ptr<ui::SceneMesh> m_mesh;
@@ -133,6 +160,7 @@ private:
   std::unique_ptr<ui::SceneFramebuffer> m_view_buffer;  ///< the 3D view, redrawn only when it changes
   glm::mat4 m_drawn_view_projection{0.f};
   uint64_t m_colour_uploads = 0, m_drawn_colour_uploads = ~uint64_t(0);
+  uint64_t m_shown_visibility = 0;  ///< the player's visibility_revision() the mesh draws
   std::unique_ptr<ui::IlluminationWorker> m_illumination_worker;
   ui::OrbitCamera m_camera;
   ui::FrameTimer m_timer;
@@ -143,6 +171,8 @@ private:
   SolvePanelState m_solve_panel; ///< Solve and Placement panels, stroke → fine-tune latency
   FilesPanelState m_files;       ///< Files panel
   StatusState m_status_panel;    ///< status line, log, help
+  BuildingState m_building;      ///< Building panel: section height, walk mode
+  std::optional<ui::PlanCamera> m_plan;  ///< the plan view, while it shows
   bool m_headless = false;  ///< replaying: a failing action is an error, not a status line
 };
 

@@ -21,11 +21,11 @@ void PainterApp::run_bench() {
   for (int round = 0; round < 5; ++round) {
     // A horizontal stroke across the middle of the view, 40 mouse moves.
     m_display.last_activity = "stroke";
-    Stroke stroke(*m_document, brush, BrushMode::Paint);
+    Stroke stroke(*m_document, brush, BrushMode::Paint, &m_player->visibility());
     const float y = float(h) * (0.55f + 0.04f * float(round));
     for (int i = 0; i < 40; ++i) {
       const float x = float(w) * (0.3f + 0.4f * float(i) / 39.f);
-      if (auto pick = ui::pick_pixel(*m_rays, m_camera, x, y, float(w), float(h))) {
+      if (auto pick = pick_window_pixel(x, y)) {
         if (stroke.points().empty()) stroke.dab(*pick);
         else stroke.drag_to(*pick);
       }
@@ -37,7 +37,9 @@ void PainterApp::run_bench() {
     m_display.last_activity = "fine_tune_running";
     m_solve_panel.stroke_released = Clock::now();
     m_solve_panel.fine_tune_after_stroke = true;
-    m_job->start_fine_tune(m_document->target(), m_document->state().lights);
+    // Through the player, as a stroke's fine-tune starts (a job it did not
+    // start would be dropped as superseded when it ends).
+    m_player->start_in_background(JobKind::FineTune);
     const auto give_up = Clock::now() + std::chrono::seconds(30);
     // As the interactive loop does while work runs in the background: a frame
     // every kBackgroundFrameSeconds, or at once when the job or a display pass ends.

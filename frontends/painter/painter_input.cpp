@@ -26,15 +26,14 @@ constexpr float kClickPixels = 4.f;
 
 std::optional<SurfacePick> PainterApp::pick_at_mouse() const {
   const ImGuiIO& io = ImGui::GetIO();
-  const float sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
-  int w = 1, h = 1;
-  m_window->framebuffer_size(w, h);
-  return ui::pick_pixel(*m_rays, m_camera, io.MousePos.x * sx, io.MousePos.y * sy, float(w), float(h));
+  return pick_window_pixel(io.MousePos.x * io.DisplayFramebufferScale.x, io.MousePos.y * io.DisplayFramebufferScale.y);
 }
 
 void PainterApp::handle_input() {
   handle_keys();
-  handle_camera_input();
+  // Walking, the mouse and WASD move the eye instead of the orbit; the plan is fixed by its area.
+  if (m_building.walking) handle_walk_input();
+  else if (!m_plan) handle_camera_input();
   handle_tool_input();
 }
 
@@ -80,22 +79,23 @@ void PainterApp::handle_keys() {
   auto select = [&](Tool tool) { perform(ToolAction{tool}); };
   if (pressed(GLFW_KEY_B)) select(Tool::Brush);
   if (pressed(GLFW_KEY_E)) select(Tool::Eraser);
-  if (pressed(GLFW_KEY_S)) select(Tool::Shadow);
+  if (pressed(GLFW_KEY_S) && !m_building.walking) select(Tool::Shadow);  // walking, WASD move
   if (pressed(GLFW_KEY_X)) select(Tool::EraseShadow);
   if (pressed(GLFW_KEY_P)) select(Tool::Spot);
-  if (pressed(GLFW_KEY_A)) select(Tool::Adjust);
+  if (pressed(GLFW_KEY_A) && !m_building.walking) select(Tool::Adjust);
   // Views are recorded actions, so a replay's screenshots show what the designer saw.
   if (pressed(GLFW_KEY_1)) perform(ViewAction{ViewShown::Result});
   if (pressed(GLFW_KEY_2)) perform(ViewAction{ViewShown::Target});
   if (pressed(GLFW_KEY_3)) perform(ViewAction{ViewShown::Difference});
   if (pressed(GLFW_KEY_L)) m_display.show_lights = !m_display.show_lights;
+  handle_building_keys();
   if (pressed(GLFW_KEY_F1) || pressed(GLFW_KEY_H)) m_status_panel.show_help = !m_status_panel.show_help;
   if ((pressed(GLFW_KEY_ENTER) || pressed(GLFW_KEY_KP_ENTER)) && m_player->tool() == Tool::Shadow) lights_from_shadows();
   if (pressed(GLFW_KEY_F5)) start_job(SolveAction{});
   if (pressed(GLFW_KEY_F6)) start_job(FineTuneAction{});
   if (pressed(GLFW_KEY_F7)) start_job(AddLightsAction{});
   if (pressed(GLFW_KEY_ESCAPE) && m_job->busy()) m_job->cancel();
-  if (pressed(GLFW_KEY_F)) {
+  if (pressed(GLFW_KEY_F) && !m_building.walking) {
     m_camera = ui::OrbitCamera::framing(m_scene->bounds, aspect());
     record_camera();
   }
@@ -108,6 +108,7 @@ void PainterApp::handle_keys() {
     radius.radius = brush.radius;
     perform(radius);
   }
+  if (m_building.walking || m_plan) return;
   // Arrow keys orbit, +/- zoom: the camera without a mouse.
   const float step = 3.f;
   bool moved = false;
@@ -150,13 +151,26 @@ void PainterApp::handle_tool_input() {
   m_tools.hover = over_ui || m_tools.dragging_camera ? std::nullopt : pick_at_mouse();
   if (m_tools.dragging_camera || io.KeyAlt) return;
   const Tool tool = m_player->tool();
+  // A double click focuses the room of the surface under it. Its first click
+  // was a one-dab stroke (already recorded): undone, so it only focuses.
+  if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !over_ui && m_tools.hover && !m_tools.stroke) {
+    if (m_tools.click_revision == m_document->revision()) perform(UndoAction{});
+    m_tools.click_revision.reset();
+    FocusAction focus;
+    focus.world = m_tools.hover->position;
+    perform(focus);
+    return;
+  }
   const bool pressed = ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !over_ui;
   const bool down = ImGui::IsMouseDown(ImGuiMouseButton_Left);
   const bool released = ImGui::IsMouseReleased(ImGuiMouseButton_Left);
 
   if (tool == Tool::Brush || tool == Tool::Eraser) {
     if (pressed) {
-      m_tools.stroke = std::make_unique<Stroke>(*m_document, m_player->brush(), tool == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint);
+      m_tools.stroke_start_revision = m_document->revision();
+      // Hidden surfaces (section, cutaway) take no paint; the camera does not move during a stroke.
+      m_tools.stroke = std::make_unique<Stroke>(*m_document, m_player->brush(), tool == Tool::Eraser ? BrushMode::Erase : BrushMode::Paint,
+                                                &m_player->visibility());
       if (m_display.view == ui::ViewMode::Result) perform(ViewAction{ViewShown::Target});  // paint is seen in the target view
       if (m_tools.hover) m_tools.stroke->dab(*m_tools.hover);
     } else if (m_tools.stroke && down && m_tools.hover && (io.MouseDelta.x != 0.f || io.MouseDelta.y != 0.f)) {
@@ -204,6 +218,8 @@ void PainterApp::finish_stroke() {
   std::vector<Vec3> normals = m_tools.stroke->normals();
   m_tools.stroke->finish();
   m_tools.stroke.reset();
+  m_tools.click_revision.reset();
+  if (points.size() == 1 && m_document->revision() != m_tools.stroke_start_revision) m_tools.click_revision = m_document->revision();
   if (points.empty()) return;
   // With the normals: a replay paints the same faces (pick_near may choose the other one at a crease).
   record(StrokeAction{PointSet{points, {}, normals}, mode == BrushMode::Erase});
@@ -251,12 +267,11 @@ void PainterApp::finish_region_drag() {
     m_tools.shadow_pairs.push_back(ShadowAction::Pair{o, std::nullopt, PointSet{region, {}, {}}});
     status(std::to_string(m_tools.shadow_pairs.size()) + " shadow request(s): press 'Lights from shadows', or add more");
   } else if (tool == Tool::Spot) {
-    const Camera c = m_camera.to_camera();
-    const Vec3 d = glm::normalize(c.target - c.eye);
+    const CameraPose pose = camera_pose();
     SpotRegionAction spot;
     spot.points.world = region;
-    spot.eye = c.eye;
-    spot.direction = d;
+    spot.eye = pose.eye;
+    spot.direction = pose.direction;
     spot.falloff_deg = m_tools.spot_falloff;
     perform(spot);
   } else if (tool == Tool::Adjust) {

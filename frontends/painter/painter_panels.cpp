@@ -1,6 +1,7 @@
 // The ImGui panels: tools and brush, view, solve, lights, files, help, status.
 // Buttons call perform() with the same actions a session script holds.
 #include "painter_app.hpp"
+#include "ui/tooltip.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +14,8 @@
 
 namespace hilight::painter {
 
+using ui::tip;
+
 namespace {
 
 /// Files-panel paths are recorded absolute: a replay from another folder
@@ -22,10 +25,6 @@ std::string absolute_path(const std::string& path) {
   std::error_code ec;
   const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
   return ec ? path : absolute.lexically_normal().string();
-}
-
-void tip(const char* text) {
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
 
 const char* kShortcuts[][2] = {
@@ -44,6 +43,11 @@ const char* kShortcuts[][2] = {
     {"[ / ]", "smaller / larger brush"},
     {"1 / 2 / 3", "view result I(p) / target / |difference|"},
     {"L", "show / hide lights"},
+    {"C", "cutaway: hide walls and ceilings in front of the view"},
+    {"K, Page Up / Down", "section on / off, raise / lower it"},
+    {"T", "plan view (top, orthographic) on / off"},
+    {"V, then W A S D + right drag", "walk mode on / off: move and look around"},
+    {"double click", "focus on the room under the cursor"},
     {"F5 / F6 / F7", "solve / fine-tune / add lights"},
     {"Esc", "cancel the running solve"},
     {"Ctrl+Z / Ctrl+Y", "undo / redo"},
@@ -59,6 +63,7 @@ void PainterApp::draw_panels() {
   ImGui::Begin("hilight paint", nullptr, ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_AlwaysAutoResize);
   panel_tools();
   panel_view();
+  panel_building();
   panel_solve();
   panel_placement();
   panel_lights();
@@ -68,6 +73,7 @@ void PainterApp::draw_panels() {
   ImGui::End();
   panel_help();
   panel_status();
+  draw_plan_readouts();
   popup_shadow_pairs();
 }
 

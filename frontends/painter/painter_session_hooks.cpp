@@ -13,15 +13,11 @@ namespace hilight::painter {
 PlayerHooks PainterApp::make_hooks() {
   PlayerHooks hooks;
   hooks.camera = [this](const CameraAction& action) { apply_camera_action(action); };
-  hooks.camera_pose = [this] {
-    Camera camera = m_camera.to_camera();
-    return CameraPose{camera.eye, glm::normalize(camera.target - camera.eye)};
-  };
-  hooks.pick_screen = [this](const std::array<float, 2>& xy) {
-    int w = 1, h = 1;
-    m_window->framebuffer_size(w, h);
-    return ui::pick_pixel(*m_rays, m_camera, xy[0], xy[1], float(w), float(h));
-  };
+  hooks.camera_pose = [this] { return camera_pose(); };
+  hooks.pick_screen = [this](const std::array<float, 2>& xy) { return pick_window_pixel(xy[0], xy[1]); };
+  hooks.plan = [this](bool on) { set_plan(on); };
+  hooks.walk = [this](const WalkAction& action) { apply_walk(action); };
+  hooks.frame = [this](const Bounds& box) { frame_room(box); };
   hooks.screenshot = [this](const std::filesystem::path& path) { screenshot(path); };
   hooks.view = [this](ViewShown show) {
     m_display.view = show == ViewShown::Target ? ui::ViewMode::Target : show == ViewShown::Difference ? ui::ViewMode::Difference : ui::ViewMode::Result;
@@ -29,6 +25,26 @@ PlayerHooks PainterApp::make_hooks() {
   };
   hooks.log = [this](const std::string& line) { status(line); };
   return hooks;
+}
+
+CameraPose PainterApp::camera_pose() const {
+  if (m_plan) return CameraPose{m_plan->eye(), Vec3(0.f, -1.f, 0.f), m_plan->target()};
+  const Camera camera = m_camera.to_camera();
+  // Walking one is inside the room: the cutaway (focus = eye) hides nothing,
+  // or a wall would vanish as the eye comes near it.
+  return CameraPose{camera.eye, glm::normalize(camera.target - camera.eye), m_building.walking ? camera.eye : camera.target};
+}
+
+glm::mat4 PainterApp::view_projection() const {
+  if (m_plan) return m_plan->projection(aspect()) * m_plan->view();
+  return m_camera.projection(aspect()) * m_camera.view();
+}
+
+std::optional<SurfacePick> PainterApp::pick_window_pixel(float x, float y) const {
+  int w = 1, h = 1;
+  m_window->framebuffer_size(w, h);
+  const ui::Ray ray = m_plan ? m_plan->ray_through(x, y, float(w), float(h), aspect()) : m_camera.ray_through(x, y, float(w), float(h));
+  return ui::pick_front_face(*m_rays, ray, m_player->visibility());
 }
 
 void PainterApp::apply_camera_action(const CameraAction& a) {

@@ -17,6 +17,10 @@ struct ToolState {
   bool dragging_camera = false;
   bool camera_keys_unrecorded = false;  ///< arrow/zoom keys moved the camera since the last record
   std::unique_ptr<Stroke> stroke;       ///< brush/eraser stroke in progress
+  uint64_t stroke_start_revision = 0;   ///< the document's revision when the stroke began
+  /// The revision right after a one-dab stroke that painted: a double click
+  /// that follows (nothing changed in between) takes that dab back.
+  std::optional<uint64_t> click_revision;
   BrushSettings recorded_brush;         ///< brush as last recorded
   Tool recorded_tool = Tool::Brush;
   std::vector<Vec3> region;             ///< points of a shadow/spot/adjust drag

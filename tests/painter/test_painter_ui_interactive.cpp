@@ -227,6 +227,85 @@ TEST_CASE("painter ui: mouse and keys paint, fine-tune, orbit, undo and quit", "
   CHECK(replay.exit_code == 0);
 }
 
+TEST_CASE("painter ui: a double click and the building keys record the focus, cutaway, section, plan and a walk, and the recording replays",
+          "[painter-ui][building]") {
+  PrivateXServer server;
+  if (server.display().empty()) {
+    std::cout << "SKIPPED: cannot start Xvfb" << std::endl;
+    return;
+  }
+  FakeInput input(server.display());
+  if (!input.ready()) {
+    std::cout << "SKIPPED: no XTest (libXtst.so.6) to send input events" << std::endl;
+    return;
+  }
+  const fs::path dir = test::output_dir("painter_ui_building_keys");
+  const fs::path recording = dir / "session.json";
+  const pid_t pid = spawn_hilight({"paint", HILIGHT_SOURCE_DIR "/scenes/room.obj", "--size", "1280x800", "--record", recording.string()},
+                                  server.display(), dir);
+  REQUIRE(pid > 0);
+  auto recorded = [&](const std::string& text) { return test::read_file(recording).find(text) != std::string::npos; };
+  int status = 0;
+  auto exited = [&] { return ::waitpid(pid, &status, WNOHANG) == pid; };
+  // Nothing is recorded before the first key: give the window time to show.
+  std::this_thread::sleep_for(4000ms);
+  // A double click on the floor (right of the panel) focuses its room; its
+  // first click's dab is taken back.
+  input.move(520, 565);
+  for (int click = 0; click < 2; ++click) {
+    input.button(1, true);
+    input.button(1, false);
+  }
+  const bool focus = wait_for([&] { return recorded("\"focus\""); }, 10s);
+  input.move(900, 400);  // over the view, not a panel
+  input.tap("c");
+  const bool cutaway = wait_for([&] { return recorded("\"cutaway\""); }, 10s);
+  input.tap("k");
+  input.tap("Prior");  // Page Up raises the section
+  const bool section = wait_for([&] { return recorded("\"section\""); }, 10s);
+  input.tap("t");
+  input.tap("t");
+  const bool plan = wait_for([&] { return recorded("\"plan\""); }, 10s);
+  input.tap("v");
+  const bool walk = wait_for([&] { return recorded("\"walk\""); }, 10s);
+  // Hold W: the eye walks forward; let go: where it ended is one camera action.
+  input.key("w", true);
+  std::this_thread::sleep_for(700ms);
+  input.key("w", false);
+  const bool walked = wait_for([&] { return recorded("\"camera\""); }, 10s);
+  input.tap("v");
+  std::this_thread::sleep_for(300ms);
+  input.key("Control_L", true);
+  input.tap("q");
+  input.key("Control_L", false);
+  const bool quit = wait_for(exited, 15s);
+  if (!quit) {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+  }
+  const std::string text = test::read_file(recording);
+  INFO("recording: " << text);
+  INFO("stderr: " << test::read_file(dir / "stderr.txt"));
+  CHECK(focus);
+  CHECK(text.find("\"undo\"") < text.find("\"focus\""));  // the click's dab undone, then the focus
+  CHECK(cutaway);
+  CHECK(section);
+  CHECK(plan);
+  CHECK(walk);
+  CHECK(walked);
+  CHECK(quit);
+  CHECK(text.find("\"on\":false") != std::string::npos);  // the plan and the walk were left again
+  const char* outer = std::getenv("DISPLAY");
+  const std::string outer_display = outer ? outer : "";
+  ::setenv("DISPLAY", server.display().c_str(), 1);
+  const test::RunResult replay = test::run_hilight({"paint", HILIGHT_SOURCE_DIR "/scenes/room.obj", "--script", recording.string(),
+                                                    "--size", "1280x800", "--exit", "--no-record"});
+  if (outer) ::setenv("DISPLAY", outer_display.c_str(), 1);
+  else ::unsetenv("DISPLAY");
+  INFO("replay: " << replay.err);
+  CHECK(replay.exit_code == 0);
+}
+
 TEST_CASE("painter ui: a brush value typed out of range is clamped, recorded, and never quits", "[painter-ui]") {
   PrivateXServer server;
   if (server.display().empty()) {

@@ -53,6 +53,9 @@ enum class Kind {
   Points2,      ///< non-empty [[x, y], ...]
   Points3,      ///< non-empty [[x, y, z], ...]
   String,
+  Bool,         ///< true or false
+  Indices,      ///< non-empty [i, ...] of integers ≥ 0
+  True,         ///< true (a switch that is only ever given on: "off": true)
   ShadowPairs,  ///< non-empty [{"occluder"|"occluder_screen", "world"|"screen"}, ...]
 };
 
@@ -154,6 +157,76 @@ ViewAction read(const json& p, Is<ViewAction>) {
   return {show == "target" ? ViewShown::Target : show == "difference" ? ViewShown::Difference : ViewShown::Result};
 }
 json write(const ViewAction& a) { return {{"show", to_string(a.show)}}; }
+
+// SectionAction
+template <>
+Spec schema_of<SectionAction>() {
+  return {{{"height", Kind::Number}, {"off", Kind::True}}, {}, {{"height", "off"}}, {}, false};
+}
+SectionAction read(const json& p, Is<SectionAction>) {
+  SectionAction a;
+  if (p.contains("height")) a.height = p["height"].get<float>();
+  return a;
+}
+json write(const SectionAction& a) {
+  if (a.height) return {{"height", *a.height}};
+  return {{"off", true}};
+}
+
+// CutawayAction
+template <>
+Spec schema_of<CutawayAction>() {
+  return {{{"on", Kind::Bool}}, {"on"}, {}, {}, false};
+}
+CutawayAction read(const json& p, Is<CutawayAction>) { return {p["on"].get<bool>()}; }
+json write(const CutawayAction& a) { return {{"on", a.on}}; }
+
+// PlanAction
+template <>
+Spec schema_of<PlanAction>() {
+  return {{{"on", Kind::Bool}}, {"on"}, {}, {}, false};
+}
+PlanAction read(const json& p, Is<PlanAction>) { return {p["on"].get<bool>()}; }
+json write(const PlanAction& a) { return {{"on", a.on}}; }
+
+// FocusAction
+template <>
+Spec schema_of<FocusAction>() {
+  return {{{"regions", Kind::Indices}, {"world", Kind::Vec3}, {"off", Kind::True}}, {}, {{"regions", "world", "off"}}, {}, false};
+}
+FocusAction read(const json& p, Is<FocusAction>) {
+  FocusAction a;
+  if (p.contains("regions"))
+    for (const auto& r : p["regions"]) a.regions.push_back(r.get<int>());
+  if (p.contains("world")) a.world = vec3(p["world"]);
+  a.off = p.contains("off");
+  return a;
+}
+json write(const FocusAction& a) {
+  if (a.world) return {{"world", of(*a.world)}};
+  if (a.off) return {{"off", true}};
+  return {{"regions", a.regions}};
+}
+
+// WalkAction
+template <>
+Spec schema_of<WalkAction>() {
+  return {{{"on", Kind::Bool}, {"move", Kind::Vec2}, {"turn", Kind::Vec2}}, {}, {}, {}, true};
+}
+WalkAction read(const json& p, Is<WalkAction>) {
+  WalkAction a;
+  if (p.contains("on")) a.on = p["on"].get<bool>();
+  if (p.contains("move")) a.move = vec2(p["move"]);
+  if (p.contains("turn")) a.turn = vec2(p["turn"]);
+  return a;
+}
+json write(const WalkAction& a) {
+  json p = json::object();
+  if (a.on) p["on"] = *a.on;
+  if (a.move) p["move"] = of(*a.move);
+  if (a.turn) p["turn"] = of(*a.turn);
+  return p;
+}
 
 // BrushAction
 template <>
@@ -435,6 +508,14 @@ std::string check_kind(const json& v, Kind kind) {
   case Kind::Points2: return point_list(v, 2) ? "" : "a non-empty list of [x, y]";
   case Kind::Points3: return point_list(v, 3) ? "" : "a non-empty list of [x, y, z]";
   case Kind::String: return v.is_string() ? "" : "a string";
+  case Kind::Bool: return v.is_boolean() ? "" : "true or false";
+  case Kind::Indices: {
+    bool ok = v.is_array() && !v.empty();
+    if (ok)
+      for (const auto& x : v) ok = ok && x.is_number_integer() && x.get<long long>() >= 0 && x.get<long long>() <= 1000000;
+    return ok ? "" : "a non-empty list of integers ≥ 0";
+  }
+  case Kind::True: return v.is_boolean() && v.get<bool>() ? "" : "true";
   case Kind::ShadowPairs: {
     if (!v.is_array() || v.empty()) return "a non-empty list of {\"occluder\": [x, y, z], \"world\": [[x, y, z], ...]}";
     for (size_t i = 0; i < v.size(); ++i) {

@@ -49,6 +49,37 @@ struct ViewAction {
   static constexpr const char* kType = "view";
   ViewShown show = ViewShown::Result;
 };
+/// A horizontal section: surfaces above `height` are hidden (`off`: none).
+struct SectionAction {
+  static constexpr const char* kType = "section";
+  std::optional<float> height;  ///< absent: "off"
+};
+/// The cutaway (doll's-house view): hides the walls and ceilings in front of what the camera looks at.
+struct CutawayAction {
+  static constexpr const char* kType = "cutaway";
+  bool on = true;
+};
+/// The plan view: an orthographic top view of the section (or of the focused rooms).
+struct PlanAction {
+  static constexpr const char* kType = "plan";
+  bool on = true;
+};
+/// Room focus: the LightSpace regions (rooms, hilight/regions.hpp) the view
+/// frames and the solves' lights are limited to; by number, or the room a
+/// point stands in (a double-clicked floor), or none (`off`).
+struct FocusAction {
+  static constexpr const char* kType = "focus";
+  std::vector<int> regions;
+  std::optional<Vec3> world;
+  bool off = false;
+};
+/// Walk mode: `on` enters (true) or leaves (false) it; `move` [forward,
+/// right] in scene units, stopped by walls; `turn` [yaw°, pitch°] looks around.
+struct WalkAction {
+  static constexpr const char* kType = "walk";
+  std::optional<bool> on;
+  std::optional<Vec2> move, turn;
+};
 struct BrushAction {
   static constexpr const char* kType = "brush";
   std::optional<float> radius, brightness, hardness;
@@ -138,7 +169,7 @@ struct ScreenshotAction {
 
 /// Every action type, in the order docs/painter.md lists them.
 using TypedAction =
-    std::variant<CameraAction, ToolAction, ViewAction, BrushAction, StrokeAction, EraseAction, ShadowAction, EraseShadowAction,
+    std::variant<CameraAction, ToolAction, ViewAction, SectionAction, CutawayAction, PlanAction, FocusAction, WalkAction, BrushAction, StrokeAction, EraseAction, ShadowAction, EraseShadowAction,
                  SpotRegionAction, AdjustRegionAction, SolveAction, FineTuneAction, AddLightsAction, CutAction, PlaceAction,
                  UndoAction, RedoAction, SaveTargetAction, SaveLightsAction, LoadTargetAction, LoadLightsAction, ScreenshotAction>;
 

@@ -15,10 +15,11 @@ float brush_coverage(const BrushSettings& brush, float distance) {
 }
 
 size_t apply_dab(const Scene& scene, PaintState& state, const BrushSettings& brush, BrushMode mode,
-                 const SurfacePick& centre) {
+                 const SurfacePick& centre, const Visibility* visible) {
   const Rgb value = brush.value();
   size_t touched = 0;
   for (const auto& [v, distance] : vertices_in_dab(scene, centre, brush.radius)) {
+    if (visible && !visible->vertex(v)) continue;
     const float a = brush_coverage(brush, distance);
     if (!(a > 0.f)) continue;
     ++touched;
@@ -35,8 +36,8 @@ size_t apply_dab(const Scene& scene, PaintState& state, const BrushSettings& bru
   return touched;
 }
 
-Stroke::Stroke(Document& document, const BrushSettings& brush, BrushMode mode)
-    : m_document(document), m_brush(brush), m_mode(mode) {
+Stroke::Stroke(Document& document, const BrushSettings& brush, BrushMode mode, const Visibility* visible)
+    : m_document(document), m_brush(brush), m_mode(mode), m_visible(visible) {
   m_document.begin_edit();
 }
 
@@ -44,7 +45,7 @@ Stroke::~Stroke() { finish(); }
 
 void Stroke::dab(const SurfacePick& centre) {
   if (!m_open) return;
-  if (apply_dab(m_document.scene(), m_document.begin_edit(), m_brush, m_mode, centre)) m_document.bump();
+  if (apply_dab(m_document.scene(), m_document.begin_edit(), m_brush, m_mode, centre, m_visible)) m_document.bump();
   m_points.push_back(centre.position);
   m_normals.push_back(centre.normal);
   m_last = centre;
@@ -71,7 +72,7 @@ void Stroke::drag_to(const SurfacePick& centre) {
     // surface as a replay would, and one with no surface near is left out,
     // so a recorded stroke always replays.
     float t = float(i) / float(steps + 1);
-    if (auto snapped = pick_near(m_document.rays(), glm::mix(from.position, centre.position, t))) dab(*snapped);
+    if (auto snapped = pick_near(m_document.rays(), glm::mix(from.position, centre.position, t), m_visible)) dab(*snapped);
   }
   dab(centre);
 }
@@ -88,8 +89,9 @@ void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode
   stroke.finish();
 }
 
-void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode, const std::vector<SurfacePick>& picks) {
-  Stroke stroke(document, brush, mode);
+void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode, const std::vector<SurfacePick>& picks,
+                  const Visibility* visible) {
+  Stroke stroke(document, brush, mode, visible);
   for (const SurfacePick& p : picks) stroke.dab(p);
   stroke.finish();
 }

@@ -10,6 +10,7 @@
 /// A stroke is a sequence of dabs and one undo step.
 #include "core/document.hpp"
 #include "core/region.hpp"
+#include "core/view_clip.hpp"
 
 namespace hilight::painter {
 
@@ -34,15 +35,18 @@ enum class BrushMode { Paint, Erase };
 float brush_coverage(const BrushSettings& brush, float distance);
 
 /// Applies one dab to `state`; returns how many vertices it touched.
+/// Vertices `visible` hides (clipped by the section or cut away) get no paint.
 size_t apply_dab(const Scene& scene, PaintState& state, const BrushSettings& brush, BrushMode mode,
-                 const SurfacePick& centre);
+                 const SurfacePick& centre, const Visibility* visible = nullptr);
 
 /// One stroke = one undo step. Dabs show at once (the document's revision
 /// moves); finish() commits, and so does the destructor if finish() was not
 /// called. A stroke that touched nothing leaves no step.
 class Stroke {
 public:
-  Stroke(Document& document, const BrushSettings& brush, BrushMode mode);
+  /// `visible` (if given, it must outlive the stroke): what the view shows;
+  /// hidden vertices get no paint and fill-in dabs never land on hidden surfaces.
+  Stroke(Document& document, const BrushSettings& brush, BrushMode mode, const Visibility* visible = nullptr);
   ~Stroke();
   Stroke(const Stroke&) = delete;
   Stroke& operator=(const Stroke&) = delete;
@@ -67,6 +71,7 @@ private:
   Document& m_document;
   BrushSettings m_brush;
   BrushMode m_mode;
+  const Visibility* m_visible = nullptr;
   std::vector<Vec3> m_points, m_normals;
   std::optional<SurfacePick> m_last;
   bool m_open = true;
@@ -74,7 +79,8 @@ private:
 
 /// A whole stroke from world points (session replay): one undo step.
 void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode, const std::vector<Vec3>& world_points);
-/// A whole stroke from surface picks: one undo step.
-void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode, const std::vector<SurfacePick>& picks);
+/// A whole stroke from surface picks: one undo step (hidden vertices unpainted).
+void paint_stroke(Document& document, const BrushSettings& brush, BrushMode mode, const std::vector<SurfacePick>& picks,
+                  const Visibility* visible = nullptr);
 
 } // namespace hilight::painter

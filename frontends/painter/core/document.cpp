@@ -7,6 +7,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/lights_json.hpp"
 
+#include <functional>
 #include <stdexcept>
 
 namespace hilight::painter {
@@ -104,10 +105,11 @@ size_t Document::painted_count() const {
 
 namespace {
 
-TargetPoints painted_points(const Scene& scene, const PaintState& state) {
+TargetPoints painted_points(const Scene& scene, const PaintState& state,
+                            const std::function<bool(uint32_t)>& keep = {}) {
   TargetPoints points;
   for (size_t v = 0; v < state.weight.size(); ++v) {
-    if (!(state.weight[v] > 0.f)) continue;
+    if (!(state.weight[v] > 0.f) || (keep && !keep(uint32_t(v)))) continue;
     points.positions.push_back(scene.positions[v]);
     points.normals.push_back(scene.normals[v]);
     points.values.push_back(state.psi[v]);
@@ -118,9 +120,11 @@ TargetPoints painted_points(const Scene& scene, const PaintState& state) {
 
 } // namespace
 
-Target Document::target() const {
-  TargetPoints points = painted_points(*m_scene, m_state);
-  if (points.positions.empty()) throw InputError("painted target", "nothing is painted (every weight is 0)");
+Target Document::target() const { return target({}, "nothing is painted (every weight is 0)"); }
+
+Target Document::target(const std::function<bool(uint32_t)>& keep, const std::string& if_none) const {
+  TargetPoints points = painted_points(*m_scene, m_state, keep);
+  if (points.positions.empty()) throw InputError("painted target", if_none);
   return bind_target("painted target", points.positions, points.values, points.weights, *m_scene, *m_rays,
                      points.normals);
 }

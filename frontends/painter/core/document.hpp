@@ -81,6 +81,8 @@ public:
   /// vertex positions and normals): what the solver takes. InputError when
   /// nothing is painted.
   Target target() const;
+  /// Only the painted vertices `keep` accepts (a room focus); InputError(`if_none`) if none is.
+  Target target(const std::function<bool(uint32_t)>& keep, const std::string& if_none) const;
   /// Writes the painted vertices as a target PLY `hilight solve --target` reads.
   void save_target(const std::filesystem::path& path) const;
   /// Reads a target PLY (any `hilight solve` accepts): each point goes to the

@@ -4,10 +4,14 @@
 
 namespace hilight::painter {
 
-std::optional<SurfacePick> pick_near(const RayScene& rays, const Vec3& p) {
+std::optional<SurfacePick> pick_near(const RayScene& rays, const Vec3& p) { return pick_near(rays, p, nullptr); }
+
+std::optional<SurfacePick> pick_near(const RayScene& rays, const Vec3& p, const Visibility* visible) {
   Hit hit = rays.closest_point(p, 0.01f * rays.scene().diagonal());
   if (!hit.valid()) return std::nullopt;
-  return SurfacePick{rays.hit_position(hit), rays.hit_normal(hit)};
+  const Vec3 position = rays.hit_position(hit);
+  if (visible && !visible->point(hit.triangle, position)) return std::nullopt;
+  return SurfacePick{position, rays.hit_normal(hit)};
 }
 
 std::optional<SurfacePick> pick_ray(const RayScene& rays, const Vec3& origin, const Vec3& direction) {

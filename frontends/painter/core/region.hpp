@@ -4,6 +4,7 @@
 /// a dab when it lies within the radius and its normal is on the same side
 /// as the surface at the dab's centre (so the far side of a thin wall, whose
 /// normal faces away, is never reached through it).
+#include "core/view_clip.hpp"
 #include "hilight/ray_scene.hpp"
 
 #include <cstdint>
@@ -22,6 +23,8 @@ struct SurfacePick {
 /// its shading normal; nullopt if no surface is that near. Session scripts
 /// give bare world points; this recovers which side of a wall they are on.
 std::optional<SurfacePick> pick_near(const RayScene& rays, const Vec3& p);
+/// As above, nullopt too when that nearest surface point is hidden by the view (`visible`, if given).
+std::optional<SurfacePick> pick_near(const RayScene& rays, const Vec3& p, const Visibility* visible);
 
 /// The first surface hit along a ray (the UI's mouse picking), nullopt on a miss.
 std::optional<SurfacePick> pick_ray(const RayScene& rays, const Vec3& origin, const Vec3& direction);

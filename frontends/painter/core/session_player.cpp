@@ -2,6 +2,7 @@
 
 #include "hilight/error.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -30,7 +31,7 @@ std::string describe(const Vec3& p) {
 
 SessionPlayer::SessionPlayer(Document& document, SolveJob& job, PlayerHooks hooks, PlayerOptions options)
     : m_document(document), m_job(job), m_hooks(std::move(hooks)), m_options(std::move(options)),
-      m_objects(document.scene()) {
+      m_objects(document.scene()), m_place_rules(job.options().settings.placement) {
   // A brush as wide as a small patch of the scene, whatever its units.
   m_brush.radius = 0.03f * document.scene().diagonal();
 }
@@ -101,11 +102,15 @@ std::vector<SurfacePick> SessionPlayer::surface_picks(const PointSet& points, co
       if (!pick)
         throw InputError(where + ": point " + std::to_string(i) + " " + describe(p) +
                          " is not on any surface (within 1% of the scene diagonal)");
+      // Surfaces the section or cutaway hides take nothing (the view skips them as the mouse does).
+      if (!pick_near(m_document.rays(), p, &visibility())) continue;
       picks.push_back(points.normals.empty() ? *pick : SurfacePick{p, glm::normalize(points.normals[i])});
     }
+    if (picks.empty()) throw InputError(where + ": every point is on a surface the section or cutaway hides");
     return picks;
   }
-  // Screen points: whatever the cursor hit; misses are skipped, as with the mouse.
+  // Screen points: whatever the cursor hit (the window's picking skips hidden
+  // surfaces); misses are skipped, as with the mouse.
   if (!m_hooks.pick_screen) throw InputError(where + ": screen coordinates need the painter's window (give world points)");
   for (const Vec2& p : points.screen)
     if (auto pick = m_hooks.pick_screen({p.x, p.y})) picks.push_back(*pick);
@@ -140,6 +145,109 @@ void SessionPlayer::run(const ViewAction& a, const Action&, const std::string&) 
   if (m_hooks.view) m_hooks.view(a.show);
 }
 
+void SessionPlayer::run(const SectionAction& a, const Action&, const std::string&) {
+  if (a.height) check_near_scene(Vec3(m_document.scene().bounds.center().x, *a.height, m_document.scene().bounds.center().z),
+                                 "section: height");
+  m_clip.section = a.height;
+}
+
+void SessionPlayer::run(const CutawayAction& a, const Action&, const std::string&) { m_clip.cutaway = a.on; }
+
+const Visibility& SessionPlayer::visibility() const {
+  static const Visibility everything;
+  if (!m_clip.any()) {
+    if (m_visibility_for) ++m_visibility_revision;
+    m_visibility_for.reset();
+    return everything;
+  }
+  const CameraPose pose = m_hooks.camera_pose ? m_hooks.camera_pose() : CameraPose{};
+  // Without a camera there is nothing in front of anything: the cutaway hides nothing.
+  const Vec3 focus = m_hooks.camera_pose ? pose.target : pose.eye;
+  auto key = std::make_tuple(m_clip, pose.eye, focus);
+  if (m_visibility_for != key) {
+    m_visibility = Visibility::compute(m_document.scene(), m_clip, pose.eye, focus);
+    m_visibility_for = key;
+    ++m_visibility_revision;
+  }
+  return m_visibility;
+}
+
+void SessionPlayer::run(const PlanAction& a, const Action&, const std::string& where) {
+  if (m_hooks.plan) m_hooks.plan(a.on);
+  else log(where + ": no window, no plan view");
+}
+
+void SessionPlayer::run(const WalkAction& a, const Action&, const std::string& where) {
+  if (m_hooks.walk) m_hooks.walk(a);
+  else log(where + ": no window to walk in");
+}
+
+const Regions& SessionPlayer::regions() const {
+  if (!m_regions) m_regions = std::make_shared<const Regions>(m_document.rays());
+  return *m_regions;
+}
+
+int SessionPlayer::room_of(const Vec3& position, const Vec3& normal) const {
+  return regions().at(position + regions().voxel_size() * normal);
+}
+
+void SessionPlayer::run(const FocusAction& a, const Action&, const std::string& where) {
+  std::vector<int> focus;
+  const size_t rooms = regions().list().size();
+  if (a.world) {
+    const SurfacePick at = world_point(*a.world, where);
+    const int room = room_of(at.position, at.normal);
+    if (room < 0) throw InputError(where + ": no room at " + describe(*a.world) + " (it is outside every region)");
+    focus.push_back(room);
+  }
+  for (int r : a.regions) {
+    if (r < 0 || size_t(r) >= rooms)
+      throw InputError(where + ": no region " + std::to_string(r) + " (the scene has " + std::to_string(rooms) + ", 0 to " +
+                       std::to_string(int(rooms) - 1) + ")");
+    if (std::find(focus.begin(), focus.end(), r) == focus.end()) focus.push_back(r);
+  }
+  if (m_job.busy()) finish_solve(where);
+  m_focus = std::move(focus);
+  apply_placement();
+  if (m_focus.empty()) {
+    log("no room focus");
+    return;
+  }
+  Bounds box;
+  std::string names;
+  for (int r : m_focus) {
+    box.extend(regions().list()[size_t(r)].box.lo);
+    box.extend(regions().list()[size_t(r)].box.hi);
+    names += (names.empty() ? "" : ", ") + std::to_string(r);
+  }
+  if (m_hooks.frame) m_hooks.frame(box);
+  log("focus on region " + names);
+}
+
+void SessionPlayer::apply_placement() {
+  PlacementRules rules = m_place_rules;
+  if (!m_focus.empty()) rules.regions = m_focus;
+  m_job.set_placement(std::move(rules));
+}
+
+void SessionPlayer::continue_from(const SessionPlayer& other) {
+  m_tool = other.m_tool;
+  m_brush = other.m_brush;
+  m_clip = other.m_clip;
+  m_focus = other.m_focus;
+  m_place_rules = other.m_place_rules;
+  m_regions = other.m_regions;
+}
+
+Target SessionPlayer::focused_target(const std::string& where) const {
+  if (m_focus.empty()) return m_document.target();
+  const Scene& scene = m_document.scene();
+  return m_document.target([&](uint32_t v) {
+    const int room = room_of(scene.positions[v], scene.normals[v]);
+    return std::find(m_focus.begin(), m_focus.end(), room) != m_focus.end();
+  }, where + ": nothing is painted in the focused rooms");
+}
+
 void SessionPlayer::run(const ToolAction& a, const Action& action, const std::string&) {
   m_tool = a.tool;
   if (m_hooks.tool_changed) m_hooks.tool_changed(action);
@@ -155,11 +263,11 @@ void SessionPlayer::run(const BrushAction& a, const Action& action, const std::s
 
 void SessionPlayer::run(const StrokeAction& a, const Action&, const std::string& where) {
   const bool erase = a.erase ? *a.erase : m_tool == Tool::Eraser;
-  paint_stroke(m_document, m_brush, erase ? BrushMode::Erase : BrushMode::Paint, surface_picks(a.points, where));
+  paint_stroke(m_document, m_brush, erase ? BrushMode::Erase : BrushMode::Paint, surface_picks(a.points, where), &visibility());
 }
 
 void SessionPlayer::run(const EraseAction& a, const Action&, const std::string& where) {
-  paint_stroke(m_document, m_brush, BrushMode::Erase, surface_picks(a.points, where));
+  paint_stroke(m_document, m_brush, BrushMode::Erase, surface_picks(a.points, where), &visibility());
 }
 
 void SessionPlayer::run(const ShadowAction& a, const Action&, const std::string& where) {
@@ -240,14 +348,24 @@ void SessionPlayer::start_job(JobKind kind, const std::string& where) {
     if (!m_options.wait_for_solves) throw InputError(where + ": a solve is already running");
     finish_solve(where);
   }
-  Target target = m_document.target();
+  launch(kind, where);
+  if (m_options.wait_for_solves) finish_solve(where);
+}
+
+void SessionPlayer::start_in_background(JobKind kind) {
+  if (m_job.busy()) throw InputError(std::string(to_string(kind)) + ": a solve is already running");
+  launch(kind, to_string(kind));
+}
+
+void SessionPlayer::launch(JobKind kind, const std::string& where) {
+  Target target = focused_target(where);
   const PaintState& s = m_document.state();
   if (kind != JobKind::Solve && s.lights.empty()) throw InputError(where + ": there are no lights yet (solve first)");
+  // poll() drops the result if the document changes from here on.
   m_job_revision = m_document.revision();
   if (kind == JobKind::Solve) m_job.start_solve(std::move(target), s.spot_hints);
   else if (kind == JobKind::FineTune) m_job.start_fine_tune(std::move(target), s.lights);
   else m_job.start_add_lights(std::move(target), s.lights);
-  if (m_options.wait_for_solves) finish_solve(where);
 }
 
 void SessionPlayer::run(const SolveAction&, const Action&, const std::string& where) { start_job(JobKind::Solve, where); }
@@ -272,8 +390,10 @@ void SessionPlayer::run(const PlaceAction& a, const Action&, const std::string& 
   } catch (const InputError& e) {
     throw InputError(where + ": " + e.what());
   }
-  m_job.set_placement(std::move(rules));
-  log(where + ": lights may stand: " + (a.rules.empty() ? "anywhere free" : a.rules));
+  m_place_rules = std::move(rules);
+  apply_placement();
+  log(where + ": lights may stand: " + (a.rules.empty() ? "anywhere free" : a.rules) +
+      (m_focus.empty() ? "" : " (and in the focused rooms)"));
 }
 
 void SessionPlayer::run(const UndoAction&, const Action&, const std::string&) { m_document.undo(); }

@@ -17,10 +17,15 @@
 #include "core/shadow_erase.hpp"
 #include "core/solve_job.hpp"
 #include "core/spot_region.hpp"
+#include "core/view_clip.hpp"
+#include "hilight/light_space.hpp"
+#include "hilight/regions.hpp"
 
 #include <array>
+#include <tuple>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -38,6 +43,7 @@ constexpr float kMaxSceneReach = 1e6f;
 struct CameraPose {
   Vec3 eye{0.f, 0.f, 1.f};
   Vec3 direction{0.f, 0.f, -1.f};  ///< unit view direction
+  Vec3 target{0.f, 0.f, 0.f};      ///< the point looked at (the cutaway keeps what is around it)
 };
 
 struct PlayerHooks {
@@ -56,6 +62,12 @@ struct PlayerHooks {
   std::function<void(ViewShown)> view;
   /// A tool or brush change (the UI updates its panels); after the player's own state changed.
   std::function<void(const Action&)> tool_changed;
+  /// Shows or leaves the plan view (a `plan` action; ignored headless).
+  std::function<void(bool)> plan;
+  /// Walk mode: enter/leave, move, look (a `walk` action; ignored headless).
+  std::function<void(const WalkAction&)> walk;
+  /// Frames the focused rooms (their boxes' union) after a `focus` action.
+  std::function<void(const Bounds&)> frame;
   /// One line per finished action or solve result, for a log panel / stderr.
   std::function<void(const std::string&)> log;
 };
@@ -89,11 +101,35 @@ public:
   /// the document has an open edit (a stroke in progress) the result waits
   /// for the next poll.
   std::optional<JobResult> poll();
+  /// Starts a solve, fine-tune or add-lights job and returns at once, even in
+  /// a replay (the window's --bench draws frames while it runs); poll()
+  /// commits it. InputError as the actions give.
+  void start_in_background(JobKind kind);
 
   Tool tool() const { return m_tool; }
   void set_tool(Tool tool) { m_tool = tool; }
   const BrushSettings& brush() const { return m_brush; }
   void set_brush(const BrushSettings& brush) { m_brush = brush; }
+  /// The section and cutaway (`section`, `cutaway` actions): view state, like the tool.
+  const ViewClip& clip() const { return m_clip; }
+  void set_clip(const ViewClip& clip) { m_clip = clip; }
+  /// What the view shows now: the clip for the current camera (hooks.camera_pose;
+  /// without one the cutaway hides nothing). Recomputed only when either changed.
+  const Visibility& visibility() const;
+  /// Moves whenever what visibility() returns changed (the window re-uploads then).
+  uint64_t visibility_revision() const { return m_visibility_revision; }
+  /// The scene's rooms (LightSpace regions, numbered as `hilight info` and
+  /// `--place region:K` number them); found on first use.
+  const Regions& regions() const;
+  /// The focused rooms (`focus` action); empty: none. Solves then fit only
+  /// the painted points in them and place lights only in them.
+  const std::vector<int>& focus() const { return m_focus; }
+  /// The room a surface point looks into (stepped a voxel off the surface
+  /// along its normal, so a wall's two faces belong to their own rooms); -1: none.
+  int room_of(const Vec3& position, const Vec3& normal) const;
+  /// Takes over the view and tool state of `other` (the window's replay
+  /// player hands over to its interactive one).
+  void continue_from(const SessionPlayer& other);
   const SceneObjects& objects() const { return m_objects; }
   /// Estimate of the last `shadow` action (for drawing candidates).
   const std::optional<ShadowEstimate>& last_shadow_estimate() const { return m_last_estimate; }
@@ -106,6 +142,11 @@ private:
   void run(const CameraAction& a, const Action& action, const std::string& where);
   void run(const ToolAction& a, const Action& action, const std::string& where);
   void run(const ViewAction& a, const Action& action, const std::string& where);
+  void run(const SectionAction& a, const Action& action, const std::string& where);
+  void run(const CutawayAction& a, const Action& action, const std::string& where);
+  void run(const PlanAction& a, const Action& action, const std::string& where);
+  void run(const FocusAction& a, const Action& action, const std::string& where);
+  void run(const WalkAction& a, const Action& action, const std::string& where);
   void run(const BrushAction& a, const Action& action, const std::string& where);
   void run(const StrokeAction& a, const Action& action, const std::string& where);
   void run(const EraseAction& a, const Action& action, const std::string& where);
@@ -125,6 +166,12 @@ private:
   void run(const LoadTargetAction& a, const Action& action, const std::string& where);
   void run(const LoadLightsAction& a, const Action& action, const std::string& where);
   void run(const ScreenshotAction& a, const Action& action, const std::string& where);
+  /// The `place` rules with the focused rooms' (the job's placement).
+  void apply_placement();
+  /// The painted target, only its points in the focused rooms when there are some.
+  Target focused_target(const std::string& where) const;
+  /// Starts a job on the focused target (no waiting).
+  void launch(JobKind kind, const std::string& where);
   /// Starts a solve, fine-tune or add-lights job (waiting for it in replays).
   void start_job(JobKind kind, const std::string& where);
   /// The path of a save/load action, relative ones from base_dir.
@@ -152,6 +199,13 @@ private:
   SceneObjects m_objects;
   Tool m_tool = Tool::Brush;
   BrushSettings m_brush;
+  ViewClip m_clip;
+  std::vector<int> m_focus;
+  PlacementRules m_place_rules;  ///< as the `place` actions set them (the focus adds its rooms)
+  mutable std::shared_ptr<const Regions> m_regions;
+  mutable Visibility m_visibility;  ///< cache of visibility() for:
+  mutable std::optional<std::tuple<ViewClip, Vec3, Vec3>> m_visibility_for;  ///< clip, eye, focus
+  mutable uint64_t m_visibility_revision = 0;
   std::optional<ShadowEstimate> m_last_estimate;
   std::vector<ShadowPair> m_last_pairs;
   uint64_t m_job_revision = 0;  ///< the document's revision when the running job started

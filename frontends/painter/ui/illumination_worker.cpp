@@ -7,10 +7,9 @@
 
 namespace hilight::painter::ui {
 
-IlluminationWorker::IlluminationWorker(std::vector<std::unique_ptr<Renderer>> stages, const Scene& scene,
-                                       std::function<void()> on_result)
-    : m_stages(std::move(stages)), m_on_result(std::move(on_result)) {
-  if (m_stages.empty()) throw std::logic_error("IlluminationWorker: no renderer");
+IlluminationWorker::IlluminationWorker(std::function<Stages()> make_stages, const Scene& scene, std::function<void()> on_result)
+    : m_make_stages(std::move(make_stages)), m_on_result(std::move(on_result)) {
+  if (!m_make_stages) throw std::logic_error("IlluminationWorker: no renderers");
   // Renderers seed each point's bounce samples from the point itself, so
   // illuminating in chunks gives the same values as all at once. Few chunks:
   // Embree keeps the bounce gathers of its last 4 point sets, and more
@@ -69,15 +68,41 @@ std::string IlluminationWorker::error() const {
   return m_error;
 }
 
+bool IlluminationWorker::make_stages(std::unique_lock<std::mutex>& lock) {
+  if (!m_stages.empty()) return true;
+  lock.unlock();
+  std::string error;
+  Stages stages;
+  try {
+    stages = m_make_stages();
+    if (stages.empty()) error = "no display renderer";
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  lock.lock();
+  m_stages = std::move(stages);
+  if (!error.empty()) m_error = error;
+  return error.empty();
+}
+
 void IlluminationWorker::run() {
   std::unique_lock lock(m_mutex);
   for (;;) {
+    // Idle after the first answer: make the renderers now, before lights ask for them.
+    if (m_answered && m_stages.empty() && m_error.empty() && !m_pending && !m_stop) make_stages(lock);
     m_wake.wait(lock, [this] { return m_stop || m_pending; });
     if (m_stop) return;
     const Lighting lights = std::move(m_pending->first);
     const uint64_t tag = m_pending->second;
     m_pending.reset();
     m_running = true;
+    m_answered = true;
+    if (!lights.empty() && !make_stages(lock)) {
+      m_running = false;
+      if (m_on_result) m_on_result();
+      if (!m_pending) m_idle.notify_all();
+      continue;
+    }
     // No lights: darkness at once, without asking a renderer.
     const size_t stages = lights.empty() ? 1 : m_stages.size();
     for (size_t stage = 0; stage < stages; ++stage) {

@@ -29,11 +29,14 @@ struct Illumination {
 
 class IlluminationWorker {
 public:
-  /// `stages` (at least one) bound to `scene`, quick to exact; used only by
-  /// the worker's thread. `on_result` (optional) is called from that thread
-  /// after each result is ready (the UI wakes its event loop with it).
-  IlluminationWorker(std::vector<std::unique_ptr<Renderer>> stages, const Scene& scene,
-                     std::function<void()> on_result = {});
+  using Stages = std::vector<std::unique_ptr<Renderer>>;
+  /// `make_stages` returns the renderers (at least one) bound to `scene`,
+  /// quick to exact. It runs on the worker's thread, once, after the first
+  /// request is answered (a request without lights needs no renderer): a
+  /// renderer binding a big scene takes seconds, which the window's first
+  /// frame does not wait for. `on_result` (optional) is called from that
+  /// thread after each result is ready (the UI wakes its event loop with it).
+  IlluminationWorker(std::function<Stages()> make_stages, const Scene& scene, std::function<void()> on_result = {});
   ~IlluminationWorker();
   IlluminationWorker(const IlluminationWorker&) = delete;
   IlluminationWorker& operator=(const IlluminationWorker&) = delete;
@@ -50,8 +53,12 @@ public:
 
 private:
   void run();
+  /// Makes the stages (unlocked) unless made; false if that failed (m_error says why).
+  bool make_stages(std::unique_lock<std::mutex>& lock);
 
-  std::vector<std::unique_ptr<Renderer>> m_stages;
+  std::function<Stages()> m_make_stages;
+  Stages m_stages;  ///< the worker thread's only
+  bool m_answered = false;  ///< a first request was answered: the stages may be made ahead
   std::function<void()> m_on_result;
   static constexpr size_t kChunks = 4;
   std::vector<SurfacePoints> m_whole;   ///< all the scene's vertices (one entry)

@@ -10,9 +10,11 @@ const char* kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec4 colour;
 uniform mat4 view_projection;
+uniform float section;  // the section's height: above it is clipped
 out vec4 v_colour;
 void main() {
   v_colour = colour;
+  gl_ClipDistance[0] = section - position.y;
   gl_Position = view_projection * vec4(position, 1.0);
 }
 )";
@@ -74,6 +76,22 @@ void SceneMesh::set_colours(const std::vector<VertexColour>& colours) {
   glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(colours.size() * sizeof(VertexColour)), colours.data());
 }
 
+void SceneMesh::set_shown_triangles(const Scene& scene, const std::vector<uint8_t>& shown) {
+  // The cutaway changes with the camera: the index buffer holds only what is shown.
+  std::vector<std::array<uint32_t, 3>> kept;
+  if (shown.empty()) kept = scene.triangles;
+  else {
+    kept.reserve(scene.triangles.size());
+    for (size_t t = 0; t < scene.triangles.size(); ++t)
+      if (shown[t]) kept.push_back(scene.triangles[t]);
+  }
+  glBindVertexArray(m_vao);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_indices);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(kept.size() * sizeof(kept[0])), kept.data(), GL_STATIC_DRAW);
+  glBindVertexArray(0);
+  m_index_count = GLsizei(kept.size() * 3);
+}
+
 void SceneMesh::draw(const glm::mat4& view_projection) const {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -82,9 +100,12 @@ void SceneMesh::draw(const glm::mat4& view_projection) const {
   glFrontFace(GL_CCW);
   m_program->use();
   m_program->set("view_projection", view_projection);
+  m_program->set("section", m_section ? *m_section : 3.0e38f);
+  glEnable(GL_CLIP_DISTANCE0);
   glBindVertexArray(m_vao);
   glDrawElements(GL_TRIANGLES, m_index_count, GL_UNSIGNED_INT, nullptr);
   glBindVertexArray(0);
+  glDisable(GL_CLIP_DISTANCE0);
   glDisable(GL_CULL_FACE);
 }
 

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace hilight::painter::ui {
@@ -27,6 +28,10 @@ public:
 
   /// One entry per scene vertex.
   void set_colours(const std::vector<VertexColour>& colours);
+  /// Draws only the triangles with `shown[t]` set (the cutaway); empty: all.
+  void set_shown_triangles(const Scene& scene, const std::vector<uint8_t>& shown);
+  /// Clips everything above this height (the section); nullopt: nothing.
+  void set_section(std::optional<float> height) { m_section = height; }
   /// Back faces are culled: rooms are wound inward, so from outside one sees
   /// in through the near walls, and each vertex's colour is that of the side
   /// its normal faces.
@@ -36,6 +41,7 @@ private:
   GLuint m_vao = 0, m_positions = 0, m_colours = 0, m_indices = 0;
   GLsizei m_index_count = 0;
   size_t m_vertex_count = 0;
+  std::optional<float> m_section;
   std::unique_ptr<GlProgram> m_program;
 };
 
