@@ -26,7 +26,9 @@ using namespace std::chrono_literals;
 /// test binary does not link X).
 class FakeInput {
 public:
+  /// Not ready() without a display of its own: "" would open $DISPLAY instead.
   explicit FakeInput(const std::string& display) {
+    if (display.empty()) return;
     m_x11 = ::dlopen("libX11.so.6", RTLD_NOW | RTLD_LOCAL);
     m_xtst = ::dlopen("libXtst.so.6", RTLD_NOW | RTLD_LOCAL);
     if (!m_x11 || !m_xtst) return;
@@ -149,19 +151,19 @@ bool wait_for(const std::function<bool()>& done, std::chrono::milliseconds limit
   return done();
 }
 
+/// True (and says why) when the test cannot drive a window: no Xvfb of its own, or no XTest.
+bool skip_without_input(const PrivateXServer& server, const FakeInput& input) {
+  if (server.display().empty()) std::cout << "SKIPPED: cannot start Xvfb" << std::endl;
+  else if (!input.ready()) std::cout << "SKIPPED: no XTest (libXtst.so.6) to send input events" << std::endl;
+  return !input.ready();
+}
+
 } // namespace
 
 TEST_CASE("painter ui: mouse and keys paint, fine-tune, orbit, undo and quit", "[painter-ui]") {
   PrivateXServer server;
-  if (server.display().empty()) {
-    std::cout << "SKIPPED: cannot start Xvfb" << std::endl;
-    return;
-  }
   FakeInput input(server.display());
-  if (!input.ready()) {
-    std::cout << "SKIPPED: no XTest (libXtst.so.6) to send input events" << std::endl;
-    return;
-  }
+  if (skip_without_input(server, input)) return;
   const fs::path dir = test::output_dir("painter_ui_interactive");
   const fs::path recording = dir / "session.json";
   const pid_t pid = spawn_hilight({"paint", HILIGHT_SOURCE_DIR "/scenes/room.obj", "--lights",
@@ -230,15 +232,8 @@ TEST_CASE("painter ui: mouse and keys paint, fine-tune, orbit, undo and quit", "
 TEST_CASE("painter ui: a double click and the building keys record the focus, cutaway, section, plan and a walk, and the recording replays",
           "[painter-ui][building]") {
   PrivateXServer server;
-  if (server.display().empty()) {
-    std::cout << "SKIPPED: cannot start Xvfb" << std::endl;
-    return;
-  }
   FakeInput input(server.display());
-  if (!input.ready()) {
-    std::cout << "SKIPPED: no XTest (libXtst.so.6) to send input events" << std::endl;
-    return;
-  }
+  if (skip_without_input(server, input)) return;
   const fs::path dir = test::output_dir("painter_ui_building_keys");
   const fs::path recording = dir / "session.json";
   const pid_t pid = spawn_hilight({"paint", HILIGHT_SOURCE_DIR "/scenes/room.obj", "--size", "1280x800", "--record", recording.string()},
@@ -308,15 +303,8 @@ TEST_CASE("painter ui: a double click and the building keys record the focus, cu
 
 TEST_CASE("painter ui: a brush value typed out of range is clamped, recorded, and never quits", "[painter-ui]") {
   PrivateXServer server;
-  if (server.display().empty()) {
-    std::cout << "SKIPPED: cannot start Xvfb" << std::endl;
-    return;
-  }
   FakeInput input(server.display());
-  if (!input.ready()) {
-    std::cout << "SKIPPED: no XTest (libXtst.so.6) to send input events" << std::endl;
-    return;
-  }
+  if (skip_without_input(server, input)) return;
   const fs::path dir = test::output_dir("painter_ui_typed_brush");
   const fs::path recording = dir / "session.json";
   const pid_t pid = spawn_hilight({"paint", HILIGHT_SOURCE_DIR "/scenes/room.obj", "--lights", HILIGHT_SOURCE_DIR "/scenes/room-4lights.json",
