@@ -147,14 +147,14 @@ private:
       int used = 0;
       for (uint32_t s : cell.corner)
         if (s != kNoNode) slots[used++] = s;
-      const Rgb* exact = m_tests.node(size_t(c.test));
       double wrong = 0, total = 0;
       for (size_t v = 0; v < vc; ++v) {
         Rgb blended(0.f);
-        for (int k = 0; k < used; ++k) blended += m_nodes.node(slots[k])[v];
+        for (int k = 0; k < used; ++k) blended += m_nodes.value(slots[k], v);
         if (used) blended /= float(used);
-        wrong += std::abs(double(luminance(exact[v])) - double(luminance(blended)));
-        total += double(luminance(exact[v]));
+        const Rgb exact = m_tests.value(size_t(c.test), v);
+        wrong += std::abs(double(luminance(exact)) - double(luminance(blended)));
+        total += double(luminance(exact));
       }
       c.error = total > 0 ? wrong / total : (wrong > 0 ? 1.0 : 0.0);
     });

@@ -21,13 +21,10 @@ struct PackedNode {
   std::vector<uint16_t> halves;   ///< 3 per non-zero vertex
 };
 
-PackedNode pack(const Rgb* values, size_t count) {
+/// A node kept as halves over `scale` (3 per vertex), with its dark runs found.
+PackedNode pack_halves(float scale, const uint16_t* h, size_t count) {
   PackedNode node;
-  for (size_t v = 0; v < count; ++v) node.scale = std::max({node.scale, values[v].r, values[v].g, values[v].b});
-  const float inverse = node.scale > 0.f ? 1.f / node.scale : 0.f;
-  std::vector<uint16_t> h(3 * count);
-  for (size_t v = 0; v < count; ++v)
-    for (int c = 0; c < 3; ++c) h[3 * v + c] = uint16_t(glm::packHalf1x16(std::max(0.f, values[v][c]) * inverse));
+  node.scale = scale;
   auto nonzero = [&](size_t v) { return (h[3 * v] | h[3 * v + 1] | h[3 * v + 2]) != 0; };
   for (size_t v = 0; v < count;) {
     const size_t zeros_start = v;
@@ -36,21 +33,22 @@ PackedNode pack(const Rgb* values, size_t count) {
     while (v < count && nonzero(v)) ++v;
     node.runs.push_back(uint32_t(values_start - zeros_start));
     node.runs.push_back(uint32_t(v - values_start));
-    node.halves.insert(node.halves.end(), h.begin() + std::ptrdiff_t(3 * values_start), h.begin() + std::ptrdiff_t(3 * v));
+    node.halves.insert(node.halves.end(), h + 3 * values_start, h + 3 * v);
   }
   return node;
 }
 
-/// The values `pack` kept; false when the runs do not cover `count` vertices.
-bool unpack(const PackedNode& node, Rgb* out, size_t count) {
+/// The halves `pack_halves` kept, dark runs as zeros (`out`: 3 per vertex, zeroed);
+/// false when the runs do not cover `count` vertices.
+bool unpack(const PackedNode& node, uint16_t* out, size_t count) {
   size_t v = 0, h = 0;
   for (size_t r = 0; r + 1 < node.runs.size(); r += 2) {
     if (node.runs[r] > count - v) return false;
-    for (uint32_t k = 0; k < node.runs[r]; ++k) out[v++] = Rgb(0.f);
+    v += node.runs[r];
     if (node.runs[r + 1] > count - v || 3 * size_t(node.runs[r + 1]) > node.halves.size() - h) return false;
-    for (uint32_t k = 0; k < node.runs[r + 1]; ++k, h += 3)
-      out[v++] = node.scale * Rgb(glm::unpackHalf1x16(node.halves[h]), glm::unpackHalf1x16(node.halves[h + 1]),
-                                  glm::unpackHalf1x16(node.halves[h + 2]));
+    std::copy_n(node.halves.begin() + std::ptrdiff_t(h), 3 * size_t(node.runs[r + 1]), out + 3 * v);
+    v += node.runs[r + 1];
+    h += 3 * size_t(node.runs[r + 1]);
   }
   return v == count && h == node.halves.size() && node.runs.size() % 2 == 0;
 }
@@ -67,28 +65,45 @@ bool get(std::istream& in, T* data, size_t count) {
 
 } // namespace
 
+float NodeResponses::half_to_float(uint16_t h) { return glm::unpackHalf1x16(h); }
+
 void NodeResponses::trace(const Scene& scene, Renderer& renderer, const std::vector<Vec3>& positions) {
   if (positions.empty()) return;
   m_vertex_count = scene.positions.size();
-  Lighting lights;
-  for (const auto& p : positions) lights.push_back(Light::point(p, Rgb(1.f)));
-  std::vector<Rgb> traced = renderer.unit_responses(SurfacePoints::from_vertices(scene), lights, Transport::IndirectOnly);
   const size_t vc = m_vertex_count;
-  tbb::parallel_for(size_t(0), lights.size(), [&](size_t slot) {
-    Rgb* node = traced.data() + slot * vc;
-    unpack(pack(node, vc), node, vc);
-  });
-  m_data.insert(m_data.end(), traced.begin(), traced.end());
+  // A few nodes a renderer call: the float responses of all of them at once
+  // would be twice the halves kept (1.3 GB for a 400k-triangle building).
+  constexpr size_t kBatch = 16;
+  for (size_t begin = 0; begin < positions.size(); begin += kBatch) {
+    Lighting lights;
+    for (size_t n = begin; n < std::min(positions.size(), begin + kBatch); ++n) lights.push_back(Light::point(positions[n], Rgb(1.f)));
+    const std::vector<Rgb> traced = renderer.unit_responses(SurfacePoints::from_vertices(scene), lights, Transport::IndirectOnly);
+    const size_t first = count();
+    m_scales.resize(first + lights.size());
+    m_halves.resize(3 * vc * m_scales.size());
+    tbb::parallel_for(size_t(0), lights.size(), [&](size_t k) {
+      const Rgb* node = traced.data() + k * vc;
+      float scale = 0.f;
+      for (size_t v = 0; v < vc; ++v) scale = std::max({scale, node[v].r, node[v].g, node[v].b});
+      const float inverse = scale > 0.f ? 1.f / scale : 0.f;
+      uint16_t* h = &m_halves[3 * (first + k) * vc];
+      for (size_t v = 0; v < vc; ++v)
+        for (int c = 0; c < 3; ++c) h[3 * v + c] = uint16_t(glm::packHalf1x16(std::max(0.f, node[v][c]) * inverse));
+      m_scales[first + k] = scale;
+    });
+  }
 }
 
 void NodeResponses::append(const NodeResponses& other, size_t slot) {
   m_vertex_count = other.m_vertex_count;
-  m_data.insert(m_data.end(), other.node(slot), other.node(slot) + other.m_vertex_count);
+  const auto from = other.m_halves.begin() + std::ptrdiff_t(3 * slot * other.m_vertex_count);
+  m_halves.insert(m_halves.end(), from, from + std::ptrdiff_t(3 * other.m_vertex_count));
+  m_scales.push_back(other.m_scales[slot]);
 }
 
 void NodeResponses::write(std::ostream& out) const {
   for (size_t slot = 0; slot < count(); ++slot) {
-    const PackedNode node = pack(this->node(slot), m_vertex_count);
+    const PackedNode node = pack_halves(m_scales[slot], &m_halves[3 * slot * m_vertex_count], m_vertex_count);
     const uint64_t sizes[2] = {node.runs.size(), node.halves.size()};
     put(out, &node.scale, 1);
     put(out, sizes, 2);
@@ -100,7 +115,8 @@ void NodeResponses::write(std::ostream& out) const {
 bool NodeResponses::read(std::istream& in, size_t vertex_count, size_t count) {
   if (vertex_count == 0 || vertex_count >= (uint64_t(1) << 32) || count > (size_t(1) << 24)) return false;
   m_vertex_count = vertex_count;
-  m_data.assign(vertex_count * count, Rgb(0.f));
+  m_halves.assign(3 * vertex_count * count, uint16_t(0));
+  m_scales.assign(count, 0.f);
   for (size_t slot = 0; slot < count; ++slot) {
     PackedNode node;
     uint64_t sizes[2];
@@ -110,7 +126,8 @@ bool NodeResponses::read(std::istream& in, size_t vertex_count, size_t count) {
     node.runs.resize(sizes[0]);
     node.halves.resize(sizes[1]);
     if (!get(in, node.runs.data(), sizes[0]) || !get(in, node.halves.data(), sizes[1])) return false;
-    if (!unpack(node, m_data.data() + slot * vertex_count, vertex_count)) return false;
+    if (!unpack(node, &m_halves[3 * slot * vertex_count], vertex_count)) return false;
+    m_scales[slot] = node.scale;
   }
   return true;
 }
@@ -120,11 +137,10 @@ NodeSampleTable::NodeSampleTable(const NodeResponses& nodes, const Scene& scene,
   const size_t m = m_samples;
   m_data.resize(nodes.count() * m);
   tbb::parallel_for(size_t(0), nodes.count(), [&](size_t s) {
-    const Rgb* node = nodes.node(s);
     for (size_t i = 0; i < m; ++i) {
       const SurfaceBinding& b = samples.binding[i];
       const auto& tri = scene.triangles[b.triangle];
-      m_data[s * m + i] = (1.f - b.u - b.v) * node[tri[0]] + b.u * node[tri[1]] + b.v * node[tri[2]];
+      m_data[s * m + i] = (1.f - b.u - b.v) * nodes.value(s, tri[0]) + b.u * nodes.value(s, tri[1]) + b.v * nodes.value(s, tri[2]);
     }
   });
 }

@@ -26,17 +26,26 @@ public:
   /// Appends node `slot` of `other` (same vertices).
   void append(const NodeResponses& other, size_t slot);
 
-  size_t count() const { return m_vertex_count ? m_data.size() / m_vertex_count : 0; }
+  size_t count() const { return m_scales.size(); }
   size_t vertex_count() const { return m_vertex_count; }
-  const Rgb* node(size_t slot) const { return m_data.data() + slot * m_vertex_count; }
+  /// Node `slot`'s bounce at `vertex`.
+  Rgb value(size_t slot, size_t vertex) const {
+    const uint16_t* h = &m_halves[3 * (slot * m_vertex_count + vertex)];
+    return m_scales[slot] * Rgb(half_to_float(h[0]), half_to_float(h[1]), half_to_float(h[2]));
+  }
 
   void write(std::ostream& out) const;
   /// False when the stream does not hold `count` nodes over `vertex_count` vertices.
   bool read(std::istream& in, size_t vertex_count, size_t count);
 
 private:
+  static float half_to_float(uint16_t h);
   size_t m_vertex_count = 0;
-  std::vector<Rgb> m_data;  ///< node-major: [slot * vertex_count + vertex]
+  // Kept in memory as on disk, in half floats over each node's largest value
+  // (6 bytes a vertex, not 12: a 400k-triangle building's cache is several
+  // hundred MB even so); value() gives exactly what the disk's reader gives.
+  std::vector<uint16_t> m_halves;  ///< node-major: 3 × [slot * vertex_count + vertex]
+  std::vector<float> m_scales;     ///< per node
 };
 
 /// The nodes' bounce at one sample set's points (barycentric from each
