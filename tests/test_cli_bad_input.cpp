@@ -192,6 +192,28 @@ TEST_CASE("render: NaN or infinite vertex coordinates are refused", "[cli][bad-i
   CHECK_THAT(r.err, Contains("NaN or infinite"));
 }
 
+TEST_CASE("render: a binary PLY that assimp would misread is refused rather than misread or crashed on", "[cli][bad-input]") {
+  // assimp skips whitespace after end_header even in binary data: a first
+  // float starting with byte 0x0a (-0.02) shifts every value after it, and
+  // assimp then aborts on an assertion (measured) or reads a garbled mesh.
+  fs::path dir = test::output_dir("bad_input_binary_ply_whitespace");
+  fs::path scene = dir / "triangle.ply";
+  const float xyz[9] = {-0.02f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f};
+  const int32_t face[3] = {0, 1, 2};
+  {
+    std::ofstream out(scene, std::ios::binary);
+    out << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+           "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    out.write(reinterpret_cast<const char*>(xyz), sizeof(xyz));
+    out.put(char(3));
+    out.write(reinterpret_cast<const char*>(face), sizeof(face));
+  }
+  REQUIRE(test::read_file(scene).find("end_header\n\n") != std::string::npos);  // the first data byte is 0x0a
+  auto r = bad_render(dir, scene.string(), kRoomLights);
+  check_one_line_error(r, scene.string());
+  CHECK_THAT(r.err, Contains("whitespace byte"));
+}
+
 TEST_CASE("render: malformed lights JSON is named with its problem", "[cli][bad-input]") {
   fs::path dir = test::output_dir("bad_input_lights");
   fs::path lights = dir / "lights.json";

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -111,6 +112,29 @@ void check_off_header(const fs::path& path) {
   throw InputError(path.string(), message.str());
 }
 
+// assimp's PLY reader skips whitespace after end_header even in a binary
+// file: data starting with a byte such as 0x0a (the float -0.02) shifts every
+// value after it, and the mesh comes in garbled, or fails on an index out of
+// range. Refuse such a file rather than read it wrong.
+void check_binary_ply_start(const fs::path& path) {
+  std::string ext = path.extension().string();
+  for (auto& c : ext) c = char(std::tolower(c));
+  if (ext != ".ply") return;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  bool binary = false;
+  for (int lines = 0; std::getline(in, line) && lines < 10000; ++lines) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.rfind("format binary", 0) == 0) binary = true;
+    if (line == "end_header") break;
+  }
+  const int first = in.get();
+  if (!binary || first == std::char_traits<char>::eof() || !std::isspace(first)) return;
+  throw InputError(path.string(),
+                   "binary PLY whose data starts with a whitespace byte, which assimp (hilight's scene reader) misreads: "
+                   "save it as ASCII PLY, or with another vertex order or a leading property");
+}
+
 } // namespace
 
 Scene finish_scene(Scene scene, const SceneLoadOptions& options) {
@@ -151,6 +175,7 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   if (!std::ifstream(path, std::ios::binary)) throw InputError(file, "cannot open (permission denied?)");
 
   check_off_header(path);
+  check_binary_ply_start(path);
   Assimp::Importer importer;
   // Points and lines carry no surface: drop them during import.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
