@@ -151,6 +151,19 @@ bool wait_for(const std::function<bool()>& done, std::chrono::milliseconds limit
   return done();
 }
 
+/// Ctrl-Q, then waits for the painter to exit (killed after 15 s): true when it quit by itself.
+bool quit_with_ctrl_q(FakeInput& input, pid_t pid, int& status) {
+  input.key("Control_L", true);
+  input.tap("q");
+  input.key("Control_L", false);
+  const bool quit = wait_for([&] { return ::waitpid(pid, &status, WNOHANG) == pid; }, 15s);
+  if (!quit) {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+  }
+  return quit;
+}
+
 /// True (and says why) when the test cannot drive a window: no Xvfb of its own, or no XTest.
 bool skip_without_input(const PrivateXServer& server, const FakeInput& input) {
   if (server.display().empty()) std::cout << "SKIPPED: cannot start Xvfb" << std::endl;
@@ -241,7 +254,6 @@ TEST_CASE("painter ui: a double click and the building keys record the focus, cu
   REQUIRE(pid > 0);
   auto recorded = [&](const std::string& text) { return test::read_file(recording).find(text) != std::string::npos; };
   int status = 0;
-  auto exited = [&] { return ::waitpid(pid, &status, WNOHANG) == pid; };
   // Nothing is recorded before the first key: give the window time to show.
   std::this_thread::sleep_for(4000ms);
   // A double click on the floor (right of the panel) focuses its room; its
@@ -270,14 +282,7 @@ TEST_CASE("painter ui: a double click and the building keys record the focus, cu
   const bool walked = wait_for([&] { return recorded("\"camera\""); }, 10s);
   input.tap("v");
   std::this_thread::sleep_for(300ms);
-  input.key("Control_L", true);
-  input.tap("q");
-  input.key("Control_L", false);
-  const bool quit = wait_for(exited, 15s);
-  if (!quit) {
-    ::kill(pid, SIGKILL);
-    ::waitpid(pid, &status, 0);
-  }
+  const bool quit = quit_with_ctrl_q(input, pid, status);
   const std::string text = test::read_file(recording);
   INFO("recording: " << text);
   INFO("stderr: " << test::read_file(dir / "stderr.txt"));
@@ -333,14 +338,7 @@ TEST_CASE("painter ui: a brush value typed out of range is clamped, recorded, an
   const bool brush = wait_for([&] { return recorded("\"brush\""); }, 10s);
   std::this_thread::sleep_for(500ms);
   const bool alive = !exited();
-  input.key("Control_L", true);
-  input.tap("q");
-  input.key("Control_L", false);
-  const bool quit = wait_for(exited, 15s);
-  if (!quit) {
-    ::kill(pid, SIGKILL);
-    ::waitpid(pid, &status, 0);
-  }
+  const bool quit = quit_with_ctrl_q(input, pid, status);
   const std::string text = test::read_file(recording);
   INFO("recording: " << text);
   INFO("stderr: " << test::read_file(dir / "stderr.txt"));
