@@ -28,7 +28,7 @@ using adaptive::Cell;
 using adaptive::CellTree;
 using adaptive::kNoNode;
 
-constexpr uint32_t kFormat = 1;
+constexpr uint32_t kFormat = 2;  // 2: nodes in blocks of vertices, each with its scale
 
 class AdaptiveCache final : public LightCache {
 public:

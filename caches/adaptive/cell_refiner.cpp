@@ -148,13 +148,21 @@ private:
       for (uint32_t s : cell.corner)
         if (s != kNoNode) slots[used++] = s;
       double wrong = 0, total = 0;
-      for (size_t v = 0; v < vc; ++v) {
-        Rgb blended(0.f);
-        for (int k = 0; k < used; ++k) blended += m_nodes.value(slots[k], v);
-        if (used) blended /= float(used);
-        const Rgb exact = m_tests.value(size_t(c.test), v);
-        wrong += std::abs(double(luminance(exact)) - double(luminance(blended)));
-        total += double(luminance(exact));
+      // A block of vertices at a time, each node unpacked once.
+      std::vector<Rgb> exact(NodeResponses::kBlock), blended(NodeResponses::kBlock), corner(NodeResponses::kBlock);
+      for (size_t block = 0; block < m_tests.blocks(); ++block) {
+        const size_t n = std::min(NodeResponses::kBlock, vc - block * NodeResponses::kBlock);
+        m_tests.block_values(size_t(c.test), block, exact.data());
+        std::fill_n(blended.begin(), n, Rgb(0.f));
+        for (int k = 0; k < used; ++k) {
+          m_nodes.block_values(slots[k], block, corner.data());
+          for (size_t v = 0; v < n; ++v) blended[v] += corner[v];
+        }
+        for (size_t v = 0; v < n; ++v) {
+          if (used) blended[v] /= float(used);
+          wrong += std::abs(double(luminance(exact[v])) - double(luminance(blended[v])));
+          total += double(luminance(exact[v]));
+        }
       }
       c.error = total > 0 ? wrong / total : (wrong > 0 ? 1.0 : 0.0);
     });

@@ -18,7 +18,7 @@
 namespace hilight {
 namespace {
 
-constexpr uint32_t kFormat = 1;
+constexpr uint32_t kFormat = 2;  // 2: nodes in blocks of vertices, each with its scale
 
 class GridCache final : public LightCache {
 public:

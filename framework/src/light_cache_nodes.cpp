@@ -11,46 +11,61 @@ namespace hilight {
 
 namespace {
 
-/// One node's bounce over every vertex as it is kept on disk: values over the
-/// node's largest channel in half floats (a bounce is ~1e-7 in millimetre
-/// scenes: below half's range without the scale), and the runs of vertices
-/// with no bounce at all (other rooms, behind walls) as lengths only.
-struct PackedNode {
-  float scale = 0.f;
-  std::vector<uint32_t> runs;     ///< alternating: zero vertices, then non-zero vertices, ...
-  std::vector<uint16_t> halves;   ///< 3 per non-zero vertex
-};
+using Block = NodeResponses::Block;
 
-/// A node kept as halves over `scale` (3 per vertex), with its dark runs found.
-PackedNode pack_halves(float scale, const uint16_t* h, size_t count) {
-  PackedNode node;
-  node.scale = scale;
-  auto nonzero = [&](size_t v) { return (h[3 * v] | h[3 * v + 1] | h[3 * v + 2]) != 0; };
+/// A block from `count` vertices' halves (3 each) over `scale`: only its lit runs kept.
+Block pack_block(float scale, const uint16_t* h, size_t count) {
+  Block block;
+  block.scale = scale;
+  auto lit = [&](size_t v) { return (h[3 * v] | h[3 * v + 1] | h[3 * v + 2]) != 0; };
   for (size_t v = 0; v < count;) {
-    const size_t zeros_start = v;
-    while (v < count && !nonzero(v)) ++v;
-    const size_t values_start = v;
-    while (v < count && nonzero(v)) ++v;
-    node.runs.push_back(uint32_t(values_start - zeros_start));
-    node.runs.push_back(uint32_t(v - values_start));
-    node.halves.insert(node.halves.end(), h + 3 * values_start, h + 3 * v);
+    while (v < count && !lit(v)) ++v;
+    if (v == count) break;
+    block.run_start.push_back(uint32_t(v));
+    block.run_offset.push_back(uint32_t(block.halves.size() / 3));
+    const size_t start = v;
+    while (v < count && lit(v)) ++v;
+    block.halves.insert(block.halves.end(), h + 3 * start, h + 3 * v);
   }
-  return node;
+  block.run_offset.push_back(uint32_t(block.halves.size() / 3));
+  return block;
 }
 
-/// The halves `pack_halves` kept, dark runs as zeros (`out`: 3 per vertex, zeroed);
-/// false when the runs do not cover `count` vertices.
-bool unpack(const PackedNode& node, uint16_t* out, size_t count) {
-  size_t v = 0, h = 0;
-  for (size_t r = 0; r + 1 < node.runs.size(); r += 2) {
-    if (node.runs[r] > count - v) return false;
-    v += node.runs[r];
-    if (node.runs[r + 1] > count - v || 3 * size_t(node.runs[r + 1]) > node.halves.size() - h) return false;
-    std::copy_n(node.halves.begin() + std::ptrdiff_t(h), 3 * size_t(node.runs[r + 1]), out + 3 * v);
-    v += node.runs[r + 1];
-    h += 3 * size_t(node.runs[r + 1]);
+size_t run_length(const Block& b, size_t r) { return b.run_offset[r + 1] - b.run_offset[r]; }
+
+/// On disk a block's runs alternate: dark vertices, then lit ones, ...
+std::vector<uint32_t> alternating_runs(const Block& b) {
+  std::vector<uint32_t> runs;
+  uint32_t at = 0;
+  for (size_t r = 0; r < b.run_start.size(); ++r) {
+    runs.push_back(b.run_start[r] - at);
+    runs.push_back(uint32_t(run_length(b, r)));
+    at = b.run_start[r] + runs.back();
   }
-  return v == count && h == node.halves.size() && node.runs.size() % 2 == 0;
+  return runs;
+}
+
+/// The block that alternating `runs` and `halves` describe over `count`
+/// vertices; false when they do not cover exactly that (damage).
+bool block_from_runs(const std::vector<uint32_t>& runs, std::vector<uint16_t> halves, size_t count, Block& block) {
+  if (runs.size() % 2 != 0) return false;
+  size_t v = 0, lit = 0;
+  block.run_start.clear();
+  block.run_offset.clear();
+  for (size_t r = 0; r < runs.size(); r += 2) {
+    if (runs[r] > count - v) return false;
+    v += runs[r];
+    if (runs[r + 1] > count - v || 3 * (lit + runs[r + 1]) > halves.size()) return false;
+    if (runs[r + 1] == 0) continue;
+    block.run_start.push_back(uint32_t(v));
+    block.run_offset.push_back(uint32_t(lit));
+    v += runs[r + 1];
+    lit += runs[r + 1];
+  }
+  if (v > count || 3 * lit != halves.size()) return false;
+  block.run_offset.push_back(uint32_t(lit));
+  block.halves = std::move(halves);
+  return true;
 }
 
 template <class T>
@@ -63,72 +78,117 @@ bool get(std::istream& in, T* data, size_t count) {
   return bool(in.read(reinterpret_cast<char*>(data), std::streamsize(count * sizeof(T))));
 }
 
+/// Vertices [begin, end) of `all`.
+SurfacePoints vertex_range(const SurfacePoints& all, size_t begin, size_t end) {
+  SurfacePoints points;
+  points.positions.assign(all.positions.begin() + std::ptrdiff_t(begin), all.positions.begin() + std::ptrdiff_t(end));
+  points.normals.assign(all.normals.begin() + std::ptrdiff_t(begin), all.normals.begin() + std::ptrdiff_t(end));
+  points.albedo.assign(all.albedo.begin() + std::ptrdiff_t(begin), all.albedo.begin() + std::ptrdiff_t(end));
+  return points;
+}
+
 } // namespace
 
 float NodeResponses::half_to_float(uint16_t h) { return glm::unpackHalf1x16(h); }
 
+Rgb NodeResponses::value(size_t slot, size_t vertex) const {
+  const Block& b = m_nodes[slot][vertex / kBlock];
+  const uint32_t local = uint32_t(vertex % kBlock);
+  const auto after = std::upper_bound(b.run_start.begin(), b.run_start.end(), local);
+  if (after == b.run_start.begin()) return Rgb(0.f);
+  const size_t r = size_t(after - b.run_start.begin()) - 1;
+  const size_t along = local - b.run_start[r];
+  if (along >= run_length(b, r)) return Rgb(0.f);
+  const uint16_t* h = &b.halves[3 * (b.run_offset[r] + along)];
+  return b.scale * Rgb(half_to_float(h[0]), half_to_float(h[1]), half_to_float(h[2]));
+}
+
+void NodeResponses::block_values(size_t slot, size_t block, Rgb* out) const {
+  const Block& b = m_nodes[slot][block];
+  std::fill_n(out, std::min(kBlock, m_vertex_count - block * kBlock), Rgb(0.f));
+  for (size_t r = 0; r < b.run_start.size(); ++r)
+    for (size_t k = 0; k < run_length(b, r); ++k) {
+      const uint16_t* h = &b.halves[3 * (b.run_offset[r] + k)];
+      out[b.run_start[r] + k] = b.scale * Rgb(half_to_float(h[0]), half_to_float(h[1]), half_to_float(h[2]));
+    }
+}
+
+size_t NodeResponses::memory_bytes() const {
+  size_t bytes = 0;
+  for (const auto& node : m_nodes)
+    for (const Block& b : node) bytes += sizeof(Block) + 4 * (b.run_start.size() + b.run_offset.size()) + 2 * b.halves.size();
+  return bytes;
+}
+
 void NodeResponses::trace(const Scene& scene, Renderer& renderer, const std::vector<Vec3>& positions) {
   if (positions.empty()) return;
   m_vertex_count = scene.positions.size();
-  const size_t vc = m_vertex_count;
-  // A few nodes a renderer call: the float responses of all of them at once
-  // would be twice the halves kept (1.3 GB for a 400k-triangle building).
+  const size_t first = count();
+  m_nodes.resize(first + positions.size(), std::vector<Block>(blocks()));
+  const SurfacePoints all = SurfacePoints::from_vertices(scene);
+  // A block of vertices at a time, every node over it, then the next: the
+  // renderer's bounce gathers over one block are made once and dropped after
+  // it. A few nodes a call keep the float responses small.
   constexpr size_t kBatch = 16;
-  for (size_t begin = 0; begin < positions.size(); begin += kBatch) {
-    Lighting lights;
-    for (size_t n = begin; n < std::min(positions.size(), begin + kBatch); ++n) lights.push_back(Light::point(positions[n], Rgb(1.f)));
-    const std::vector<Rgb> traced = renderer.unit_responses(SurfacePoints::from_vertices(scene), lights, Transport::IndirectOnly);
-    const size_t first = count();
-    m_scales.resize(first + lights.size());
-    m_halves.resize(3 * vc * m_scales.size());
-    tbb::parallel_for(size_t(0), lights.size(), [&](size_t k) {
-      const Rgb* node = traced.data() + k * vc;
-      float scale = 0.f;
-      for (size_t v = 0; v < vc; ++v) scale = std::max({scale, node[v].r, node[v].g, node[v].b});
-      const float inverse = scale > 0.f ? 1.f / scale : 0.f;
-      uint16_t* h = &m_halves[3 * (first + k) * vc];
-      for (size_t v = 0; v < vc; ++v)
-        for (int c = 0; c < 3; ++c) h[3 * v + c] = uint16_t(glm::packHalf1x16(std::max(0.f, node[v][c]) * inverse));
-      m_scales[first + k] = scale;
-    });
+  for (size_t block = 0; block < blocks(); ++block) {
+    const size_t lo = block * kBlock, n = std::min(kBlock, m_vertex_count - lo);
+    const SurfacePoints points = vertex_range(all, lo, lo + n);
+    for (size_t begin = 0; begin < positions.size(); begin += kBatch) {
+      Lighting lights;
+      for (size_t k = begin; k < std::min(positions.size(), begin + kBatch); ++k) lights.push_back(Light::point(positions[k], Rgb(1.f)));
+      const std::vector<Rgb> traced = renderer.unit_responses(points, lights, Transport::IndirectOnly);
+      tbb::parallel_for(size_t(0), lights.size(), [&](size_t k) {
+        const Rgb* node = traced.data() + k * n;
+        float scale = 0.f;
+        for (size_t v = 0; v < n; ++v) scale = std::max({scale, node[v].r, node[v].g, node[v].b});
+        const float inverse = scale > 0.f ? 1.f / scale : 0.f;
+        std::vector<uint16_t> h(3 * n);
+        for (size_t v = 0; v < n; ++v)
+          for (int c = 0; c < 3; ++c) h[3 * v + c] = uint16_t(glm::packHalf1x16(std::max(0.f, node[v][c]) * inverse));
+        m_nodes[first + begin + k][block] = pack_block(scale, h.data(), n);
+      });
+    }
+    // With one block its gathers serve the next call too (the adaptive
+    // cache traces in rounds); with several they would only pile up.
+    if (blocks() > 1) renderer.release_scratch();
   }
 }
 
 void NodeResponses::append(const NodeResponses& other, size_t slot) {
   m_vertex_count = other.m_vertex_count;
-  const auto from = other.m_halves.begin() + std::ptrdiff_t(3 * slot * other.m_vertex_count);
-  m_halves.insert(m_halves.end(), from, from + std::ptrdiff_t(3 * other.m_vertex_count));
-  m_scales.push_back(other.m_scales[slot]);
+  m_nodes.push_back(other.m_nodes[slot]);
 }
 
 void NodeResponses::write(std::ostream& out) const {
-  for (size_t slot = 0; slot < count(); ++slot) {
-    const PackedNode node = pack_halves(m_scales[slot], &m_halves[3 * slot * m_vertex_count], m_vertex_count);
-    const uint64_t sizes[2] = {node.runs.size(), node.halves.size()};
-    put(out, &node.scale, 1);
-    put(out, sizes, 2);
-    put(out, node.runs.data(), node.runs.size());
-    put(out, node.halves.data(), node.halves.size());
-  }
+  for (const auto& node : m_nodes)
+    for (const Block& b : node) {
+      const std::vector<uint32_t> runs = alternating_runs(b);
+      const uint64_t sizes[2] = {runs.size(), b.halves.size()};
+      put(out, &b.scale, 1);
+      put(out, sizes, 2);
+      put(out, runs.data(), runs.size());
+      put(out, b.halves.data(), b.halves.size());
+    }
 }
 
 bool NodeResponses::read(std::istream& in, size_t vertex_count, size_t count) {
   if (vertex_count == 0 || vertex_count >= (uint64_t(1) << 32) || count > (size_t(1) << 24)) return false;
   m_vertex_count = vertex_count;
-  m_halves.assign(3 * vertex_count * count, uint16_t(0));
-  m_scales.assign(count, 0.f);
-  for (size_t slot = 0; slot < count; ++slot) {
-    PackedNode node;
-    uint64_t sizes[2];
-    if (!get(in, &node.scale, 1) || !get(in, sizes, 2)) return false;
-    // At most two runs and three halves a vertex: anything more is damage.
-    if (sizes[0] > 2 * vertex_count + 2 || sizes[1] > 3 * vertex_count || !std::isfinite(node.scale)) return false;
-    node.runs.resize(sizes[0]);
-    node.halves.resize(sizes[1]);
-    if (!get(in, node.runs.data(), sizes[0]) || !get(in, node.halves.data(), sizes[1])) return false;
-    if (!unpack(node, &m_halves[3 * slot * vertex_count], vertex_count)) return false;
-    m_scales[slot] = node.scale;
-  }
+  m_nodes.assign(count, std::vector<Block>(blocks()));
+  for (auto& node : m_nodes)
+    for (size_t block = 0; block < node.size(); ++block) {
+      const size_t n = std::min(kBlock, vertex_count - block * kBlock);
+      float scale = 0.f;
+      uint64_t sizes[2];
+      if (!get(in, &scale, 1) || !get(in, sizes, 2)) return false;
+      // At most two runs and three halves a vertex: anything more is damage.
+      if (sizes[0] > 2 * n + 2 || sizes[1] > 3 * n || !std::isfinite(scale)) return false;
+      std::vector<uint32_t> runs(sizes[0]);
+      std::vector<uint16_t> halves(sizes[1]);
+      if (!get(in, runs.data(), sizes[0]) || !get(in, halves.data(), sizes[1])) return false;
+      if (!block_from_runs(runs, std::move(halves), n, node[block])) return false;
+      node[block].scale = scale;
+    }
   return true;
 }
 

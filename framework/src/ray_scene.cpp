@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
+#include <mutex>
 
 #include <stdexcept>
 #include <string>
@@ -49,6 +51,27 @@ RayScene::RayScene(const Scene& scene) : m_scene(scene) {
   m_shading_step = std::max(kShadingStep * scene.diagonal(), 4.f * m_epsilon);
   m_face_normals.resize(scene.triangles.size());
   for (size_t t = 0; t < scene.triangles.size(); ++t) m_face_normals[t] = scene.face_normal(t);
+}
+
+std::shared_ptr<const RayScene> RayScene::shared(std::shared_ptr<const Scene> scene) {
+  // What keeps a shared RayScene's scene alive: a scene's address cannot be
+  // reused while its RayScene is listed and live.
+  struct Owned {
+    std::shared_ptr<const Scene> scene;
+    RayScene rays;
+    explicit Owned(std::shared_ptr<const Scene> s) : scene(std::move(s)), rays(*scene) {}
+  };
+  static std::mutex mutex;
+  static std::map<const Scene*, std::weak_ptr<const RayScene>> live;
+  const std::lock_guard lock(mutex);
+  std::erase_if(live, [](const auto& entry) { return entry.second.expired(); });
+  if (const auto found = live.find(scene.get()); found != live.end())
+    if (auto rays = found->second.lock()) return rays;
+  const Scene* key = scene.get();
+  auto owned = std::make_shared<const Owned>(std::move(scene));
+  std::shared_ptr<const RayScene> rays(owned, &owned->rays);
+  live[key] = rays;
+  return rays;
 }
 
 RayScene::~RayScene() {

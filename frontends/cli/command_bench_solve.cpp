@@ -56,7 +56,7 @@ double cold_solve_seconds(const SolveSession& session, const Target& target, con
 void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights, int repeat, const std::string& cache_root,
                        Registry& registry) {
   auto scene = std::make_shared<const Scene>(finish_scene(built.scene, {max_edge}));
-  auto rays = std::make_shared<const RayScene>(*scene);
+  auto rays = RayScene::shared(scene);
   std::mt19937_64 rng(7);
   builders::RandomLightRules rules;
   rules.min_count = rules.max_count = lights;
@@ -121,7 +121,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   if (!wants("room")) return 0;
 
   auto scene = std::make_shared<const Scene>(finish_scene(builders::furnished_room(), {max_edge}));
-  auto rays = std::make_shared<const RayScene>(*scene);
+  auto rays = RayScene::shared(scene);
   const Lighting truth = {Light::point({1.5f, 2.5f, 1.1f}, Rgb(2.f)), Light::point({4.6f, 2.4f, 1.4f}, Rgb(2.f, 1.9f, 1.7f)),
                           Light::point({2.3f, 1.6f, 3.9f}, Rgb(1.6f, 1.7f, 2.f)), Light::point({4.8f, 2.2f, 3.8f}, Rgb(1.8f))};
   // The target comes from the solve's reference renderer, as `hilight

@@ -215,7 +215,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   const bool progress = !quiet && ::isatty(2);
   set_thread_limit(ropts.threads);
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, scene_options));
-  auto rays = std::make_shared<const RayScene>(*scene);
+  auto rays = RayScene::shared(scene);
   // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).
   initial = lights_to_local(std::move(initial), scene->frame);
   s.spot_hints = lights_to_local(std::move(s.spot_hints), scene->frame);

@@ -68,7 +68,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   IlluminanceCriteria criteria = read_criteria(a.target_path);
   set_thread_limit(a.renderer.threads);
   auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, a.scene_options));
-  auto rays = std::make_shared<const RayScene>(*scene);
+  auto rays = RayScene::shared(scene);
   const auto reference = a.renderer.create(registry, scene);
   if (criteria.length_unit != scene->frame.unit)
     throw InputError(a.target_path, "its points are in " + criteria.length_unit + ", the scene in " + scene->frame.unit +

@@ -44,7 +44,7 @@ std::vector<Rgb> preview_radiance(const Scene& scene, const std::vector<Rgb>& al
 PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, std::shared_ptr<const Scene> scene,
                        std::optional<Session> script)
     : m_options(options), m_scene(std::move(scene)), m_script(std::move(script)) {
-  m_rays = std::make_shared<const RayScene>(*m_scene);
+  m_rays = RayScene::shared(m_scene);
   m_albedo = m_scene->vertex_albedo();
   m_preview = preview_radiance(*m_scene, m_albedo);
   m_document = std::make_unique<Document>(m_scene, m_rays);

@@ -15,7 +15,7 @@ void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   m_shading_points.clear();
   m_embree.reset();
   m_scene = std::move(scene);
-  m_embree = std::make_unique<RayScene>(*m_scene);
+  m_embree = RayScene::shared(m_scene);
   // Where each vertex is shaded (shading_point: creases inside their triangle);
   // computed here, once, so no later (possibly concurrent) call has to.
   const Scene& s = *m_scene;

@@ -34,6 +34,11 @@ public:
   std::string settings_key() const override;
   Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) override;
   uint64_t rays_cast() const override { return m_rays.load(); }
+  /// Drops the kept bounce gathers and shading points (results unchanged).
+  void release_scratch() override {
+    m_gathers.clear();
+    m_shading_points.clear();
+  }
   std::vector<std::pair<std::string, double>> baseline_figures(const SurfacePoints& points,
                                                                std::span<const Light> lights) override;
 
@@ -54,7 +59,7 @@ private:
 
   EmbreeSettings m_settings;
   std::shared_ptr<const Scene> m_scene;
-  std::unique_ptr<RayScene> m_embree;
+  std::shared_ptr<const RayScene> m_embree;  ///< shared with every other user of the scene
   KeyedLru<BounceGather> m_gathers{4};
   KeyedLru<std::vector<ShadingPoint>> m_shading_points{4};
   std::vector<ShadingPoint> m_vertex_shading;  ///< shading_point() of every scene vertex

@@ -1,11 +1,13 @@
 #include "first_bounce.hpp"
 
 #include "sampling.hpp"
+#include "hilight/error.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
@@ -34,6 +36,9 @@ std::array<uint32_t, 6> point_key(const Bounds& box, float diagonal, const Vec3&
 BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<ShadingPoint>& origins, int samples,
                            uint64_t seed)
     : m_es(es), m_samples(samples), m_hits(points.size() * size_t(samples)) {
+  if (es.scene().triangles.size() >= GatherHit::kNone)
+    throw InputError("the first bounce handles at most " + std::to_string(GatherHit::kNone - 1) + " triangles (the scene has " +
+                     std::to_string(es.scene().triangles.size()) + ")");
   const int per_side = samples / 2;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
@@ -58,12 +63,12 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
           const Hit hit = es.intersect(origins[i].ray_start(dir, axis, es.epsilon()), dir);
           GatherHit& g = m_hits[i * samples + side * per_side + k];
           if (hit.valid()) {
-            const float seen_side = glm::dot(es.face_normals()[hit.triangle], dir) < 0.f ? 1.f : -1.f;
-            const Vec3 seen = seen_side * es.face_normals()[hit.triangle];
+            const bool normal_side = glm::dot(es.face_normals()[hit.triangle], dir) < 0.f;
+            const Vec3 seen = (normal_side ? 1.f : -1.f) * es.face_normals()[hit.triangle];
             const auto& tri = es.scene().triangles[hit.triangle];
             uint8_t vertex_sides = 0;
             for (int v = 0; v < 3; ++v) vertex_sides |= uint8_t(glm::dot(es.scene().normals[tri[v]], seen) >= 0.f) << v;
-            g = {hit.triangle, hit.u, hit.v, seen_side, vertex_sides};
+            g = GatherHit(hit.triangle, hit.u, hit.v, normal_side, vertex_sides);
           }
         }
       }
@@ -74,7 +79,7 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
   std::vector<uint8_t> read(2 * es.scene().positions.size(), 0);
   for (const GatherHit& g : m_hits)
     if (g.valid())
-      for (int corner = 0; corner < 3; ++corner) read[2 * triangles[g.triangle][corner] + ((g.vertex_sides >> corner) & 1 ? 0 : 1)] = 1;
+      for (int corner = 0; corner < 3; ++corner) read[2 * triangles[g.triangle()][corner] + ((g.vertex_sides() >> corner) & 1 ? 0 : 1)] = 1;
   for (size_t k = 0; k < read.size(); ++k)
     if (read[k]) m_vertex_sides_read.push_back(uint32_t(k));
 }
@@ -88,13 +93,13 @@ Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light,
     const GatherHit& g = hits[k];
     if (!g.valid()) continue;
     Hit hit;
-    hit.triangle = g.triangle;
+    hit.triangle = g.triangle();
     hit.u = g.u;
     hit.v = g.v;
     const Vec3 y = m_es.hit_position(hit);
     if (hot && hot->handles(x, y)) continue;
     float e = unit_direct_irradiance_on_side(m_es, ShadingPoint{y, false}, m_es.hit_normal(hit),
-                                             g.side * m_es.face_normals()[hit.triangle], light, rays);
+                                             g.side() * m_es.face_normals()[hit.triangle], light, rays);
     if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
   }
   return sum * (2.f / float(m_samples));
@@ -112,14 +117,14 @@ Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex
   for (int k = 0; k < m_samples; ++k) {
     const GatherHit& hit = hits[k];
     if (!hit.valid()) continue;
-    const auto& tri = scene.triangles[hit.triangle];
+    const auto& tri = scene.triangles[hit.triangle()];
     if (hot && hot->handles(x, (1.f - hit.u - hit.v) * scene.positions[tri[0]] + hit.u * scene.positions[tri[1]] +
                                     hit.v * scene.positions[tri[2]]))
       continue;
     // Each vertex holds both sides' values; take the side facing the gatherer.
-    auto on_side = [&](int corner) { return vertex_direct[2 * tri[corner] + ((hit.vertex_sides >> corner) & 1 ? 0 : 1)]; };
+    auto on_side = [&](int corner) { return vertex_direct[2 * tri[corner] + ((hit.vertex_sides() >> corner) & 1 ? 0 : 1)]; };
     float e = (1.f - hit.u - hit.v) * on_side(0) + hit.u * on_side(1) + hit.v * on_side(2);
-    if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
+    if (e > 0.f) sum += scene.triangle_albedo(hit.triangle()) * e;
   }
   return sum * (2.f / float(m_samples));
 }

@@ -48,16 +48,26 @@ private:
   const RayScene& m_es;
   int m_samples;
   uint64_t m_rays = 0;
-  /// A gather ray's hit and which side of the hit triangle it saw.
+  /// A gather ray's hit and which side of the hit triangle it saw, in 12
+  /// bytes (128 of them a vertex: 380 MB over a 400k-triangle building's
+  /// vertices, where 20 bytes made 640 MB): the triangle and four flags share
+  /// one word, the barycentrics stay exact floats.
   struct GatherHit {
-    uint32_t triangle = RTC_INVALID_GEOMETRY_ID;
+    static constexpr uint32_t kTriangleBits = 28, kNone = (1u << kTriangleBits) - 1;
+    uint32_t packed = kNone;  ///< triangle | seen side (bit 28) | vertex sides (bits 29-31)
     float u = 0.f, v = 0.f;
-    float side = 1.f;  ///< +1: the side the face normal points to; -1: the other
+    GatherHit() = default;
+    GatherHit(uint32_t triangle, float u_, float v_, bool normal_side, uint8_t vertex_sides)
+        : packed(triangle | uint32_t(normal_side) << kTriangleBits | uint32_t(vertex_sides & 7u) << (kTriangleBits + 1)), u(u_), v(v_) {}
+    bool valid() const { return triangle() != kNone; }
+    uint32_t triangle() const { return packed & kNone; }
+    /// +1: the side the face normal points to; -1: the other.
+    float side() const { return packed >> kTriangleBits & 1u ? 1.f : -1.f; }
     /// Bit k: the seen side is the side vertex k's normal points to (so the
     /// interpolated mode reads that vertex's "normal side" value).
-    uint8_t vertex_sides = 0;
-    bool valid() const { return triangle != RTC_INVALID_GEOMETRY_ID; }
+    uint8_t vertex_sides() const { return uint8_t(packed >> (kTriangleBits + 1)); }
   };
+  static_assert(sizeof(GatherHit) == 12);
   std::vector<GatherHit> m_hits;  ///< point-major, m * samples
   std::vector<uint32_t> m_vertex_sides_read;
 };

@@ -207,7 +207,7 @@ void IsmRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   std::lock_guard lock(m_mutex);
   if (m_scene) throw std::logic_error("IsmRenderer: set_scene may be called once");
   const Scene& s = *scene;
-  m_rays = std::make_unique<RayScene>(s);
+  m_rays = RayScene::shared(scene);
   VulkanContext& ctx = *m_context;
   m_buffers = std::make_unique<SceneBuffers>(ctx, s, m_settings.ism_points, m_settings.seed);
   m_raster = std::make_unique<TriangleRaster>(ctx, m_buffers->vertices, spirv(kTriangleRasterVert), spirv(kTriangleRasterFrag));

@@ -55,7 +55,7 @@ private:
   IsmSettings m_settings;
   std::unique_ptr<VulkanContext> m_context;
   std::shared_ptr<const Scene> m_scene;
-  std::unique_ptr<RayScene> m_rays;
+  std::shared_ptr<const RayScene> m_rays;
   std::unique_ptr<SceneBuffers> m_buffers;
   std::unique_ptr<TriangleRaster> m_raster;
   std::unique_ptr<Kernels> m_kernels;

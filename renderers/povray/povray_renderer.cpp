@@ -47,7 +47,7 @@ void PovrayRenderer::set_scene(std::shared_ptr<const Scene> scene) {
     scene = std::move(scaled);
   }
   m_scene = std::move(scene);
-  m_rays = std::make_unique<RayScene>(*m_scene);
+  m_rays = RayScene::shared(m_scene);
 }
 
 SurfacePoints PovrayRenderer::to_pov(const SurfacePoints& points) const {

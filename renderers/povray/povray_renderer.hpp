@@ -52,7 +52,7 @@ private:
   /// at [16, 32), 4.0% at [64, 128)).
   std::shared_ptr<const Scene> m_scene;
   float m_pov_scale = 1.f;
-  std::unique_ptr<RayScene> m_rays;
+  std::shared_ptr<const RayScene> m_rays;
   /// Points and lights into POV-Ray's scale: positions × s, intensities × s²
   /// (so the irradiance I/d² at every point stays the same).
   SurfacePoints to_pov(const SurfacePoints& points) const;

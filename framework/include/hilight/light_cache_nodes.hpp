@@ -15,37 +15,54 @@ namespace hilight {
 
 class NodeResponses {
 public:
+  /// Vertices traced together and kept under one scale: the renderer keeps
+  /// the bounce gathers of one block at a time (a building's every vertex at
+  /// once would be hundreds of MB), and a dim corner of the scene keeps its
+  /// precision beside a bright one.
+  static constexpr size_t kBlock = 32768;
+
   NodeResponses() = default;
   explicit NodeResponses(size_t vertex_count) : m_vertex_count(vertex_count) {}
 
   /// Appends the bounce of a unit light at each of `positions` over every
-  /// vertex (one renderer batch), rounded as the disk keeps it so that a
-  /// solve that built a cache and one that loaded it see the same numbers.
+  /// vertex (a block of vertices at a time, a few lights a renderer call),
+  /// rounded as the disk keeps it so that a solve that built a cache and one
+  /// that loaded it see the same numbers.
   void trace(const Scene& scene, Renderer& renderer, const std::vector<Vec3>& positions);
 
   /// Appends node `slot` of `other` (same vertices).
   void append(const NodeResponses& other, size_t slot);
 
-  size_t count() const { return m_scales.size(); }
+  size_t count() const { return m_nodes.size(); }
   size_t vertex_count() const { return m_vertex_count; }
+  size_t blocks() const { return (m_vertex_count + kBlock - 1) / kBlock; }
   /// Node `slot`'s bounce at `vertex`.
-  Rgb value(size_t slot, size_t vertex) const {
-    const uint16_t* h = &m_halves[3 * (slot * m_vertex_count + vertex)];
-    return m_scales[slot] * Rgb(half_to_float(h[0]), half_to_float(h[1]), half_to_float(h[2]));
-  }
+  Rgb value(size_t slot, size_t vertex) const;
+  /// Node `slot`'s bounce at every vertex of `block` (out: up to kBlock values).
+  void block_values(size_t slot, size_t block, Rgb* out) const;
+  /// Bytes the nodes take in memory.
+  size_t memory_bytes() const;
 
   void write(std::ostream& out) const;
   /// False when the stream does not hold `count` nodes over `vertex_count` vertices.
   bool read(std::istream& in, size_t vertex_count, size_t count);
 
+  /// One node over one block, kept in memory as on disk: half floats over
+  /// the block's largest channel (a bounce is ~1e-7 in millimetre scenes:
+  /// below half's range without the scale), and only the runs of lit
+  /// vertices — in a building most of a node's vertices are other rooms,
+  /// behind walls, with no bounce at all.
+  struct Block {
+    float scale = 0.f;
+    std::vector<uint32_t> run_start;   ///< first vertex (in the block) of each lit run, ascending
+    std::vector<uint32_t> run_offset;  ///< its first vertex's index in `halves`/3; one more entry: the end
+    std::vector<uint16_t> halves;      ///< 3 per lit vertex
+  };
+
 private:
   static float half_to_float(uint16_t h);
   size_t m_vertex_count = 0;
-  // Kept in memory as on disk, in half floats over each node's largest value
-  // (6 bytes a vertex, not 12: a 400k-triangle building's cache is several
-  // hundred MB even so); value() gives exactly what the disk's reader gives.
-  std::vector<uint16_t> m_halves;  ///< node-major: 3 × [slot * vertex_count + vertex]
-  std::vector<float> m_scales;     ///< per node
+  std::vector<std::vector<Block>> m_nodes;  ///< [slot][block]
 };
 
 /// The nodes' bounce at one sample set's points (barycentric from each

@@ -6,6 +6,7 @@
 #include "hilight/scene.hpp"
 
 #include <embree3/rtcore.h>
+#include <memory>
 #include <vector>
 
 namespace hilight {
@@ -61,6 +62,10 @@ ShadingPoint smooth_hit_point(const RayScene& rays, const Hit& hit, float side =
 class RayScene {
 public:
   explicit RayScene(const Scene& scene);
+  /// The RayScene of `scene` that every renderer and solver in the process
+  /// shares while any of them holds it: one BVH however many bind the scene
+  /// (the painter binds a building five times). It keeps the scene alive.
+  static std::shared_ptr<const RayScene> shared(std::shared_ptr<const Scene> scene);
   ~RayScene();
   RayScene(const RayScene&) = delete;
   RayScene& operator=(const RayScene&) = delete;

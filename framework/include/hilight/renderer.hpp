@@ -47,6 +47,12 @@ public:
   /// Rays cast by the last call (shadow + bounce), for throughput figures; 0 if unknown.
   virtual uint64_t rays_cast() const { return 0; }
 
+  /// Drops what the renderer keeps between calls only to make repeated ones
+  /// faster (Embree: the bounce gathers of its last point sets). Results do
+  /// not change; the next call on those points does that work again. Called
+  /// after one-off work over many points, such as a light cache's build.
+  virtual void release_scratch() {}
+
   /// Benchmark baselines the renderer can measure on the same work as
   /// unit_responses (e.g. raw ray-query throughput), as name -> value.
   virtual std::vector<std::pair<std::string, double>> baseline_figures(const SurfacePoints& /*points*/,

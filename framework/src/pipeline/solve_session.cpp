@@ -32,7 +32,7 @@ SolveSession::SolveSession(const Registry& registry, SolveSpec spec, std::shared
   m_fast_settings = fast_renderer_settings(registry.renderer_traits(m_spec.renderer), m_reference_settings);
   m_reference = make_renderer(m_reference_settings);
   m_fast = make_renderer(m_fast_settings);
-  if (!m_rays) m_rays = std::make_shared<const RayScene>(*m_scene);
+  if (!m_rays) m_rays = RayScene::shared(m_scene);
 }
 
 std::unique_ptr<Renderer> SolveSession::make_renderer(const std::vector<std::string>& settings) const {

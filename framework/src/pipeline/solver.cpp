@@ -103,6 +103,9 @@ void Solver::ensure_cache(SolveReport& report) {
   } else {
     stage("building the light cache");
     m_cache = m_cache_builder->build({*m_scene, *m_rays, m_renderer, bounds});
+    // Its bounce gathers at every vertex (hundreds of MB in a building) are
+    // not needed again: the solve works on its samples and the target.
+    m_renderer.release_scratch();
     report.cache_state = "built";
     if (!file.empty()) {
       try {

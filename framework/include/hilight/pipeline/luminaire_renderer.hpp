@@ -28,6 +28,7 @@ public:
   std::string settings_key() const override;
   Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) override;
   uint64_t rays_cast() const override { return m_inner.rays_cast(); }
+  void release_scratch() override { m_inner.release_scratch(); }
   /// The template the point lights become from now on.
   void set_luminaire(Light luminaire) { m_luminaire = std::move(luminaire); }
 

@@ -31,6 +31,7 @@ public:
   std::string settings_key() const override { return m_inner.settings_key(); }
   Image render_image(const Camera& camera, std::span<const Light> lights, int width, int height) override;
   uint64_t rays_cast() const override { return m_inner.rays_cast(); }
+  void release_scratch() override { m_inner.release_scratch(); }
   std::vector<std::pair<std::string, double>> baseline_figures(const SurfacePoints& points,
                                                                std::span<const Light> lights) override {
     return m_inner.baseline_figures(points, lights);
