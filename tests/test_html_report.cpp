@@ -26,8 +26,10 @@ TEST_CASE("the solve's HTML report renders in a headless browser with its images
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const std::string html = test::read_file(dir / "report.html");
-  CHECK(count(html, "<img ") == 9);  // target, result, difference from three views
-  CHECK(count(html, "src=\"data:image/png;base64,") == 9);
+  CHECK(count(html, "<img ") == 11);  // target, result, difference from three views; the room's plan: target, result
+  CHECK(count(html, "src=\"data:image/png;base64,") == 11);
+  CHECK(count(html, "class=\"view plan\"") == 1);
+  CHECK(count(html, "class=\"light-marker\"") == count(test::read_file(dir / "lights.json"), "\"position\""));  // one a light
   CHECK(count(html, "<svg id=\"cuts\"") == 1);
   CHECK(count(html, "class=\"chosen\"") == 1);
   CHECK(count(html, "<tr><td>") >= 4 + 3);  // four lights, and timings

@@ -2,7 +2,7 @@
 // the section, the plan view, walk mode and the room focus. Each change is a
 // recorded action (`cutaway`, `section`, `plan`, `walk`, `focus`), so a
 // replay sees what the designer saw and paints where they could.
-#include "core/plan_readout.hpp"
+#include "hilight/plan_view.hpp"
 #include "painter_app.hpp"
 #include "ui/tooltip.hpp"
 

@@ -3,6 +3,8 @@
 #include "hilight/io/html_report.hpp"
 
 #include "html_lux_maps.hpp"
+#include "html_parts.hpp"
+#include "html_plans.hpp"
 #include "hilight/scene_origin.hpp"
 
 #include "hilight/camera.hpp"
@@ -20,27 +22,6 @@
 namespace hilight {
 
 namespace {
-
-std::string base64(const std::vector<unsigned char>& bytes) {
-  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    const uint32_t n = uint32_t(bytes[i]) << 16 | (i + 1 < bytes.size() ? uint32_t(bytes[i + 1]) << 8 : 0u) |
-                       (i + 2 < bytes.size() ? uint32_t(bytes[i + 2]) : 0u);
-    out += table[(n >> 18) & 63];
-    out += table[(n >> 12) & 63];
-    out += i + 1 < bytes.size() ? table[(n >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? table[n & 63] : '=';
-  }
-  return out;
-}
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
-  return out;
-}
 
 /// Three views: from three upper corners inside an enclosed scene, else from around it.
 std::vector<Camera> views(const Scene& scene, const RayScene& rays, float aspect) {
@@ -70,11 +51,6 @@ std::vector<Camera> views(const Scene& scene, const RayScene& rays, float aspect
     out.push_back(cam);
   }
   return out;
-}
-
-std::string img(const Image& image, float exposure, const std::string& alt) {
-  return "<img alt=\"" + escape(alt) + "\" width=\"" + std::to_string(image.width) + "\" src=\"data:image/png;base64," +
-         base64(encode_png(image, exposure)) + "\">";
 }
 
 /// Red where the result is brighter than the target, blue where darker.
@@ -154,11 +130,11 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
   const int height = width * 3 / 4;
   const Scene& scene = *page.scene;
   std::ostringstream html;
-  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>hilight: " << escape(page.title)
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>hilight: " << html_escape(page.title)
        << "</title>\n<style>body{font-family:sans-serif;margin:1.5em;max-width:1600px}td,th{padding:2px 8px;text-align:right}"
           "th{background:#eee}table{border-collapse:collapse}img{margin:2px;border:1px solid #ccc}.views{display:flex;flex-wrap:wrap}"
           ".view{margin-right:1em}.legend{color:#555;font-size:90%}</style></head><body>\n";
-  html << "<h1>hilight solve</h1><p>" << escape(page.title) << "</p>\n";
+  html << "<h1>hilight solve</h1><p>" << html_escape(page.title) << "</p>\n";
   if (page.criteria)
     html << std::setprecision(4) << "<p id=\"summary\"><b>" << page.lights.size() << " luminaires</b>, criteria "
          << (page.design.met ? "met" : "<b>not met</b>") << ", " << page.report.seconds.at("total") << " s.</p>\n";
@@ -174,22 +150,11 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
     ++view_number;
     const Image target = vertex_value_image(scene, *page.rays, cam, painted ? page.target : page.result, width, height);
     const Image result = vertex_value_image(scene, *page.rays, cam, page.result, width, height);
-    float exposure = 0.f;
-    {
-      std::vector<float> lum;
-      for (size_t i = 0; i < target.pixels.size(); ++i)
-        if (target.covered[i]) lum.push_back(0.2126f * target.pixels[i].r + 0.7152f * target.pixels[i].g + 0.0722f * target.pixels[i].b);
-      if (!lum.empty()) {
-        const size_t k = std::min(lum.size() - 1, size_t(0.99 * double(lum.size())));
-        std::nth_element(lum.begin(), lum.begin() + std::ptrdiff_t(k), lum.end());
-        exposure = lum[k] > 0.f ? 0.9f / lum[k] : 1.f;
-      }
-    }
-    if (exposure <= 0.f) exposure = 1.f;
+    const float exposure = exposure_for(target);
     html << "<div class=\"view\"><h3>View " << view_number << "</h3>";
-    if (painted) html << img(target, exposure, "target, view " + std::to_string(view_number)) << "<br>";
-    html << img(result, exposure, "result, view " + std::to_string(view_number));
-    if (painted) html << "<br>" << img(difference_image(result, target, exposure), 1.f, "difference, view " + std::to_string(view_number));
+    if (painted) html << png_img(target, exposure, "target, view " + std::to_string(view_number)) << "<br>";
+    html << png_img(result, exposure, "result, view " + std::to_string(view_number));
+    if (painted) html << "<br>" << png_img(difference_image(result, target, exposure), 1.f, "difference, view " + std::to_string(view_number));
     html << "</div>\n";
   }
   if (painted) {
@@ -200,6 +165,7 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
   } else {
     html << "</div>\n" << lux_maps_html(*page.criteria, page.design, page.lights);
   }
+  html << plans_html(page, width);
   const bool photometric = page.units == "photometric";
   html << "<h2>Lights</h2><table id=\"lights\"><tr><th>#</th><th>type</th><th>x</th><th>y</th><th>z</th><th>intensity "
        << (photometric ? "(cd)" : "(W/sr)") << "</th><th>flux (lm)</th></tr>\n";
@@ -212,7 +178,7 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
          << luminous_flux(l) << "</td></tr>\n";
   }
   html << "</table>\n<h2>Timings</h2><table id=\"timings\"><tr><th>stage</th><th>seconds</th></tr>\n";
-  for (const auto& [stage, seconds] : page.report.seconds) html << "<tr><td>" << escape(stage) << "</td><td>" << seconds << "</td></tr>\n";
+  for (const auto& [stage, seconds] : page.report.seconds) html << "<tr><td>" << html_escape(stage) << "</td><td>" << seconds << "</td></tr>\n";
   html << "</table>\n<p class=\"legend\">Written by hilight. D̄ = ‖Ψ − I‖ / ‖Ψ‖ over the target points, measured with the "
           "reference renderer.</p>\n";
   // Checked by the tests in a headless browser: every embedded image decoded.
