@@ -7,6 +7,7 @@
 // checked on the screenshots (the painted floor's colour at the centre
 // pixel) and in the target the session wrote (nothing painted above the section).
 #include "../support.hpp"
+#include "../random_lights.hpp"
 #include "hilight/image.hpp"
 #include "hilight/io/image_io.hpp"
 #include "hilight/io/lights_json.hpp"
@@ -18,6 +19,7 @@
 #include <catch2/catch.hpp>
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <random>
 
 namespace {
 
@@ -242,4 +244,64 @@ TEST_CASE("painter ui: a section height that is not a number is one error line n
   CHECK(run.exit_code == 2);
   CHECK(test::line_count(run.err) == 1);
   CHECK_THAT(run.err, Catch::Contains("bad.json: action 0: section: 'height' must be a number"));
+}
+
+TEST_CASE("painter ui: the plan of the IFC house's ground floor shows one marker per light", "[painter-ui][building][plan]") {
+  if (test::skip_without_display()) return;
+  const fs::path dir = test::output_dir("painter_ui_building_plan_markers");
+  auto house = std::make_shared<const Scene>(load_scene(house_path()));
+  const auto rays = RayScene::shared(house);
+  // Seeded lamps under the ceilings, those of the ground floor (below the
+  // section) at least 0.6 m apart, so that no two markers touch; red, so
+  // that their markers are the only red in the target view.
+  std::mt19937_64 rng(2020);
+  Lighting lamps;
+  for (Light lamp : test::random_ceiling_lamps(*rays, rng, 16)) {
+    if (lamp.position.y > 2.5f) continue;
+    bool apart = true;
+    for (const Light& other : lamps) apart = apart && glm::length(other.position - lamp.position) > 0.6f;
+    if (!apart) continue;
+    lamp.intensity = Rgb(4.f, 0.2f, 0.2f);
+    lamps.push_back(lamp);
+  }
+  REQUIRE(lamps.size() >= 3);
+  write_lights_json(dir / "lamps.json", lamps);
+  const nlohmann::json actions = {{{"type", "load_lights"}, {"path", (dir / "lamps.json").string()}},
+                                  {{"type", "section"}, {"height", 2.5}},
+                                  {{"type", "plan"}, {"on", true}},
+                                  {{"type", "view"}, {"show", "target"}},
+                                  {{"type", "screenshot"}, {"path", (dir / "plan.exr").string()}}};
+  test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+  const test::RunResult run = test::run_hilight({"paint", house_path().string(), "--size", "480x360", "--set", "bounce_samples=16",
+                                                 "--cache-cells", "6", "--cache-dir", (dir / "cache").string(), "--no-record", "--exit",
+                                                 "--script", (dir / "session.json").string()});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  // Connected patches of marker red.
+  const Image plan = read_exr(dir / "plan.exr");
+  auto red = [&](int x, int y) {
+    const Rgb& c = plan.at(x, y);
+    return c.r > 0.5f && c.g < 0.6f * c.r && c.b < 0.6f * c.r;
+  };
+  std::vector<uint8_t> seen(plan.pixels.size(), 0);
+  size_t markers = 0;
+  for (int y = 0; y < plan.height; ++y)
+    for (int x = 0; x < plan.width; ++x) {
+      if (seen[size_t(y) * plan.width + x] || !red(x, y)) continue;
+      ++markers;
+      std::vector<std::pair<int, int>> stack{{x, y}};
+      seen[size_t(y) * plan.width + x] = 1;
+      while (!stack.empty()) {
+        const auto [px, py] = stack.back();
+        stack.pop_back();
+        for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+          const int qx = px + dx, qy = py + dy;
+          if (qx < 0 || qy < 0 || qx >= plan.width || qy >= plan.height) continue;
+          if (seen[size_t(qy) * plan.width + qx] || !red(qx, qy)) continue;
+          seen[size_t(qy) * plan.width + qx] = 1;
+          stack.push_back({qx, qy});
+        }
+      }
+    }
+  CHECK(markers == lamps.size());
 }
