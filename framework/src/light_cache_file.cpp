@@ -23,7 +23,8 @@ constexpr uint32_t kFileFormat = 9;
 // changes (where points are shaded, ray offsets: docs/rendering-model.md);
 // releases are told apart by HILIGHT_VERSION as well.
 // 2: tolerances relative to the scene's size (issue 19).
-constexpr uint32_t kRenderingModel = 2;
+// 3: the bounce's streams and sample frames in the scene's own frame.
+constexpr uint32_t kRenderingModel = 3;
 
 struct Header {
   char magic[8];

@@ -16,25 +16,26 @@
 namespace hilight::embree {
 
 namespace {
-/// The position on a grid of 1/4096 of the scene's diagonal from its box's
-/// low corner, and the normal on a grid of 1/256: a point's identity,
-/// whatever the scene's place and scale (a float rounding changes it only
+/// The position on a grid of 1/4096 of the scene's size, and the normal on a
+/// grid of 1/256, both in the scene's own frame: a point's identity, however
+/// the scene is placed, turned or scaled (a float rounding changes it only
 /// for a point within rounding of a grid line).
-std::array<uint32_t, 6> point_key(const Bounds& box, float diagonal, const Vec3& p, const Vec3& n) {
+std::array<uint32_t, 6> point_key(const OwnFrame& frame, float size, const Vec3& p, const Vec3& n) {
   std::array<uint32_t, 6> key{};
-  const float cell = diagonal > 0.f ? diagonal / 4096.f : 1.f;
+  const float cell = size > 0.f ? size / 4096.f : 1.f;
+  const Vec3 at = frame.to_own(p - frame.centre), towards = frame.to_own(n);
   for (int k = 0; k < 3; ++k) {
-    // Clamped: a point far off the box (or not finite) must not overflow the conversion.
-    const float at = std::clamp(std::floor((p[k] - box.lo[k]) / cell + 0.5f), -1e9f, 1e9f);
-    key[k] = uint32_t(int64_t(std::isnan(at) ? 0.f : at));
-    key[3 + k] = uint32_t(int32_t(std::floor(std::clamp(n[k], -1.f, 1.f) * 256.f + 0.5f)));
+    // Clamped: a point far off the scene (or not finite) must not overflow the conversion.
+    const float q = std::clamp(std::floor(at[k] / cell + 0.5f), -1e9f, 1e9f);
+    key[k] = uint32_t(int64_t(std::isnan(q) ? 0.f : q));
+    key[3 + k] = uint32_t(int32_t(std::floor(std::clamp(towards[k], -1.f, 1.f) * 256.f + 0.5f)));
   }
   return key;
 }
 } // namespace
 
-BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<ShadingPoint>& origins, int samples,
-                           uint64_t seed)
+BounceGather::BounceGather(const RayScene& es, const OwnFrame& frame, const SurfacePoints& points, const std::vector<ShadingPoint>& origins,
+                           int samples, uint64_t seed)
     : m_es(es), m_samples(samples), m_hits(points.size() * size_t(samples)) {
   if (es.scene().triangles.size() >= GatherHit::kNone)
     throw InputError("the first bounce handles at most " + std::to_string(GatherHit::kNone - 1) + " triangles (the scene has " +
@@ -46,11 +47,12 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
       // point gets the same gather in any point set: renders of subsets and
       // of the whole scene share random numbers (common random numbers), and
       // differences between them are differences of light, not of noise.
-      // The point is read on a grid relative to the scene's box, so the same
-      // scene moved or scaled gets the same streams (docs/rendering-model.md).
+      // The point is read on a grid in the scene's own frame, so the same
+      // scene moved, turned or scaled gets the same streams (docs/rendering-model.md).
       const Vec3 n = points.normals[i];
       uint64_t stream = mix64(seed);
-      for (uint32_t b : point_key(es.scene().bounds, es.scene().diagonal(), points.positions[i], n)) stream = mix64(stream ^ b);
+      for (uint32_t b : point_key(frame, es.scene().diagonal(), points.positions[i], n)) stream = mix64(stream ^ b);
+      const Vec3 own_normal = frame.to_own(n);
       for (int side = 0; side < 2; ++side) {
         const Vec3 axis = side == 0 ? n : -n;
         float rot1 = to_unit_float(stream = mix64(stream)), rot2 = to_unit_float(stream = mix64(stream));
@@ -59,7 +61,8 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
           float u2 = radical_inverse2(uint32_t(k)) + rot2;
           u1 -= std::floor(u1);
           u2 -= std::floor(u2);
-          const Vec3 dir = cosine_direction(axis, u1, u2);
+          // Laid out around the normal in the scene's frame, then turned back.
+          const Vec3 dir = frame.to_world(cosine_direction(side == 0 ? own_normal : -own_normal, u1, u2));
           const Hit hit = es.intersect(origins[i].ray_start(dir, axis, es.epsilon()), dir);
           GatherHit& g = m_hits[i * samples + side * per_side + k];
           if (hit.valid()) {

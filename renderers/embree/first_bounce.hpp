@@ -2,7 +2,9 @@
 /// The first diffuse bounce by gathering: every point casts N rays over both
 /// hemispheres (two-sided surfaces; N/2 cosine-weighted on each side, from
 /// Hammersley points rotated per point, the rotation seeded by the point's
-/// position and normal). The hits are kept, so each light
+/// position and normal, both read in the scene's own frame, own_frame.hpp,
+/// where each hemisphere's tangent frame is built too: the same scene turned
+/// gathers along the same rays, turned). The hits are kept, so each light
 /// then costs N shadow rays per point and no further intersection tests:
 ///   E_ind(x) = ∫_{S²} L(y(ω)) |cos θ| dω  ≈  (2/N) Σ_k albedo(y_k) · E_dir(y_k)
 /// (each hemisphere's estimate is π/(N/2) Σ L, and L(y) = albedo(y)/π · E_dir(y)).
@@ -13,6 +15,7 @@
 /// Unbiased for any N; the error falls as N grows (tests show it).
 #include "direct_light.hpp"
 #include "hot_spots.hpp"
+#include "hilight/own_frame.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/surface_points.hpp"
 
@@ -25,8 +28,8 @@ public:
   /// `origins`: where each point is shaded (hilight::shading_point), so rays
   /// from a point on a crease do not start on the neighbouring face's plane
   /// and rays from a smooth point skip its own facets.
-  BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<ShadingPoint>& origins, int samples,
-               uint64_t seed);
+  BounceGather(const RayScene& es, const OwnFrame& frame, const SurfacePoints& points, const std::vector<ShadingPoint>& origins,
+               int samples, uint64_t seed);
 
   int samples() const { return m_samples; }
   /// The (vertex, side) values interpolated_indirect_irradiance reads, as
