@@ -55,13 +55,16 @@ void write_lights(const fs::path& path, const glm::dmat3& r) {
       << R"(], "cutoff_deg": 40, "falloff_deg": 8, "intensity": [3, 2.4, 1.8]}]})";
 }
 
+bool skip_without_models() {
+  if (fs::exists(builders::testmodels_dir())) return false;
+  std::cout << "SKIPPED: assimp-testmodels is not installed" << std::endl;
+  return true;
+}
+
 } // namespace
 
 TEST_CASE("rotation: a real scene's own frame turns, moves and scales with it", "[invariance][rotation][real]") {
-  if (!fs::exists(builders::testmodels_dir())) {
-    std::cout << "SKIPPED: assimp-testmodels is not installed" << std::endl;
-    return;
-  }
+  if (skip_without_models()) return;
   Scene home = builders::curved_models_on_floor();
   home.update_bounds();
   const OwnFrame frame = own_frame(home);
@@ -85,10 +88,7 @@ TEST_CASE("rotation: a real scene's own frame turns, moves and scales with it", 
 
 TEST_CASE("rotation: real models turned at random render the same per-vertex values on the same tessellation",
           "[invariance][rotation][render][cli][real]") {
-  if (!fs::exists(builders::testmodels_dir())) {
-    std::cout << "SKIPPED: assimp-testmodels is not installed" << std::endl;
-    return;
-  }
+  if (skip_without_models()) return;
   const fs::path dir = test::output_dir("rotation_render");
   Scene scene = builders::curved_models_on_floor();
   scene.update_bounds();
@@ -157,10 +157,7 @@ TEST_CASE("rotation: real models turned at random render the same per-vertex val
 }
 
 TEST_CASE("rotation: real models turned about the vertical solve to the same lights, turned", "[invariance][rotation][solve][cli][real]") {
-  if (!fs::exists(builders::testmodels_dir())) {
-    std::cout << "SKIPPED: assimp-testmodels is not installed" << std::endl;
-    return;
-  }
+  if (skip_without_models()) return;
   // About the vertical only: the placement's ceilings and the light space's
   // floors are +Y, so a turn about another axis asks a different question.
   const fs::path dir = test::output_dir("rotation_solve");
