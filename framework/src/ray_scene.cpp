@@ -51,6 +51,7 @@ RayScene::RayScene(const Scene& scene) : m_scene(scene) {
   m_shading_step = std::max(kShadingStep * scene.diagonal(), 4.f * m_epsilon);
   m_face_normals.resize(scene.triangles.size());
   for (size_t t = 0; t < scene.triangles.size(); ++t) m_face_normals[t] = scene.face_normal(t);
+  m_own_frame = hilight::own_frame(scene);
 }
 
 std::shared_ptr<const RayScene> RayScene::shared(std::shared_ptr<const Scene> scene) {

@@ -16,7 +16,6 @@ void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
   m_embree.reset();
   m_scene = std::move(scene);
   m_embree = RayScene::shared(m_scene);
-  m_own_frame = own_frame(*m_scene);
   // Where each vertex is shaded (shading_point: creases inside their triangle);
   // computed here, once, so no later (possibly concurrent) call has to.
   const Scene& s = *m_scene;
@@ -28,7 +27,7 @@ void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
 std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoints& points) {
   auto origins = shading_points(points);
   return m_gathers.get(points.content_key(), [&] {
-    auto gather = std::make_shared<const BounceGather>(*m_embree, m_own_frame, points, *origins, m_settings.bounce_samples, m_settings.seed);
+    auto gather = std::make_shared<const BounceGather>(*m_embree, m_embree->own_frame(), points, *origins, m_settings.bounce_samples, m_settings.seed);
     m_rays += gather->rays_cast();
     return gather;
   });

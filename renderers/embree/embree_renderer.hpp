@@ -62,7 +62,6 @@ private:
   std::shared_ptr<const RayScene> m_embree;  ///< shared with every other user of the scene
   KeyedLru<BounceGather> m_gathers{4};
   KeyedLru<std::vector<ShadingPoint>> m_shading_points{4};
-  OwnFrame m_own_frame;  ///< where the bounce lays out its streams and sample frames
   std::vector<ShadingPoint> m_vertex_shading;  ///< shading_point() of every scene vertex
   std::atomic<uint64_t> m_rays{0};  ///< calls may come from several threads (concurrent refinements)
 };

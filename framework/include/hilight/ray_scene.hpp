@@ -3,6 +3,7 @@
 /// geometric queries of the renderers and the solver (shadow rays, first hits,
 /// nearest surface point, inside-solid tests). occluded() is inline so hot
 /// loops pay nothing beyond Embree's own call.
+#include "hilight/own_frame.hpp"
 #include "hilight/scene.hpp"
 
 #include <embree3/rtcore.h>
@@ -82,6 +83,9 @@ public:
   /// that at the scale it is handed (povray_renderer.hpp).
   float shading_step() const { return m_shading_step; }
   static constexpr float kShadingStep = 3e-4f;
+  /// The scene's own frame (own_frame.hpp): what is laid out in it — the
+  /// bounce's streams, the refinement's directions — turns with the scene.
+  const OwnFrame& own_frame() const { return m_own_frame; }
 
   /// True if anything blocks the segment origin + t*dir, t in (0, tfar).
   bool occluded(const Vec3& origin, const Vec3& dir, float tfar) const {
@@ -131,6 +135,7 @@ private:
   float m_epsilon = 1e-4f;
   float m_shading_step = 3e-3f;
   std::vector<Vec3> m_face_normals;
+  OwnFrame m_own_frame;
 };
 
 } // namespace hilight

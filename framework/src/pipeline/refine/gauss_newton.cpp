@@ -36,6 +36,10 @@ Lighting gauss_newton_polish(SampleRefineProblem& problem, const Lighting& start
     if (start[j].type == LightType::Point) movable.push_back(j);
   const size_t np = 3 * movable.size(), p = np + 3 * n;
   const double h = settings.relative_step * double(problem.scale());
+  // Positions move along the scene's own axes, not the world's: the
+  // Jacobian, its damping and the shadow-edge test then turn with the
+  // scene, and a turned scene takes the same steps, turned.
+  const glm::mat3 axes = problem.space().rays().own_frame().axes;
 
   Lighting current = start;
   std::vector<Rgb> phi = problem.responses(current);
@@ -49,7 +53,7 @@ Lighting gauss_newton_polish(SampleRefineProblem& problem, const Lighting& start
     for (size_t q = 0; q < movable.size(); ++q)
       for (int k = 0; k < 3; ++k) {
         Light l = current[movable[q]];
-        l.position[k] += float(h);
+        l.position += float(h) * axes[k];
         if (auto placed = problem.space().place(l.position)) l.position = *placed;  // along the mount, if there is one
         moved.push_back(l);
         anchor.push_back(movable[q]);
@@ -86,7 +90,7 @@ Lighting gauss_newton_polish(SampleRefineProblem& problem, const Lighting& start
       Lighting trial = current;
       bool admissible = delta.allFinite();
       for (size_t q = 0; q < movable.size(); ++q)
-        for (int k = 0; k < 3; ++k) trial[movable[q]].position[k] += float(h * delta[Eigen::Index(3 * q + size_t(k))]);
+        for (int k = 0; k < 3; ++k) trial[movable[q]].position += float(h * delta[Eigen::Index(3 * q + size_t(k))]) * axes[k];
       admissible = admissible && problem.place(trial);
       for (size_t j = 0; j < n && admissible; ++j)
         for (int c = 0; c < 3; ++c)
