@@ -24,7 +24,8 @@ constexpr uint32_t kFileFormat = 9;
 // releases are told apart by HILIGHT_VERSION as well.
 // 2: tolerances relative to the scene's size (issue 19).
 // 3: the bounce's streams and sample frames in the scene's own frame.
-constexpr uint32_t kRenderingModel = 3;
+// 4: gather hits' barycentrics in 16 bits.
+constexpr uint32_t kRenderingModel = 4;
 
 struct Header {
   char magic[8];

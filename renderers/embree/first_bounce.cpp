@@ -97,8 +97,8 @@ Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light,
     if (!g.valid()) continue;
     Hit hit;
     hit.triangle = g.triangle();
-    hit.u = g.u;
-    hit.v = g.v;
+    hit.u = g.u();
+    hit.v = g.v();
     const Vec3 y = m_es.hit_position(hit);
     if (hot && hot->handles(x, y)) continue;
     float e = unit_direct_irradiance_on_side(m_es, ShadingPoint{y, false}, m_es.hit_normal(hit),
@@ -121,12 +121,12 @@ Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex
     const GatherHit& hit = hits[k];
     if (!hit.valid()) continue;
     const auto& tri = scene.triangles[hit.triangle()];
-    if (hot && hot->handles(x, (1.f - hit.u - hit.v) * scene.positions[tri[0]] + hit.u * scene.positions[tri[1]] +
-                                    hit.v * scene.positions[tri[2]]))
+    const float u = hit.u(), v = hit.v();
+    if (hot && hot->handles(x, (1.f - u - v) * scene.positions[tri[0]] + u * scene.positions[tri[1]] + v * scene.positions[tri[2]]))
       continue;
     // Each vertex holds both sides' values; take the side facing the gatherer.
     auto on_side = [&](int corner) { return vertex_direct[2 * tri[corner] + ((hit.vertex_sides() >> corner) & 1 ? 0 : 1)]; };
-    float e = (1.f - hit.u - hit.v) * on_side(0) + hit.u * on_side(1) + hit.v * on_side(2);
+    float e = (1.f - u - v) * on_side(0) + u * on_side(1) + v * on_side(2);
     if (e > 0.f) sum += scene.triangle_albedo(hit.triangle()) * e;
   }
   return sum * (2.f / float(m_samples));

@@ -70,7 +70,8 @@ std::string plans_html(const HtmlReport& page, int width) {
     if (painted) s << marked_plan(target, cut, exposure, "target, plan of storey " + std::to_string(k + 1), "") << "<br>";
     s << marked_plan(result, cut, exposure, "result, plan of storey " + std::to_string(k + 1), markers.str()) << "</div>\n";
   }
-  s << "</div><p class=\"legend\">Each storey seen from above, cut " << "1.5 m over its floor (north, −Z, up; walls cut through in grey)"
+  s << "</div><p class=\"legend\">Each storey seen from above, cut at the height given (1.5 m over its floor, or halfway to the "
+       "next floor when that is nearer; north, −Z, up; walls cut through in grey)"
     << (painted ? ": the target, then what the lights give (same exposure)" : "")
     << ". Each light is marked in its storey with its number and the lux on the surface straight below it.</p>\n";
   return s.str();
