@@ -46,14 +46,16 @@ void write_ply(const fs::path& path, const Scene& scene, double k) {
   }
 }
 
-/// A point light and a soft-edged spotlight over the models, scaled by k.
-void write_lights(const fs::path& path, double k) {
+/// A point light and a soft-edged spotlight over the models, scaled by k;
+/// `nudged`: the point light 9 cm off and both 10% brighter (a fine-tune's start).
+void write_lights(const fs::path& path, double k, bool nudged = false) {
+  const double more = nudged ? 1.1 : 1.0, dx = nudged ? 0.0625 : 0.0;
   std::ofstream out(path);
-  out << std::setprecision(17) << R"({"lights": [{"type": "point", "position": [)" << 1.25 * k << ", " << 2.5 * k << ", "
-      << 0.75 * k << R"(], "intensity": [)" << 2 * k * k << ", " << 2 * k * k << ", " << 2 * k * k
+  out << std::setprecision(17) << R"({"lights": [{"type": "point", "position": [)" << (1.25 + dx) * k << ", " << (2.5 - dx) * k << ", "
+      << (0.75 + dx) * k << R"(], "intensity": [)" << 2 * more * k * k << ", " << 2 * more * k * k << ", " << 2 * more * k * k
       << R"(]}, {"type": "spot", "position": [)" << -1.0 * k << ", " << 2.25 * k << ", " << 1.5 * k
-      << R"(], "direction": [0.3, -1, -0.2], "cutoff_deg": 40, "falloff_deg": 8, "intensity": [)" << 3 * k * k << ", "
-      << 2.4 * k * k << ", " << 1.8 * k * k << "]}]}";
+      << R"(], "direction": [0.3, -1, -0.2], "cutoff_deg": 40, "falloff_deg": 8, "intensity": [)" << 3 * more * k * k << ", "
+      << 2.4 * more * k * k << ", " << 1.8 * more * k * k << "]}]}";
 }
 
 const double kScales[] = {1e-3, 1e-2, 1.0, 1e2, 1e3};
@@ -116,11 +118,11 @@ TEST_CASE("scale: real models scaled by 10^-3 to 10^3 render the same per-vertex
 // length or intensity in the solve: the lights are the same bit for bit.
 // At 10^3 the files' rounding (a different float for some coordinates)
 // sends the non-convex search to another local optimum: not asserted.
-TEST_CASE("scale: real models scaled by 2^10 and 2^-10 solve to the same lights, scaled", "[invariance][scale][solve][cli][real]") {
+TEST_CASE("scale: real models scaled by 2^10 and 2^-10 solve and fine-tune to the same lights, scaled", "[invariance][scale][solve][cli][real]") {
   if (skip_without_models()) return;
   const fs::path dir = test::output_dir("scale_solve");
   const double scales[] = {1.0, 1024.0, 1.0 / 1024.0};
-  Lighting found[3];
+  Lighting found[3], tuned[3];
   for (int s = 0; s < 3; ++s) {
     const double k = scales[s];
     const Copy c = make_copy(dir, k);
@@ -133,7 +135,24 @@ TEST_CASE("scale: real models scaled by 2^10 and 2^-10 solve to the same lights,
     INFO("k " << k << ": " << r.err);
     REQUIRE(r.exit_code == 0);
     found[s] = read_lights_json(out);
+    // Fine-tune from the lights nudged off, scaled the same way.
+    const fs::path nudged = dir / (c.scene.stem().string() + "-nudged.json"), tuned_out = dir / (c.scene.stem().string() + "-tuned.json");
+    write_lights(nudged, k, true);
+    const auto t = test::run_hilight({"solve", c.scene.string(), "--target", target.string(), "-o", tuned_out.string(), "--no-cache",
+                                      "--samples", "1500", "--bounce-samples", "32", "--mode", "fine-tune", "--initial", nudged.string()});
+    INFO("fine-tune, k " << k << ": " << t.err);
+    REQUIRE(t.exit_code == 0);
+    tuned[s] = read_lights_json(tuned_out);
   }
+  // Fine-tune keeps its start's order: the same lights, scaled, bit for bit.
+  for (int s = 1; s < 3; ++s)
+    for (size_t j = 0; j < tuned[0].size(); ++j) {
+      const double k = scales[s];
+      REQUIRE(tuned[s].size() == tuned[0].size());
+      INFO("fine-tune, k " << k << ", light " << j);
+      CHECK(DVec3(tuned[s][j].position) / k == DVec3(tuned[0][j].position));
+      for (int ch = 0; ch < 3; ++ch) CHECK(double(tuned[s][j].intensity[ch]) / (k * k) == Approx(double(tuned[0][j].intensity[ch])).epsilon(1e-6));
+    }
   Scene reference = builders::curved_models_on_floor();
   reference.update_bounds();
   const double diagonal = reference.diagonal();
