@@ -16,7 +16,7 @@ while kill -0 "$child" 2>/dev/null; do
   if [ -n "$pid" ]; then
     kb=$(awk '/VmRSS/{print $2}' "/proc/$pid/status" 2>/dev/null)
     if [ -n "$kb" ]; then
-      printf '%.1f s %d MB\n' "$(echo "$(date +%s.%N) - $start" | bc)" $((kb / 1024))
+      printf '%.1f s %d MB\n' "$(awk -v now="$(date +%s.%N)" -v start="$start" 'BEGIN { print now - start }')" $((kb / 1024))
       [ "$kb" -gt "$peak" ] && peak=$kb
     fi
   fi
