@@ -27,7 +27,7 @@ void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
 std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoints& points) {
   auto origins = shading_points(points);
   return m_gathers.get(points.content_key(), [&] {
-    auto gather = std::make_shared<const BounceGather>(*m_embree, m_embree->own_frame(), points, *origins, m_settings.bounce_samples, m_settings.seed);
+    auto gather = std::make_shared<const BounceGather>(*m_embree, points, *origins, m_settings.bounce_samples, m_settings.seed);
     m_rays += gather->rays_cast();
     return gather;
   });

@@ -34,13 +34,14 @@ std::array<uint32_t, 6> point_key(const OwnFrame& frame, float size, const Vec3&
 }
 } // namespace
 
-BounceGather::BounceGather(const RayScene& es, const OwnFrame& frame, const SurfacePoints& points, const std::vector<ShadingPoint>& origins,
-                           int samples, uint64_t seed)
+BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<ShadingPoint>& origins, int samples,
+                           uint64_t seed)
     : m_es(es), m_samples(samples), m_hits(points.size() * size_t(samples)) {
   if (es.scene().triangles.size() >= GatherHit::kNone)
     throw InputError("the first bounce handles at most " + std::to_string(GatherHit::kNone - 1) + " triangles (the scene has " +
                      std::to_string(es.scene().triangles.size()) + ")");
   const int per_side = samples / 2;
+  const OwnFrame& frame = es.own_frame();
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       // The stream depends on the point itself, not its index, so a surface

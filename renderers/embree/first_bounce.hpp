@@ -15,7 +15,6 @@
 /// Unbiased for any N; the error falls as N grows (tests show it).
 #include "direct_light.hpp"
 #include "hot_spots.hpp"
-#include "hilight/own_frame.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/surface_points.hpp"
 
@@ -31,8 +30,8 @@ public:
   /// `origins`: where each point is shaded (hilight::shading_point), so rays
   /// from a point on a crease do not start on the neighbouring face's plane
   /// and rays from a smooth point skip its own facets.
-  BounceGather(const RayScene& es, const OwnFrame& frame, const SurfacePoints& points, const std::vector<ShadingPoint>& origins,
-               int samples, uint64_t seed);
+  BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<ShadingPoint>& origins, int samples,
+               uint64_t seed);
 
   int samples() const { return m_samples; }
   /// The (vertex, side) values interpolated_indirect_irradiance reads, as
