@@ -60,8 +60,10 @@ demo() {
 
 run_tests() {
   # The painter's tests open windows: give them a virtual display when there is none.
+  # -noreset: by default Xvfb resets when its last client leaves and drops any
+  # client that connects meanwhile, so a painter starting as another exits fails.
   local display=()
-  [ -n "${DISPLAY:-}" ] || display=(xvfb-run -a -s "-screen 0 1280x1024x24")
+  [ -n "${DISPLAY:-}" ] || display=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
   (cd "$BUILD_DIR" && "${display[@]}" ctest --output-on-failure -j "$(nproc)")
   # Each file reader fuzzed for a few seconds; any crash, leak or hang fails.
   bash tools/fuzz.sh 8

@@ -102,7 +102,7 @@ if [ "$ALL" -eq 0 ]; then
   rm -rf "${logs:?}"/*
   run -f "$OUT/sanitize-subset.spec"
 else
-  [ -n "${DISPLAY:-}" ] || display=(xvfb-run -a -s "-screen 0 1280x1024x24")
+  [ -n "${DISPLAY:-}" ] || display=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
   run "~[ism]~[painter-ui]"  # ism-vulkan is not built here
   # The painter's windows: every process that opened one leaks inside Mesa's
   # DRI driver, which is unloaded before LeakSanitizer looks, so its frames
