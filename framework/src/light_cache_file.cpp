@@ -25,7 +25,9 @@ constexpr uint32_t kFileFormat = 9;
 // 2: tolerances relative to the scene's size (issue 19).
 // 3: the bounce's streams and sample frames in the scene's own frame.
 // 4: gather hits' barycentrics in 16 bits.
-constexpr uint32_t kRenderingModel = 4;
+// 5: a crease point's face chosen in the own frame's order, whatever order
+//    the triangles were found in.
+constexpr uint32_t kRenderingModel = 5;
 
 struct Header {
   char magic[8];

@@ -152,52 +152,45 @@ Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
   return a + ab * u + ac * v;
 }
 
+/// Every triangle within the nearest distance + `tie` of `p`; the choice
+/// among them is made after the query (closest_point), so it does not depend
+/// on the order Embree visits them in, which changes when the scene turns.
 struct ClosestQuery {
   const Scene* scene;
-  const std::vector<Vec3>* face_normals;
   Vec3 p;
-  Vec3 hint;
   float tie;  ///< distances within this count as equal
-  Hit best;
-  float best_d2;
-  float best_alignment = -2.f;
+  float limit;  ///< the farthest a candidate may be
+  float nearest;
+  struct Candidate {
+    uint32_t triangle;
+    float distance, u, v;
+  };
+  std::vector<Candidate> candidates;
 };
-
-/// An order on face normals that does not depend on how a face is cut into
-/// triangles (its pieces share its normal to within rounding): equally close,
-/// equally agreeing triangles are told apart by it, not by which one Embree
-/// visits first.
-bool normal_before(const Vec3& a, const Vec3& b) {
-  for (int k = 0; k < 3; ++k)
-    if (std::abs(a[k] - b[k]) > 1e-4f) return a[k] > b[k];
-  return false;
-}
 
 bool closest_callback(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<ClosestQuery*>(args->userPtr);
   const auto& tri = q->scene->triangles[args->primID];
   const auto& pos = q->scene->positions;
   float u, v;
-  Vec3 c = closest_on_triangle(q->p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v);
-  Vec3 d = c - q->p;
-  float d2 = glm::dot(d, d);
-  float alignment = glm::dot(q->hint, (*q->face_normals)[args->primID]);
-  float dist = std::sqrt(d2), best = q->best.valid() ? q->best.t : std::sqrt(q->best_d2);
-  bool nearer = dist < best - q->tie;
-  const Vec3& face = (*q->face_normals)[args->primID];
-  bool tied_better = q->best.valid() && std::abs(dist - best) <= q->tie &&
-                     (alignment > q->best_alignment + 1e-4f ||
-                      (alignment >= q->best_alignment - 1e-4f && normal_before(face, (*q->face_normals)[q->best.triangle])));
-  if (nearer || tied_better || (!q->best.valid() && d2 <= q->best_d2)) {
-    q->best_alignment = alignment;
-    q->best_d2 = d2;
-    q->best.triangle = args->primID;
-    q->best.u = u;
-    q->best.v = v;
-    q->best.t = dist;
+  const float dist = glm::length(closest_on_triangle(q->p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v) - q->p);
+  if (dist > q->limit || dist > q->nearest + q->tie) return false;
+  q->candidates.push_back({args->primID, dist, u, v});
+  if (dist < q->nearest) {
+    q->nearest = dist;
     args->query->radius = dist + q->tie;  // shrink the search, keeping ties in reach
     return true;
   }
+  return false;
+}
+
+/// An order on face normals given in the scene's own frame: it does not
+/// depend on how a face is cut into triangles (its pieces share its normal to
+/// within rounding) nor on how the scene is turned (the frame turns with it).
+/// Equally close, equally agreeing triangles are told apart by it.
+bool normal_before(const Vec3& a, const Vec3& b) {
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(a[k] - b[k]) > 1e-4f) return a[k] > b[k];
   return false;
 }
 
@@ -315,9 +308,39 @@ void query_triangles_near(RTCScene scene, const Vec3& p, float radius, RTCPointQ
 } // namespace
 
 Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& normal_hint, float tie) const {
-  ClosestQuery q{&m_scene, &m_face_normals, p, normal_hint, tie >= 0.f ? tie : m_epsilon, Hit{}, max_distance * max_distance};
+  ClosestQuery q{&m_scene, p, tie >= 0.f ? tie : m_epsilon, max_distance, std::numeric_limits<float>::infinity(), {}};
   query_triangles_near(m_rtc_scene, p, max_distance, closest_callback, &q);
-  return q.best;
+  // In triangle order, so that near-ties (the tests below are not transitive)
+  // resolve the same whichever order they were found in.
+  std::sort(q.candidates.begin(), q.candidates.end(), [](const auto& a, const auto& b) { return a.triangle < b.triangle; });
+  // Of the triangles within the tie of the nearest, the one whose normal
+  // agrees best with the hint; agreeing equally (a crease's vertex normal
+  // bisects its faces: a mirror seam), the first in the own frame's order.
+  const ClosestQuery::Candidate* best = nullptr;
+  float best_alignment = -2.f;
+  Vec3 best_face(0.f);
+  for (const auto& c : q.candidates) {
+    if (c.distance > q.nearest + q.tie) continue;
+    const float alignment = glm::dot(normal_hint, m_face_normals[c.triangle]);
+    const Vec3 face = m_own_frame.to_own(m_face_normals[c.triangle]);
+    const bool better =
+        !best || alignment > best_alignment + 1e-4f ||
+        (alignment >= best_alignment - 1e-4f &&
+         (normal_before(face, best_face) || (!normal_before(best_face, face) && c.distance < best->distance)));
+    if (better) {
+      best = &c;
+      best_alignment = alignment;
+      best_face = face;
+    }
+  }
+  Hit hit;
+  if (best) {
+    hit.triangle = best->triangle;
+    hit.u = best->u;
+    hit.v = best->v;
+    hit.t = best->distance;
+  }
+  return hit;
 }
 
 bool RayScene::only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius) const {
