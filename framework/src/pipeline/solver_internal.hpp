@@ -16,6 +16,9 @@ constexpr double kVisibleDbar = 5e-3;
 /// spot search that cannot pay.
 constexpr double kSpotDbar = 0.05;
 constexpr int kMaxSpots = 4;
+/// A spot's cutoff from which it is tried as a point light (the spot
+/// search's cones go up to 89°; a downlight's beam is narrower).
+constexpr float kWideSpotDeg = 60.f;
 /// D̄ at the samples above which a light is tried split in two: a fit this
 /// poor is missing a lamp; below it, a light more mostly fits the remaining
 /// error of far or bounce-lit lights (the product sweep: 20 of 20 at 1%, 19

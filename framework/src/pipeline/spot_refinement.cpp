@@ -5,8 +5,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <tbb/parallel_for.h>
 
 namespace hilight {
@@ -168,7 +166,6 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
       }
       lambda *= 4.0;
     }
-    if (std::getenv("HILIGHT_LM_DEBUG")) std::fprintf(stderr, "LM k=%zu it %d accepted %d lambda %g cost %g\n", k, iteration, int(accepted), lambda, now.cost);
     if (!accepted || small_gains >= 2) break;
   }
   for (size_t s = 0; s < k; ++s) current[s].intensity = now.intensities[base_count + s];

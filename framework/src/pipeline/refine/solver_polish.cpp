@@ -98,7 +98,9 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
   // the reference's own, and the next round starts anchored at `fitted`.
   // Below 0.01% D̄ at the samples nothing is left that anyone could see.
   for (int round = 0; round < rounds && norm > 0 && std::sqrt(best) > 1e-4 * norm; ++round) {
-    Lighting stepped = gauss_newton_polish(problem, fitted);
+    GaussNewtonSettings settings;
+    settings.move_spots = true;
+    Lighting stepped = gauss_newton_polish(problem, fitted, settings);
     // A single round (fine-tune, interactive) takes the anchored model's word
     // for the step — Gauss–Newton only takes steps that lower it — and saves
     // the reference's φ at the new place.
