@@ -8,6 +8,8 @@
 #include "hilight/real_model_scenes.hpp"
 #include "hilight/scene_builders.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
 
@@ -43,4 +45,33 @@ TEST_CASE("light bounds: the real glTF engine (assimp-testmodels) is open on eve
   const Scene engine = load_scene(path);
   for (float open : side_openness(engine)) CHECK(open >= kOpenSide);
   CHECK(open_light_bounds(engine).hi.y > engine.bounds.hi.y + 0.4f * engine.diagonal());
+}
+
+TEST_CASE("light bounds: a floor with real models turned off the world's axes keeps the space over its floor, turned",
+          "[light-bounds][rotation][real]") {
+  if (!std::filesystem::exists(builders::testmodels_dir())) return;
+  Scene home = builders::curved_models_on_floor();
+  home.update_bounds();
+  // Upright, the space over the floor is the world box grown up.
+  const Bounds upright = home.light_bounds();
+  CHECK(upright.lo == home.bounds.lo);
+  // Points over the floor where lamps hang (2.3 m up, over its corners).
+  std::vector<Vec3> over_floor;
+  for (float x : {-1.5f, 1.5f})
+    for (float z : {-1.5f, 1.5f}) over_floor.emplace_back(x, 2.3f, z);
+  for (const glm::vec3 axis : {glm::vec3(1, 2, 3), glm::vec3(-2, 0.5f, 1), glm::vec3(0, 0, 1)}) {
+    const glm::mat3 turn = glm::mat3(glm::rotate(glm::mat4(1.f), 0.9f, glm::normalize(axis)));
+    Scene turned = home;
+    for (auto& p : turned.positions) p = turn * p;
+    for (auto& n : turned.normals) n = turn * n;
+    turned.update_bounds();
+    const Bounds b = turned.light_bounds();
+    for (const Vec3& p : over_floor) {
+      INFO("axis " << axis.x << " " << axis.y << " " << axis.z << ", point " << p.x << " " << p.y << " " << p.z);
+      CHECK(b.contains(turn * p));
+    }
+  }
+  // A closed room is upright: its world box, as before.
+  const Scene room = finish_scene(builders::furnished_room(), {});
+  CHECK(same(room.light_bounds(), room.bounds));
 }

@@ -50,7 +50,7 @@ void write_obj(const fs::path& path, const Scene& scene, const glm::dmat3& r) {
 void write_lights(const fs::path& path, const glm::dmat3& r, bool nudged = false) {
   const double more = nudged ? 1.1 : 1.0;
   const DVec3 off = nudged ? DVec3(0.06, -0.04, 0.05) : DVec3(0.0);
-  const DVec3 a = r * (DVec3(1.25, 2.5, 0.75) + off), b = r * (DVec3(-1.0, 2.25, 1.5) - off),
+  const DVec3 a = r * (DVec3(1.25, 2.3, 0.75) + off), b = r * (DVec3(-1.0, 2.25, 1.5) - off),
               d = r * glm::normalize(DVec3(0.3, -1.0, -0.2) + 0.5 * off);
   std::ofstream out(path);
   out << std::setprecision(17) << R"({"lights": [{"type": "point", "position": [)" << a.x << ", " << a.y << ", " << a.z
@@ -158,20 +158,24 @@ TEST_CASE("rotation: real models turned at random render the same per-vertex val
   }
 }
 
-TEST_CASE("rotation: real models turned about the vertical solve and fine-tune to the same lights, turned", "[invariance][rotation][solve][cli][real]") {
+TEST_CASE("rotation: real models turned about the vertical or any axis solve and fine-tune to the same lights, turned",
+          "[invariance][rotation][solve][cli][real]") {
   if (skip_without_models()) return;
-  // About the vertical only: the placement's ceilings and the light space's
-  // floors are +Y, so a turn about another axis asks a different question.
+  // Turned about the vertical, and about two seeded random axes: a turned
+  // floor's lamps stand outside its world box, so the light space is then
+  // its own box, turned (light_bounds.cpp).
   const fs::path dir = test::output_dir("rotation_solve");
   Scene scene = builders::curved_models_on_floor();
   scene.update_bounds();
   std::mt19937_64 rng(1919);
-  const double angles[] = {0.0, std::uniform_real_distribution<double>(0.2, 6.0)(rng)};
-  Lighting found[2], tuned[2];
-  glm::dmat3 turns[2];
-  for (int s = 0; s < 2; ++s) {
-    const double a = angles[s];
-    turns[s] = glm::dmat3(glm::dvec3(std::cos(a), 0, -std::sin(a)), glm::dvec3(0, 1, 0), glm::dvec3(std::sin(a), 0, std::cos(a)));
+  const double angle = std::uniform_real_distribution<double>(0.2, 6.0)(rng);
+  constexpr int kTurns = 4;
+  glm::dmat3 turns[kTurns] = {glm::dmat3(1.0),
+                              glm::dmat3(glm::dvec3(std::cos(angle), 0, -std::sin(angle)), glm::dvec3(0, 1, 0),
+                                         glm::dvec3(std::sin(angle), 0, std::cos(angle))),
+                              random_rotation(19), random_rotation(37)};
+  Lighting found[kTurns], tuned[kTurns];
+  for (int s = 0; s < kTurns; ++s) {
     const std::string name = "turn" + std::to_string(s);
     write_obj(dir / (name + ".obj"), scene, turns[s]);
     write_lights(dir / (name + "-lights.json"), turns[s]);
@@ -180,7 +184,7 @@ TEST_CASE("rotation: real models turned about the vertical solve and fine-tune t
                                target.string(), "--bounces", "0"}).exit_code == 0);
     const auto r = test::run_hilight({"solve", (dir / (name + ".obj")).string(), "--target", target.string(), "-o", out.string(),
                                       "--no-cache", "--bounces", "0", "--samples", "1500"});
-    INFO("angle " << a << ": " << r.err);
+    INFO("turn " << s << ": " << r.err);
     REQUIRE(r.exit_code == 0);
     found[s] = read_lights_json(out);
     // Fine-tune from the lights nudged off, turned the same way.
@@ -189,47 +193,51 @@ TEST_CASE("rotation: real models turned about the vertical solve and fine-tune t
     const auto t = test::run_hilight({"solve", (dir / (name + ".obj")).string(), "--target", target.string(), "-o", tuned_out.string(),
                                       "--no-cache", "--bounces", "0", "--samples", "1500", "--mode", "fine-tune", "--initial",
                                       (dir / (name + "-nudged.json")).string()});
-    INFO("fine-tune, angle " << a << ": " << t.err);
+    INFO("fine-tune, turn " << s << ": " << t.err);
     REQUIRE(t.exit_code == 0);
     tuned[s] = read_lights_json(tuned_out);
   }
   const double diagonal = scene.diagonal();
   REQUIRE(found[0].size() == 2);
-  REQUIRE(found[1].size() == found[0].size());
-  const glm::dmat3 back = glm::transpose(turns[1]);
-  for (size_t j = 0; j < found[0].size(); ++j) {
-    size_t m = 0;
-    for (size_t i = 1; i < found[1].size(); ++i)
-      if (glm::length(back * DVec3(found[1][i].position) - DVec3(found[0][j].position)) <
-          glm::length(back * DVec3(found[1][m].position) - DVec3(found[0][j].position)))
-        m = i;
-    const Light& light = found[1][m];
-    const double off = glm::length(back * DVec3(light.position) - DVec3(found[0][j].position)) / diagonal;
-    std::cout << "rotation solve, angle " << angles[1] << ", light " << j << ": position off " << off << " of the size, intensity ratio "
-              << light.intensity.r / found[0][j].intensity.r << std::endl;
-    INFO("light " << j << ": position off " << off << " of the size");
-    CHECK(light.type == found[0][j].type);
-    CHECK(off < 1e-4);
-    for (int ch = 0; ch < 3; ++ch) CHECK(double(light.intensity[ch]) == Approx(double(found[0][j].intensity[ch])).epsilon(1e-3));
-    // A spot's aim, where the target decides it: a cone wider than the
-    // scene seen from the light (the point light comes back as a spot of
-    // 89°: measured) may turn without changing the light anywhere.
-    if (light.type == LightType::Spot && found[0][j].cutoff_deg < 60.f) {
-      CHECK(glm::length(back * DVec3(light.direction) - DVec3(found[0][j].direction)) < 1e-4);
-      CHECK(light.cutoff_deg == Approx(found[0][j].cutoff_deg).epsilon(1e-4));
-    }
-  }
-  // Fine-tune keeps the order of its start: light j is light j.
   REQUIRE(tuned[0].size() == 2);
-  REQUIRE(tuned[1].size() == 2);
-  for (size_t j = 0; j < 2; ++j) {
-    const double off = glm::length(back * DVec3(tuned[1][j].position) - DVec3(tuned[0][j].position)) / diagonal;
-    std::cout << "rotation fine-tune, light " << j << ": position off " << off << " of the size, intensity ratio "
-              << tuned[1][j].intensity.r / tuned[0][j].intensity.r << std::endl;
-    INFO("fine-tuned light " << j << ": position off " << off << " of the size");
-    // Measured: 1·10⁻⁶ of the size, intensities within 5·10⁻⁶ (2·10⁻⁴ and
-    // 0.08% while the crease faces' tie went by world axes).
-    CHECK(off < 1e-4);
-    for (int ch = 0; ch < 3; ++ch) CHECK(double(tuned[1][j].intensity[ch]) == Approx(double(tuned[0][j].intensity[ch])).epsilon(1e-3));
+  for (int t = 1; t < kTurns; ++t) {
+    const glm::dmat3 back = glm::transpose(turns[t]);
+    // The issue's bounds: positions within 10⁻⁴ of the size, intensities
+    // within 0.1%. Measured: the solve within 2.5·10⁻⁸ of the size about
+    // every axis; fine-tune within 1.4·10⁻⁵ and 7·10⁻⁵ in intensity (it
+    // ended 2·10⁻⁴ apart while the crease faces' tie went by world axes;
+    // turned off the vertical, the solve missed the lamps: D̄ 15%).
+    const double solve_limit = 1e-4, intensity_limit = 1e-3;
+    REQUIRE(found[t].size() == found[0].size());
+    for (size_t j = 0; j < found[0].size(); ++j) {
+      size_t m = 0;
+      for (size_t i = 1; i < found[t].size(); ++i)
+        if (glm::length(back * DVec3(found[t][i].position) - DVec3(found[0][j].position)) <
+            glm::length(back * DVec3(found[t][m].position) - DVec3(found[0][j].position)))
+          m = i;
+      const Light& light = found[t][m];
+      const double off = glm::length(back * DVec3(light.position) - DVec3(found[0][j].position)) / diagonal;
+      std::cout << "rotation solve, turn " << t << ", light " << j << ": position off " << off << " of the size, intensity ratio "
+                << light.intensity.r / found[0][j].intensity.r << std::endl;
+      INFO("turn " << t << ", light " << j << ": position off " << off << " of the size");
+      CHECK(light.type == found[0][j].type);
+      CHECK(off < solve_limit);
+      for (int ch = 0; ch < 3; ++ch)
+        CHECK(double(light.intensity[ch]) == Approx(double(found[0][j].intensity[ch])).epsilon(intensity_limit));
+      if (light.type == LightType::Spot) {
+        CHECK(glm::length(back * DVec3(light.direction) - DVec3(found[0][j].direction)) < 10 * solve_limit);
+        CHECK(light.cutoff_deg == Approx(found[0][j].cutoff_deg).epsilon(10 * solve_limit));
+      }
+    }
+    // Fine-tune keeps the order of its start: light j is light j.
+    REQUIRE(tuned[t].size() == 2);
+    for (size_t j = 0; j < 2; ++j) {
+      const double off = glm::length(back * DVec3(tuned[t][j].position) - DVec3(tuned[0][j].position)) / diagonal;
+      std::cout << "rotation fine-tune, turn " << t << ", light " << j << ": position off " << off << " of the size, intensity ratio "
+                << tuned[t][j].intensity.r / tuned[0][j].intensity.r << std::endl;
+      INFO("turn " << t << ", fine-tuned light " << j << ": position off " << off << " of the size");
+      CHECK(off < 1e-4);
+      for (int ch = 0; ch < 3; ++ch) CHECK(double(tuned[t][j].intensity[ch]) == Approx(double(tuned[0][j].intensity[ch])).epsilon(1e-3));
+    }
   }
 }
