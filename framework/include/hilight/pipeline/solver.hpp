@@ -190,7 +190,8 @@ private:
   /// D̄ at or above `give_up_dbar` before the polish.
   Lighting add_spots(const SampleSet& samples, double give_up_dbar, double& dbar);
   /// Each spot at least kWideSpotDeg wide tried as a point light where it
-  /// stands, polished by the reference; kept unless D̄ grows.
+  /// stands, polished by the reference; kept unless the spot's D̄ is better
+  /// by ε_impro.
   Lighting wide_spots_as_points(const SampleSet& samples, Lighting lights, double& dbar);
   /// Eq. 9 once more on the final lights: the nearest two point lights merged
   /// (eq. 7) and polished, kept while D̄ grows by less than ε_impro (a lamp
