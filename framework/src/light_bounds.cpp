@@ -122,13 +122,20 @@ Bounds Scene::light_bounds() const {
   Bounds b = bounds;
   const float flat = 0.25f * diagonal(), grown = 0.5f * diagonal();
   Vec3 facing(0.f), area(0.f);
+  double total = 0.0, square = 0.0;  // all the area, and the area facing along a world axis
   for (const auto& tri : triangles) {
     const Vec3 n = glm::cross(positions[tri[1]] - positions[tri[0]], positions[tri[2]] - positions[tri[0]]);  // length: twice the area
     facing += n;
     area += glm::abs(n);
+    const float length = glm::length(n);
+    total += double(length);
+    if (std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)}) >= 0.999f * length) square += double(length);
   }
   for (int k = 0; k < 3; ++k)
     if (b.hi[k] - b.lo[k] < flat) grow_flat(b.lo[k], b.hi[k], area[k] > 0.f ? facing[k] / area[k] : 0.f, grown);
+  // Most of the surface squarely along the world's axes (walls, floors):
+  // upright, whatever its own frame says.
+  if (square >= 0.5 * total) return b;
   // A scene turned off the world's axes: the same space, turned (measured:
   // the curved models on their floor, tilted at random, had their lamps
   // outside the world box and the solve ended on its top face at D̄ 15%).
