@@ -79,6 +79,34 @@ void grow_flat(float& lo, float& hi, float lean, float grown) {
   }
 }
 
+/// The surface's area vectors in a frame (`to_frame` takes a world
+/// direction there): summed (`facing`), summed by magnitude per axis
+/// (`area`), and the area facing squarely along one of its axes.
+struct Facing {
+  Vec3 facing{0.f}, area{0.f};
+  double total = 0.0, square = 0.0;
+};
+
+Facing facing_in(const Scene& scene, const glm::mat3& to_frame) {
+  Facing f;
+  for (const auto& tri : scene.triangles) {
+    const Vec3& a = scene.positions[tri[0]];
+    const Vec3 n = to_frame * glm::cross(scene.positions[tri[1]] - a, scene.positions[tri[2]] - a);  // length: twice the area
+    f.facing += n;
+    f.area += glm::abs(n);
+    const float length = glm::length(n);
+    f.total += double(length);
+    if (std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)}) >= 0.999f * length) f.square += double(length);
+  }
+  return f;
+}
+
+/// [lo, hi] (in the frame of `f`) with each flat axis grown (grow_flat).
+void grow_flat_axes(Vec3& lo, Vec3& hi, const Facing& f, float flat, float grown) {
+  for (int k = 0; k < 3; ++k)
+    if (hi[k] - lo[k] < flat) grow_flat(lo[k], hi[k], f.area[k] > 0.f ? f.facing[k] / f.area[k] : 0.f, grown);
+}
+
 /// Where lights may stand when the scene is turned off the world's axes
 /// (a floor with models, tilted): its box in its own frame (own_frame.hpp),
 /// grown along its own flat axes, as an upright one is along the world's;
@@ -91,15 +119,7 @@ std::optional<Bounds> turned_bounds(const Scene& scene, const Bounds& world, flo
     const Vec3 q = frame.to_own(p - frame.centre);
     lo = glm::min(lo, q), hi = glm::max(hi, q);
   }
-  Vec3 facing(0.f), area(0.f);
-  for (const auto& tri : scene.triangles) {
-    const Vec3 n = frame.to_own(glm::cross(scene.positions[tri[1]] - scene.positions[tri[0]],
-                                           scene.positions[tri[2]] - scene.positions[tri[0]]));
-    facing += n;
-    area += glm::abs(n);
-  }
-  for (int k = 0; k < 3; ++k)
-    if (hi[k] - lo[k] < flat) grow_flat(lo[k], hi[k], area[k] > 0.f ? facing[k] / area[k] : 0.f, grown);
+  grow_flat_axes(lo, hi, facing_in(scene, glm::transpose(frame.axes)), flat, grown);
   auto volume = [](const Vec3& extent) { return double(extent.x) * double(extent.y) * double(extent.z); };
   if (!(volume(hi - lo) < kTurnedVolume * volume(world.extent()))) return std::nullopt;
   Bounds box = scene.bounds;
@@ -121,21 +141,11 @@ Bounds Scene::light_bounds() const {
   // way (a light under an open floor would only light its underside).
   Bounds b = bounds;
   const float flat = 0.25f * diagonal(), grown = 0.5f * diagonal();
-  Vec3 facing(0.f), area(0.f);
-  double total = 0.0, square = 0.0;  // all the area, and the area facing along a world axis
-  for (const auto& tri : triangles) {
-    const Vec3 n = glm::cross(positions[tri[1]] - positions[tri[0]], positions[tri[2]] - positions[tri[0]]);  // length: twice the area
-    facing += n;
-    area += glm::abs(n);
-    const float length = glm::length(n);
-    total += double(length);
-    if (std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)}) >= 0.999f * length) square += double(length);
-  }
-  for (int k = 0; k < 3; ++k)
-    if (b.hi[k] - b.lo[k] < flat) grow_flat(b.lo[k], b.hi[k], area[k] > 0.f ? facing[k] / area[k] : 0.f, grown);
+  const Facing world = facing_in(*this, glm::mat3(1.f));
+  grow_flat_axes(b.lo, b.hi, world, flat, grown);
   // Most of the surface squarely along the world's axes (walls, floors):
   // upright, whatever its own frame says.
-  if (square >= 0.5 * total) return b;
+  if (world.square >= 0.5 * world.total) return b;
   // A scene turned off the world's axes: the same space, turned (measured:
   // the curved models on their floor, tilted at random, had their lamps
   // outside the world box and the solve ended on its top face at D̄ 15%).

@@ -15,8 +15,6 @@ namespace {
 /// along two tangents), cutoff and soft edge (degrees) — similar scales.
 constexpr int kParams = 7;
 constexpr double kFiniteStep[kParams] = {0.1, 0.1, 0.1, 2e-3, 2e-3, 0.1, 0.1};
-/// A hard edge has no slope between samples: the softest edge kept is this.
-constexpr float kMinFalloffDeg = 0.25f;
 
 Light moved(const Light& s, const double* x, float position_unit, float falloff_share) {
   Light l = s;
@@ -25,8 +23,8 @@ Light moved(const Light& s, const double* x, float position_unit, float falloff_
   const Vec3 e1 = glm::normalize(std::abs(d.y) < 0.9f ? glm::cross(d, Vec3(0.f, 1.f, 0.f)) : glm::cross(d, Vec3(1.f, 0.f, 0.f)));
   const Vec3 e2 = glm::cross(d, e1);
   l.direction = glm::normalize(d + float(x[3]) * e1 + float(x[4]) * e2);
-  l.cutoff_deg = std::clamp(s.cutoff_deg + float(x[5]), 1.f, 89.f);
-  l.falloff_deg = std::clamp(s.falloff_deg + float(x[6]), kMinFalloffDeg, std::max(kMinFalloffDeg, falloff_share * l.cutoff_deg));
+  l.cutoff_deg = std::clamp(s.cutoff_deg + float(x[5]), kMinSpotCutoffDeg, kMaxSpotCutoffDeg);
+  l.falloff_deg = std::clamp(s.falloff_deg + float(x[6]), kMinSpotFalloffDeg, std::max(kMinSpotFalloffDeg, falloff_share * l.cutoff_deg));
   return l;
 }
 

@@ -1,10 +1,11 @@
 #pragma once
 /// The last stretch of refinement: Levenberg–Marquardt over point-light
-/// positions (and spots' geometry, if asked) and all intensities together, on the anchored sample problem,
-/// with finite-difference Jacobians (3 extra responses per point light and
-/// iteration, one batch). A simplex stalls in the narrow valleys of lights
-/// near surfaces — a ceiling lamp 15 cm below the ceiling moved 6 mm
-/// changes its hot spot by 8% — where Gauss–Newton converges in a few steps.
+/// positions (and spots' geometry, if asked) and all intensities together,
+/// on the anchored sample problem, with finite-difference Jacobians (one
+/// extra response per parameter and iteration, one batch). A simplex stalls
+/// in the narrow valleys of lights near surfaces — a ceiling lamp 15 cm
+/// below the ceiling moved 6 mm changes its hot spot by 8% — where
+/// Gauss–Newton converges in a few steps.
 #include "hilight/pipeline/refine_problem.hpp"
 
 namespace hilight {

@@ -14,6 +14,11 @@
 
 namespace hilight {
 
+/// The cones a refinement keeps a spot's geometry within (here and in the
+/// reference's Gauss–Newton polish): a hard edge has no slope between
+/// samples, so the softest edge kept is kMinSpotFalloffDeg.
+constexpr float kMinSpotCutoffDeg = 1.f, kMaxSpotCutoffDeg = 89.f, kMinSpotFalloffDeg = 0.25f;
+
 struct SpotRefineSettings {
   /// Jacobians evaluated at most. A spot's valley is long and curved: the
   /// steps stay small for a while before it is found, so stopping early

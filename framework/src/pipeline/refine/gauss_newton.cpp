@@ -1,5 +1,7 @@
 #include "hilight/pipeline/gauss_newton.hpp"
 
+#include "hilight/pipeline/spot_refinement.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -38,8 +40,6 @@ struct GeometryParameter {
 
 /// Finite-difference and step units: the aim in radians, the cone in degrees.
 constexpr double kAimStep = 1e-3, kConeStepDeg = 0.05;
-/// Cones as the spot search keeps them (spot_refinement.cpp).
-constexpr float kMinCutoffDeg = 1.f, kMaxCutoffDeg = 89.f, kMinFalloffDeg = 0.25f;
 
 /// Two tangents to `d`, laid out from the scene's own axes (the one least
 /// along `d`), so a turned scene aims its spots along the same tangents.
@@ -57,11 +57,11 @@ void move(Light& l, const GeometryParameter& q, double amount, double h) {
     case GeometryParameter::Position: l.position += float(amount * h) * q.axis; break;
     case GeometryParameter::Aim: l.direction = glm::normalize(glm::normalize(l.direction) + float(amount * kAimStep) * q.axis); break;
     case GeometryParameter::Cutoff:
-      l.cutoff_deg = std::clamp(l.cutoff_deg + float(amount * kConeStepDeg), kMinCutoffDeg, kMaxCutoffDeg);
+      l.cutoff_deg = std::clamp(l.cutoff_deg + float(amount * kConeStepDeg), kMinSpotCutoffDeg, kMaxSpotCutoffDeg);
       l.falloff_deg = std::min(l.falloff_deg, l.cutoff_deg);
       break;
     case GeometryParameter::Falloff:
-      l.falloff_deg = std::clamp(l.falloff_deg + float(amount * kConeStepDeg), kMinFalloffDeg, std::max(kMinFalloffDeg, l.cutoff_deg));
+      l.falloff_deg = std::clamp(l.falloff_deg + float(amount * kConeStepDeg), kMinSpotFalloffDeg, std::max(kMinSpotFalloffDeg, l.cutoff_deg));
       break;
   }
 }
