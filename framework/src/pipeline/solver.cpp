@@ -488,6 +488,12 @@ Lighting Solver::fine_tune(const Target& target, const Lighting& given, SolveRep
   // round, and no residual polish: fine-tune follows the painter's strokes.
   Stopwatch refine_watch;
   Lighting refined = polish_with_reference(samples, lights, true, report.dbar_samples, 1);
+  if (m_settings.settle_fine_tune && report.dbar_samples > kSettledDbar) {
+    double model_dbar = 0, settled_dbar = 0;
+    Lighting settled = settle_lights(samples, *m_space, m_renderer, m_reference, refined, model_dbar);
+    settled = polish_with_reference(samples, settled, true, settled_dbar, 0);  // the reference's D̄, intensities fitted
+    if (settled_dbar < report.dbar_samples) refined = std::move(settled), report.dbar_samples = settled_dbar;
+  }
   report.seconds["refinement"] += refine_watch.seconds();
   finish_report(target, refined, report);
   report.seconds["total"] = total.seconds();

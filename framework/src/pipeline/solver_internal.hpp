@@ -16,9 +16,6 @@ constexpr double kVisibleDbar = 5e-3;
 /// spot search that cannot pay.
 constexpr double kSpotDbar = 0.05;
 constexpr int kMaxSpots = 4;
-/// A spot's cutoff from which it is tried as a point light (the spot
-/// search's cones go up to 89°; a downlight's beam is narrower).
-constexpr float kWideSpotDeg = 60.f;
 /// D̄ at the samples above which a light is tried split in two: a fit this
 /// poor is missing a lamp; below it, a light more mostly fits the remaining
 /// error of far or bounce-lit lights (the product sweep: 20 of 20 at 1%, 19
@@ -29,6 +26,10 @@ constexpr double kSplitDbar = 0.01;
 /// wrong turn (a luminaire turned 90° from the template: 33%); below it the
 /// turn is right, and each light's own turn is still chosen afterwards.
 constexpr double kTurnDbar = 0.01;
+/// D̄ at the samples below which fine-tune's polish is not settled further:
+/// lights that produce the target stay where they are (and a direct-light
+/// polish gets there itself).
+constexpr double kSettledDbar = 1e-4;
 /// D̄ above which a solve looks for the cause (unreachable painted light).
 constexpr double kPoorFitDbar = 0.05;
 

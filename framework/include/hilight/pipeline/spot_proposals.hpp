@@ -20,11 +20,20 @@ struct SpotProposalSettings {
 };
 
 /// Spotlights alone (intensities fitted) that explain the samples' target:
-/// screened by `renderer`'s direct light, refined twice with the bounce of
-/// `reference` at the cones found so far. A spot whose removal leaves D̄
-/// within ε_impro (and within ε_w of ‖Ψ‖), or below visible_dbar, goes. `dbar`: D̄ at the samples by
+/// screened by `renderer`'s direct light, refined in rounds with the bounce
+/// of `reference` taken where the cones stand. A spot whose removal leaves
+/// D̄ within ε_impro (and within ε_w of ‖Ψ‖), or below visible_dbar, goes; a
+/// spot of kWideSpotDeg or more becomes a point light unless its cone pays
+/// (eq. 9); the answer is settled by a simplex. `dbar`: D̄ at the samples by
 /// that model. Empty when no spot helps.
 Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference,
                        const SpotProposalSettings& settings, double& dbar);
+
+/// `lights` (spots and point lights, intensities fitted) settled as
+/// propose_spots settles its answer: Levenberg–Marquardt and a simplex over
+/// every light's geometry, the bounce of `reference` held and re-taken where
+/// they went. `dbar`: D̄ at the samples by that model.
+Lighting settle_lights(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference, Lighting lights,
+                       double& dbar);
 
 } // namespace hilight

@@ -1,6 +1,7 @@
 #pragma once
 /// Spotlights refined together by Levenberg–Marquardt over their geometry
-/// (position, direction, cutoff, soft edge), intensities by NNLS beside fixed
+/// (position, direction, cutoff, soft edge; a point light among them: its
+/// position), intensities by NNLS beside fixed
 /// base lights (variable projection). A spot's direct light is traced at
 /// every step; its bounce, which changes slowly with the cone, is held at a
 /// given estimate, so the cone is not stretched to paint its missing bounce.
@@ -18,6 +19,9 @@ namespace hilight {
 /// reference's Gauss–Newton polish): a hard edge has no slope between
 /// samples, so the softest edge kept is kMinSpotFalloffDeg.
 constexpr float kMinSpotCutoffDeg = 1.f, kMaxSpotCutoffDeg = 89.f, kMinSpotFalloffDeg = 0.25f;
+/// A spot's cutoff from which it is tried as a point light (the spot
+/// search's cones go up to 89°; a downlight's beam is narrower).
+constexpr float kWideSpotDeg = 60.f;
 
 struct SpotRefineSettings {
   /// Jacobians evaluated at most. A spot's valley is long and curved: the
@@ -33,6 +37,14 @@ struct SpotRefineSettings {
   double over_weight = 1.0;
   /// The soft edge at most this share of the cutoff.
   double max_falloff_share = 1.0;
+  /// After Levenberg–Marquardt, a Nelder–Mead simplex of at most this many
+  /// evaluations, then Levenberg–Marquardt again (0: none). A shadow edge
+  /// sweeping over samples as a lamp moves is a kink the finite differences
+  /// leave out, and it can hold the slopes centimetres off.
+  int simplex_evaluations = 0;
+  /// The simplex's first steps, in finite-difference steps (a position's: a
+  /// thousandth of the diagonal).
+  double simplex_step = 10.0;
 };
 
 /// `spots` refined (never worse by the model below). The model at the

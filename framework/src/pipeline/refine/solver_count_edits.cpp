@@ -8,6 +8,7 @@
 #include "hilight/pipeline/gauss_newton.hpp"
 #include "hilight/pipeline/refine_problem.hpp"
 #include "hilight/pipeline/spot_proposals.hpp"
+#include "hilight/pipeline/spot_refinement.hpp"
 #include "../solver_internal.hpp"
 
 #include <algorithm>
