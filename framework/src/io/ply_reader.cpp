@@ -121,6 +121,9 @@ PlyVertices read_ply_vertices(const std::filesystem::path& path) {
   PlyVertices out;
   const bool swap = (format == Format::BinaryBE) == (std::endian::native == std::endian::little);
   for (const Element& e : elements) {
+    // Rows of nothing would be read forever (a fuzzed count of 2.5·10¹⁵).
+    if (e.count > 0 && e.properties.empty())
+      throw InputError(file, "element '" + e.name + "' has " + std::to_string(e.count) + " rows but no properties");
     const bool is_vertex = e.name == "vertex";
     if (is_vertex) {
       out.count = e.count;
