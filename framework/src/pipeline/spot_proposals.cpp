@@ -28,9 +28,12 @@ struct Pass {
   bool fast_bounce;
   double over_weight;
   double falloff_share;
-  int iterations = kRoundIterations;  ///< Levenberg–Marquardt steps a round
-  int simplex = 0;                    ///< then simplex evaluations at most (0: none)
+  /// Settling (the answer's last pass): a simplex after each round's
+  /// Levenberg–Marquardt, and the better round kept (Model::refine).
+  bool settle = false;
 };
+/// A settling round's simplex evaluations at most.
+constexpr int kSettleSimplexEvaluations = 600;
 /// While the set is built, a spot keeps an edge (soft edge at most half its
 /// cutoff): an edgeless lobe fits under several pools at once and then
 /// holds them all.
@@ -44,7 +47,7 @@ constexpr Pass kFree{12, false, 1.0, 1.0};
 /// differences do not see (they leave those samples out), and it can hold
 /// Levenberg–Marquardt a few cm off (the curved models turned, with the
 /// bounce: 5 cm, D̄ 1.3%; settled, within 0.2 mm, D̄ 0.02%).
-constexpr Pass kSettle{12, false, 1.0, 1.0, kRoundIterations, 600};
+constexpr Pass kSettle{12, false, 1.0, 1.0, true};
 /// A candidate beside the spots found so far: it may light less than the
 /// target (lamps not yet found will add) but over-lighting counts 100
 /// times: otherwise the best single spot for two or three pools is one wide
@@ -80,8 +83,8 @@ struct Model {
     SpotRefineSettings settings;
     settings.over_weight = pass.over_weight;
     settings.max_falloff_share = pass.falloff_share;
-    settings.iterations = pass.iterations;
-    settings.simplex_evaluations = pass.simplex;
+    settings.iterations = kRoundIterations;
+    settings.simplex_evaluations = pass.settle ? kSettleSimplexEvaluations : 0;
     for (int round = 0; round < pass.rounds; ++round) {
       const std::vector<Rgb> estimate = bounce_of(spots, pass.fast_bounce);
       spots = refine_spots(spots, estimate, samples, space, renderer, base_phi, base_count, dbar, settings);
@@ -90,7 +93,7 @@ struct Model {
       // bounce's own roughness: each gather hit crosses shadow edges on its
       // own). While the set is built a worse round still moves on (measured:
       // stopping there lost a turned scene's spot, D̄ 18%).
-      if (pass.simplex > 0 && dbar > previous) {
+      if (pass.settle && dbar > previous) {
         spots = std::move(best), dbar = previous;
         break;
       }
