@@ -1,4 +1,6 @@
 // Regressions from review: solves that once failed silently or crashed.
+#include "hilight/error.hpp"
+#include "hilight/io/ply_reader.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "support.hpp"
 
@@ -85,6 +87,14 @@ TEST_CASE("a PLY target whose header claims more than the file holds is refused"
     CHECK(test::line_count(r.err) == 1);
     CHECK_THAT(r.err, Catch::Contains(name));
   }
+}
+
+TEST_CASE("a PLY element with rows but no properties is refused, not read forever", "[edge][bad-input][ply]") {
+  // Found by fuzzing (tools/fuzz.sh): rows that take no bytes were read
+  // 2.5·10¹⁵ times. `solve` never got there (its target needs positions).
+  auto dir = test::output_dir("edge_ply_empty_rows");
+  test::write_text(dir / "empty-rows.ply", "ply\nformat ascii 1.0\nelement vertex 2555555555555550pr30propert\nend_header\n0 0 0 255 0r");
+  CHECK_THROWS_AS(hilight::read_ply_vertices(dir / "empty-rows.ply"), hilight::InputError);
 }
 
 TEST_CASE("a solve is byte-identical with one thread or two, and the second one loads the light cache", "[solve][determinism]") {
