@@ -21,6 +21,15 @@ TEST_CASE("the build's modules load: the embree renderer and the cli frontend", 
   CHECK(reg.renderer_unavailable_reason("embree").empty());
 }
 
+TEST_CASE("renderers declare whether their direct light is cheap enough to settle fine-tune", "[plugins]") {
+  // The solve settles fine-tune's answer with hundreds of direct renders
+  // only where the renderer says they take milliseconds (command_solve.cpp).
+  Registry& reg = test::registry();
+  CHECK(reg.renderer_traits("embree").cheap_direct);
+  for (const char* other : {"povray", "ism-vulkan"})
+    if (reg.find("renderer", other)) CHECK_FALSE(reg.renderer_traits(other).cheap_direct);
+}
+
 TEST_CASE("a module built against another ABI version is refused with a clear message", "[plugins][abi]") {
   Registry reg;
   const ModuleRecord& rec = reg.load_module(std::string(HILIGHT_TEST_PLUGIN_DIR) + "/hilight-renderer-wrong-abi.so");

@@ -45,6 +45,11 @@ struct RendererTraits {
   /// On top of the fast twin: a quick preview for interactive display (the
   /// painter shows it before the exact render). Empty: no preview stage.
   std::vector<std::string> preview;
+  /// Direct light at a solve's samples takes milliseconds, so a solve may
+  /// spend hundreds of direct renders settling fine-tune's answer with the
+  /// bounce (SolveSettings::settle_fine_tune); false where each is a
+  /// process run or a GPU submission (minutes in all).
+  bool cheap_direct = false;
 };
 
 struct ModuleRecord {
