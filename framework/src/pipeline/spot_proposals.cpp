@@ -92,6 +92,16 @@ std::vector<float> without_spikes(const SampleSet& samples, const std::vector<Rg
   return weight;
 }
 
+/// The lights stand where `b`'s do, aimed and opened alike (intensities aside).
+bool same_geometry(const Lighting& a, const Lighting& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t j = 0; j < a.size(); ++j)
+    if (a[j].type != b[j].type || a[j].position != b[j].position || a[j].direction != b[j].direction ||
+        a[j].cutoff_deg != b[j].cutoff_deg || a[j].falloff_deg != b[j].falloff_deg)
+      return false;
+  return true;
+}
+
 struct Model {
   const SampleSet& samples;
   const LightSpace& space;
@@ -150,12 +160,17 @@ struct Model {
     double best_dbar = 1e300;
     SampleSet held_samples = samples;  // the weights the rounds fit with
     std::vector<Rgb> estimate;
+    bool moved = true;
     for (int round = 0, idle = 0, phase = 0;; ++round) {  // rounds counted in each phase
-      estimate = bounce_of(lights);
-      const double d = fit(responses(lights, estimate), lights.size(), &residual);
-      if (std::getenv("HILIGHT_SPOT_DEBUG")) std::fprintf(stderr, "settling, round %d%s: D̄ %.4e\n", round, phase ? " without spikes" : "", d);
-      idle = d < 0.98 * best_dbar ? 0 : idle + 1;
-      if (d < best_dbar) best = lights, best_bounce = estimate, best_residual = residual, best_dbar = d;
+      if (moved) {
+        estimate = bounce_of(lights);
+        const double d = fit(responses(lights, estimate), lights.size(), &residual);
+        if (std::getenv("HILIGHT_SPOT_DEBUG")) std::fprintf(stderr, "settling, round %d%s: D̄ %.4e\n", round, phase ? " without spikes" : "", d);
+        idle = d < 0.98 * best_dbar ? 0 : idle + 1;
+        if (d < best_dbar) best = lights, best_bounce = estimate, best_residual = residual, best_dbar = d;
+      } else {
+        idle = kSettlePatience;  // the same lights again: every round after would be this one
+      }
       if (idle >= kSettlePatience || round == kSettleRounds) {
         const bool bounce_seen = std::any_of(estimate.begin(), estimate.end(), [](const Rgb& b) { return b != Rgb(0.f); });
         if (!despike || !bounce_seen || phase == 1) break;  // direct light alone has no spikes to leave out
@@ -163,7 +178,9 @@ struct Model {
       }
       if (phase == 1) held_samples.weight = without_spikes(samples, residual);
       double held = 1.0;  // D̄ with the bounce held: not comparable across rounds
-      lights = refine_spots(lights, estimate, held_samples, space, renderer, {}, 0, held, settings);
+      Lighting next = refine_spots(lights, estimate, held_samples, space, renderer, {}, 0, held, settings);
+      moved = !same_geometry(next, lights);
+      lights = std::move(next);
     }
     dbar = best_dbar;
     if (bounce) *bounce = std::move(best_bounce);
