@@ -6,7 +6,8 @@
 // the scene's own frame, which turns with it (own_frame.hpp), and a turn
 // about the vertical or any axis solves to the same lights, with and
 // without the bounce.
-// Scale is test_scale_invariance.cpp's, translation test_far_from_origin.cpp's.
+// Scale is test_scale_invariance.cpp's (the last case here turns and scales
+// at once), translation test_far_from_origin.cpp's.
 #include "hilight/io/lights_json.hpp"
 #include "hilight/io/ply_reader.hpp"
 #include "hilight/own_frame.hpp"
@@ -36,23 +37,27 @@ glm::dmat3 random_rotation(uint64_t seed) {
   return glm::mat3_cast(glm::normalize(q));
 }
 
-void write_obj(const fs::path& path, const Scene& scene, const glm::dmat3& r) {
+/// `scene` turned by r and scaled by k, in decimals (a scale that is not a
+/// power of two rounds each coordinate: one-ulp differences, as in a file
+/// exported in another unit).
+void write_obj(const fs::path& path, const Scene& scene, const glm::dmat3& r, double k = 1.0) {
   std::ofstream obj(path);
   obj << std::setprecision(17);
   for (size_t v = 0; v < scene.positions.size(); ++v) {
-    const DVec3 p = r * DVec3(scene.positions[v]), n = r * DVec3(scene.normals[v]);
+    const DVec3 p = k * (r * DVec3(scene.positions[v])), n = r * DVec3(scene.normals[v]);
     obj << "v " << p.x << ' ' << p.y << ' ' << p.z << "\nvn " << n.x << ' ' << n.y << ' ' << n.z << "\n";
   }
   for (const auto& t : scene.triangles)
     obj << "f " << t[0] + 1 << "//" << t[0] + 1 << ' ' << t[1] + 1 << "//" << t[1] + 1 << ' ' << t[2] + 1 << "//" << t[2] + 1 << "\n";
 }
 
-/// A point light and a soft-edged spotlight over the models, turned by r;
-/// `nudged`: each a few centimetres off and 10% brighter (a fine-tune's start).
-void write_lights(const fs::path& path, const glm::dmat3& r, bool nudged = false) {
-  const double more = nudged ? 1.1 : 1.0;
+/// A point light and a soft-edged spotlight over the models, turned by r
+/// and scaled by k (intensities by k², the same irradiance); `nudged`: each
+/// a few centimetres off and 10% brighter (a fine-tune's start).
+void write_lights(const fs::path& path, const glm::dmat3& r, bool nudged = false, double k = 1.0) {
+  const double more = (nudged ? 1.1 : 1.0) * k * k;
   const DVec3 off = nudged ? DVec3(0.06, -0.04, 0.05) : DVec3(0.0);
-  const DVec3 a = r * (DVec3(1.25, 2.3, 0.75) + off), b = r * (DVec3(-1.0, 2.25, 1.5) - off),
+  const DVec3 a = k * (r * (DVec3(1.25, 2.3, 0.75) + off)), b = k * (r * (DVec3(-1.0, 2.25, 1.5) - off)),
               d = r * glm::normalize(DVec3(0.3, -1.0, -0.2) + 0.5 * off);
   std::ofstream out(path);
   out << std::setprecision(17) << R"({"lights": [{"type": "point", "position": [)" << a.x << ", " << a.y << ", " << a.z
@@ -162,21 +167,21 @@ TEST_CASE("rotation: real models turned at random render the same per-vertex val
 
 namespace {
 
-/// The curved models turned by each of `turns` with their lights: a target
-/// rendered, then solved and, given `tuned`, fine-tuned (from the lights
-/// nudged off, turned the same way) with `options`; `found` and `tuned` get
-/// the lights.
+/// The curved models turned by each of `turns` (and scaled by k) with their
+/// lights: a target rendered, then solved and, given `tuned`, fine-tuned
+/// (from the lights nudged off, turned the same way) with `options`;
+/// `found` and `tuned` get the lights.
 void solve_turned(const fs::path& dir, const std::vector<glm::dmat3>& turns, const std::vector<std::string>& options,
-                  std::vector<Lighting>& found, std::vector<Lighting>* tuned) {
+                  std::vector<Lighting>& found, std::vector<Lighting>* tuned, double k = 1.0) {
   Scene scene = builders::curved_models_on_floor();
   const std::string bounces = std::find(options.begin(), options.end(), "0") != options.end() ? "0" : "1";
   for (size_t s = 0; s < turns.size(); ++s) {
     const std::string name = "turn" + std::to_string(s);
     const fs::path obj = dir / (name + ".obj"), target = dir / (name + "-target.ply"), out = dir / (name + "-found.json"),
                    nudged = dir / (name + "-nudged.json"), tuned_out = dir / (name + "-tuned.json");
-    write_obj(obj, scene, turns[s]);
-    write_lights(dir / (name + "-lights.json"), turns[s]);
-    write_lights(nudged, turns[s], true);
+    write_obj(obj, scene, turns[s], k);
+    write_lights(dir / (name + "-lights.json"), turns[s], false, k);
+    write_lights(nudged, turns[s], true, k);
     REQUIRE(test::run_hilight({"render", obj.string(), "--lights", (dir / (name + "-lights.json")).string(), "-o", target.string(),
                                "--bounces", bounces}).exit_code == 0);
     std::vector<std::string> solve = {"solve", obj.string(), "--target", target.string(), "-o", out.string(), "--no-cache"};
@@ -197,14 +202,14 @@ void solve_turned(const fs::path& dir, const std::vector<glm::dmat3>& turns, con
 }
 
 /// Every turn's lights, turned back, are turn 0's: positions within
-/// `position_limit` of the size, intensities within `intensity_limit`.
-/// The solve's lists may differ in order (each light is matched to the
-/// nearest); fine-tune keeps its start's.
+/// `position_limit` of the size (the scene's scaled by k), intensities
+/// within `intensity_limit`. The solve's lists may differ in order (each
+/// light is matched to the nearest); fine-tune keeps its start's.
 void check_same_lights(const std::string& what, const std::vector<glm::dmat3>& turns, const std::vector<Lighting>& lights,
-                       bool ordered, double position_limit, double intensity_limit) {
+                       bool ordered, double position_limit, double intensity_limit, double k = 1.0) {
   Scene scene = builders::curved_models_on_floor();
   scene.update_bounds();
-  const double diagonal = scene.diagonal();
+  const double diagonal = k * scene.diagonal();
   for (size_t t = 1; t < turns.size(); ++t) {
     const glm::dmat3 back = glm::transpose(turns[t]);
     REQUIRE(lights[t].size() == lights[0].size());
@@ -267,27 +272,33 @@ TEST_CASE("rotation: real models turned about the vertical or any axis solve and
   check_same_lights("fine-tune", turns, tuned, true, 1e-4, 1e-3);
 }
 
-TEST_CASE("rotation: with the bounce, real models turned about any axis solve and fine-tune to the lights that made the target",
-          "[invariance][rotation][solve][bounce][cli][real]") {
+TEST_CASE("rotation and scale: with the bounce, real models turned about any axis and scaled by 1000 solve and fine-tune to the lights that made the target",
+          "[invariance][rotation][scale][solve][bounce][cli][real]") {
   if (skip_without_models()) return;
-  // The defaults (bounce, samples), on a seeded random turn. Each solve is
-  // held to the lamps themselves, turned: a stronger check than against the
-  // upright solve, at half the cost. The issue's bounds: positions within
-  // 10⁻⁴ of the size, intensities within 0.1%. Measured over seven random
-  // turns: the solve within 1.6·10⁻⁵ of the size of the lamps, fine-tune
-  // from 6–9 cm off the same, intensities within 0.01%. Before the
-  // settling left the bounce's spikes out (spot_proposals.cpp), the rounds
-  // stopped where a few samples' spikes balanced the direct light: up to
-  // 1.2·10⁻⁴ (fine-tune 1.7·10⁻⁴); before the settling itself, the spot 10
-  // cm low upright (D̄ 2.9%), fine-tune 7·10⁻³ of the size apart.
+  // The defaults (bounce, samples), on a seeded random turn, in millimetres
+  // as a metre model exported in them would be (decimals: each coordinate
+  // rounded, one-ulp differences; test_scale_invariance.cpp scales by powers
+  // of two, exactly). Each solve is held to the lamps themselves, turned and
+  // scaled: a stronger check than against the upright solve, at half the
+  // cost. The issue's bounds: positions within 10⁻⁴ of the size,
+  // intensities within 0.1%. Measured over seven random turns in metres:
+  // the solve within 1.6·10⁻⁵ of the size of the lamps, fine-tune from 6–9
+  // cm off the same, intensities within 0.01%; upright at ×1000 and ×0.001
+  // 1.4·10⁻⁵, as at ×1; this turn at ×1000: 1.5·10⁻⁵, fine-tune 1.6·10⁻⁵.
+  // Before the settling left the bounce's spikes out
+  // (spot_proposals.cpp), the rounds stopped where a few samples' spikes
+  // balanced the direct light: up to 1.2·10⁻⁴ (fine-tune 1.7·10⁻⁴); before
+  // the settling itself, the spot 10 cm low upright (D̄ 2.9%), fine-tune
+  // 7·10⁻³ of the size apart.
   const glm::dmat3 turn = random_rotation(19);
+  const double k = 1000.0;
   std::vector<Lighting> found, tuned;
   const fs::path dir = test::output_dir("rotation_solve_bounce");
-  solve_turned(dir, {turn}, {}, found, &tuned);
+  solve_turned(dir, {turn}, {}, found, &tuned, k);
   const Lighting truth = read_lights_json(dir / "turn0-lights.json");
-  const std::vector<glm::dmat3> same = {glm::dmat3(1.0), glm::dmat3(1.0)};  // both in the turned frame
+  const std::vector<glm::dmat3> same = {glm::dmat3(1.0), glm::dmat3(1.0)};  // both in the turned, scaled frame
   REQUIRE(found[0].size() == 2);
-  check_same_lights("solve with the bounce (against the lamps)", same, {truth, found[0]}, false, 1e-4, 1e-3);
+  check_same_lights("solve with the bounce (against the lamps)", same, {truth, found[0]}, false, 1e-4, 1e-3, k);
   REQUIRE(tuned[0].size() == 2);
-  check_same_lights("fine-tune with the bounce (against the lamps)", same, {truth, tuned[0]}, true, 1e-4, 1e-3);
+  check_same_lights("fine-tune with the bounce (against the lamps)", same, {truth, tuned[0]}, true, 1e-4, 1e-3, k);
 }
