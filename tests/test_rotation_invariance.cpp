@@ -272,7 +272,7 @@ TEST_CASE("rotation: real models turned about the vertical or any axis solve and
   check_same_lights("fine-tune", turns, tuned, true, 1e-4, 1e-3);
 }
 
-TEST_CASE("rotation and scale: with the bounce, real models turned about any axis and scaled by 1000 solve and fine-tune to the lights that made the target",
+TEST_CASE("rotation and scale: with the bounce, real models turned at random and scaled by 1000 solve and fine-tune to the lights that made the target",
           "[invariance][rotation][scale][solve][bounce][cli][real]") {
   if (skip_without_models()) return;
   // The defaults (bounce, samples), on a seeded random turn, in millimetres

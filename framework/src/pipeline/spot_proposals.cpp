@@ -43,14 +43,15 @@ constexpr Pass kFree{12, false, 1.0, 1.0};
 /// the finite differences do not see (they leave those samples out), and it
 /// can hold Levenberg–Marquardt a few cm off (the curved models turned,
 /// with the bounce: 5 cm, D̄ 1.3%; settled, within 0.2 mm, D̄ 0.02%).
-/// Rounds at most, the simplex's evaluations at most per round...
+/// Rounds at most in each of its two phases, the simplex's evaluations at
+/// most per round...
 constexpr int kSettleRounds = 12, kSettleSimplexEvaluations = 600;
 /// ...and rounds in a row without a 2% gain on the best before it stops:
 /// the bounce's roughness (each gather hit crosses shadow edges on its own)
 /// makes a round fit worse now and then on the way down (measured, fine-tune
-/// after a turn, D̄·10⁴ without the spikes: 2.74, then 3.32, 2.78, 2.57,
-/// 2.31, 0.98; stopping after two such rounds left the spot 10⁻⁴ of the
-/// size from the lamp, after three 1.4·10⁻⁵).
+/// after a turn, D̄·10⁴ in the rounds fitted without the spikes: 2.74, then
+/// 3.32, 2.78, 2.57, 2.31, 0.98; stopping after two such rounds left the
+/// spot 10⁻⁴ of the size from the lamp, after three 1.4·10⁻⁵).
 constexpr int kSettlePatience = 3;
 /// A candidate beside the spots found so far: it may light less than the
 /// target (lamps not yet found will add) but over-lighting counts 100
@@ -61,7 +62,7 @@ constexpr Pass kCandidate{2, true, 100.0, kBuildingFalloffShare};
 constexpr Pass kPair{2, true, 1.0, kBuildingFalloffShare};
 
 /// A sample holding more than this many times the mean squared residual of
-/// the others is a spike (without_spikes).
+/// the samples still kept is a spike (without_spikes).
 constexpr double kSpike = 100.0;
 
 /// `samples`' weights with the spikes of `residual` left out, again and
@@ -92,7 +93,7 @@ std::vector<float> without_spikes(const SampleSet& samples, const std::vector<Rg
   return weight;
 }
 
-/// The lights stand where `b`'s do, aimed and opened alike (intensities aside).
+/// `a`'s lights stand where `b`'s do, aimed and opened alike (intensities aside).
 bool same_geometry(const Lighting& a, const Lighting& b) {
   if (a.size() != b.size()) return false;
   for (size_t j = 0; j < a.size(); ++j)
@@ -139,6 +140,9 @@ struct Model {
     return spots;
   }
 
+  /// D̄ of `lights` with `bounce` (theirs), intensities fitted.
+  double dbar_with(const Lighting& lights, const std::vector<Rgb>& bounce) const { return fit(responses(lights, bounce), lights.size()); }
+
   /// `lights` (alone: nothing held) settled: rounds as refine's, with a
   /// simplex after each round's Levenberg–Marquardt (spot_refinement.hpp),
   /// each round judged by its lights' D̄ with the bounce re-taken where they
@@ -146,39 +150,49 @@ struct Model {
   /// — and the best kept, so the answer is never worse than `lights`. While
   /// the set is built refine() moves on regardless (measured: stopping at a
   /// worse round there lost a turned scene's spot, D̄ 18%). Once the rounds
-  /// stall, with `despike`, more rounds from the best fit the samples
-  /// without the bounce's spikes (without_spikes; not from the start: far
-  /// from the answer a lamp's own hot spot is a spike, and fitted without
-  /// it the rounds went nowhere, D̄ 0.6%). `dbar` gets the best's D̄,
-  /// `bounce` its bounce.
+  /// stall (or reach kSettleRounds), with `despike`, as many more rounds
+  /// again from the best fit the samples without the bounce's spikes
+  /// (without_spikes; not from the start: far from the answer a lamp's own
+  /// hot spot is a spike, and fitted without it the rounds went nowhere, D̄
+  /// 0.6%). The best's intensities are those its D̄ was fitted with; `dbar`
+  /// gets that D̄ (with the bounce re-taken), `bounce` its bounce.
   Lighting settle(Lighting lights, double& dbar, std::vector<Rgb>* bounce = nullptr, bool despike = false) const {
     SpotRefineSettings settings;
     settings.iterations = kRoundIterations;
     settings.simplex_evaluations = kSettleSimplexEvaluations;
     Lighting best;
-    std::vector<Rgb> best_bounce, best_residual, residual;
+    std::vector<Rgb> best_bounce, best_residual, residual, estimate, intensities;
     double best_dbar = 1e300;
-    SampleSet held_samples = samples;  // the weights the rounds fit with
-    std::vector<Rgb> estimate;
-    bool moved = true;
-    for (int round = 0, idle = 0, phase = 0;; ++round) {  // rounds counted in each phase
+    std::optional<SampleSet> despiked;  // the samples the rounds fit, once without the spikes
+    bool moved = true, despiking = false;
+    for (int round = 0, rounds_without_gain = 0;; ++round) {  // rounds counted in each phase
       if (moved) {
         estimate = bounce_of(lights);
-        const double d = fit(responses(lights, estimate), lights.size(), &residual);
-        if (std::getenv("HILIGHT_SPOT_DEBUG")) std::fprintf(stderr, "settling, round %d%s: D̄ %.4e\n", round, phase ? " without spikes" : "", d);
-        idle = d < 0.98 * best_dbar ? 0 : idle + 1;
-        if (d < best_dbar) best = lights, best_bounce = estimate, best_residual = residual, best_dbar = d;
+        const double d = fit(responses(lights, estimate), lights.size(), &residual, &intensities);
+        if (std::getenv("HILIGHT_SPOT_DEBUG")) std::fprintf(stderr, "settling, round %d%s: D̄ %.4e\n", round, despiking ? " without spikes" : "", d);
+        rounds_without_gain = d < 0.98 * best_dbar ? 0 : rounds_without_gain + 1;
+        if (best.empty() || d < best_dbar) {
+          best = lights, best_bounce = estimate, best_residual = residual, best_dbar = d;
+          for (size_t j = 0; j < best.size(); ++j) best[j].intensity = intensities[j];
+        }
       } else {
-        idle = kSettlePatience;  // the same lights again: every round after would be this one
+        rounds_without_gain = kSettlePatience;  // the same lights again: every round after would be this one
       }
-      if (idle >= kSettlePatience || round == kSettleRounds) {
-        const bool bounce_seen = std::any_of(estimate.begin(), estimate.end(), [](const Rgb& b) { return b != Rgb(0.f); });
-        if (!despike || !bounce_seen || phase == 1) break;  // direct light alone has no spikes to leave out
-        phase = 1, round = 0, idle = 0, lights = best, estimate = best_bounce, residual = best_residual;
+      if (rounds_without_gain >= kSettlePatience || round == kSettleRounds) {
+        if (!despike || despiking) break;
+        // Direct light alone has no spikes of the bounce; and without any
+        // left out the rounds would retrace the ones just run.
+        const bool bounce_seen = std::any_of(best_bounce.begin(), best_bounce.end(), [](const Rgb& b) { return b != Rgb(0.f); });
+        std::vector<float> weight = without_spikes(samples, best_residual);
+        if (!bounce_seen || weight == samples.weight) break;
+        despiked.emplace(samples).weight = std::move(weight);
+        despiking = true, round = 0, rounds_without_gain = 0;
+        lights = best, estimate = best_bounce, residual = best_residual;
+      } else if (despiking) {
+        despiked->weight = without_spikes(samples, residual);
       }
-      if (phase == 1) held_samples.weight = without_spikes(samples, residual);
-      double held = 1.0;  // D̄ with the bounce held: not comparable across rounds
-      Lighting next = refine_spots(lights, estimate, held_samples, space, renderer, {}, 0, held, settings);
+      double held_dbar = 1.0;  // with the bounce held: not comparable across rounds
+      Lighting next = refine_spots(lights, estimate, despiked ? *despiked : samples, space, renderer, {}, 0, held_dbar, settings);
       moved = !same_geometry(next, lights);
       lights = std::move(next);
     }
@@ -187,10 +201,13 @@ struct Model {
     return best;
   }
 
-  /// D̄ of lights with responses `phi` (n of them), intensities by NNLS; `residual`: Ψ − the fit.
-  double fit(const std::vector<Rgb>& phi, size_t n, std::vector<Rgb>* residual = nullptr) const {
+  /// D̄ of lights with responses `phi` (n of them), intensities by NNLS
+  /// (`intensities` gets them); `residual`: Ψ − the fit.
+  double fit(const std::vector<Rgb>& phi, size_t n, std::vector<Rgb>* residual = nullptr, std::vector<Rgb>* intensities = nullptr) const {
     const size_t m = samples.size();
-    const std::vector<Rgb> lit = combine(phi, fit_intensities(phi, n, samples), m);
+    std::vector<Rgb> fitted = fit_intensities(phi, n, samples);
+    const std::vector<Rgb> lit = combine(phi, fitted, m);
+    if (intensities) *intensities = std::move(fitted);
     if (residual) {
       residual->resize(m);
       for (size_t i = 0; i < m; ++i) (*residual)[i] = samples.target[i] - lit[i];
@@ -355,6 +372,9 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
   }
   // The set is built: every edge free, plain least squares.
   spots = model.refine(std::move(spots), {}, 0, kFree, dbar, &bounce);
+  // From here on each D̄ is with the bounce re-taken where the lights stand,
+  // as the settling's is (the rounds' own is with the bounce they held).
+  dbar = model.dbar_with(spots, bounce);
   show("freed", spots, dbar);
   wide_spots_as_points(model, settings.eps_impro, spots, bounce, dbar);
   // Eq. 9 backwards: the spot whose loss the others bear best (intensities
@@ -375,6 +395,7 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
     std::vector<Rgb> fewer_bounce;
     double fewer_dbar = least;
     fewer = model.refine(std::move(fewer), {}, 0, kFree, fewer_dbar, &fewer_bounce);
+    fewer_dbar = model.dbar_with(fewer, fewer_bounce);
     const bool pays = fewer_dbar >= settings.eps_impro * dbar || fewer_dbar - dbar >= settings.weak_threshold;
     if (pays && fewer_dbar > settings.visible_dbar) break;
     spots = std::move(fewer), bounce = std::move(fewer_bounce), dbar = fewer_dbar;

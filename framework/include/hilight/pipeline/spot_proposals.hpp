@@ -24,15 +24,18 @@ struct SpotProposalSettings {
 /// of `reference` taken where the cones stand. A spot whose removal leaves
 /// D̄ within ε_impro (and within ε_w of ‖Ψ‖), or below visible_dbar, goes; a
 /// spot of kWideSpotDeg or more becomes a point light unless its cone pays
-/// (eq. 9); the answer is settled by a simplex. `dbar`: D̄ at the samples by
-/// that model. Empty when no spot helps.
+/// (eq. 9); the answer is settled by a simplex, the bounce's spikes left
+/// out at the end. `dbar`: D̄ at the samples by that model, the bounce
+/// taken where the answer stands. Empty when no spot helps.
 Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference,
                        const SpotProposalSettings& settings, double& dbar);
 
 /// `lights` (spots and point lights, intensities fitted) settled as
 /// propose_spots settles its answer: Levenberg–Marquardt and a simplex over
 /// every light's geometry, the bounce of `reference` held and re-taken where
-/// they went. `dbar`: D̄ at the samples by that model.
+/// they went, the best round kept (never worse than `lights`), and rounds
+/// without the bounce's spikes once they stall. `dbar`: the best's D̄ at the
+/// samples by that model, its bounce re-taken where it stands.
 Lighting settle_lights(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference, Lighting lights,
                        double& dbar);
 
