@@ -52,11 +52,13 @@ struct SolveSettings {
   /// and keep them if they win by eq. 9 (docs/solve.md, "Spotlights").
   bool propose_spots = true;
   /// Fine-tune's lights, after its Gauss–Newton round, settled as the spot
-  /// search settles its answer (held bounce, simplex; kept where the
-  /// reference says it fits better): with the bounce the polish's slopes
-  /// run through the gathers and stall centimetres off. It renders the
-  /// direct light hundreds of times: seconds with a fast renderer, not the
-  /// painter's tenths (`hilight solve --mode fine-tune` turns it on).
+  /// search settles its answer (held bounce, simplex, the bounce's spikes
+  /// left out; kept where the reference says it fits better): with the
+  /// bounce the polish's slopes run through the gathers and stall
+  /// centimetres off. It renders the direct light hundreds of times:
+  /// seconds with a renderer whose direct light is cheap
+  /// (RendererTraits::cheap_direct), not the painter's tenths (`hilight
+  /// solve --mode fine-tune` turns it on with the bounce and such a renderer).
   bool settle_fine_tune = false;
   /// Every light the solve places is this luminaire (`--luminaire FILE`):
   /// its profile, aim and spin; the solve chooses positions, count and
