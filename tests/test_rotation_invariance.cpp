@@ -174,7 +174,9 @@ namespace {
 void solve_turned(const fs::path& dir, const std::vector<glm::dmat3>& turns, const std::vector<std::string>& options,
                   std::vector<Lighting>& found, std::vector<Lighting>* tuned, double k = 1.0) {
   Scene scene = builders::curved_models_on_floor();
-  const std::string bounces = std::find(options.begin(), options.end(), "0") != options.end() ? "0" : "1";
+  // The target is rendered with the bounces the solve is given (default 1).
+  const auto given = std::find(options.begin(), options.end(), "--bounces");
+  const std::string bounces = given != options.end() && given + 1 != options.end() ? *(given + 1) : "1";
   for (size_t s = 0; s < turns.size(); ++s) {
     const std::string name = "turn" + std::to_string(s);
     const fs::path obj = dir / (name + ".obj"), target = dir / (name + "-target.ply"), out = dir / (name + "-found.json"),

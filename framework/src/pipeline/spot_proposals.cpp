@@ -164,12 +164,13 @@ struct Model {
     std::vector<Rgb> best_bounce, best_residual, residual, estimate, intensities;
     double best_dbar = 1e300;
     std::optional<SampleSet> despiked;  // the samples the rounds fit, once without the spikes
+    static const bool debug = std::getenv("HILIGHT_SPOT_DEBUG");
     bool moved = true, despiking = false;
     for (int round = 0, rounds_without_gain = 0;; ++round) {  // rounds counted in each phase
       if (moved) {
         estimate = bounce_of(lights);
         const double d = fit(responses(lights, estimate), lights.size(), &residual, &intensities);
-        if (std::getenv("HILIGHT_SPOT_DEBUG")) std::fprintf(stderr, "settling, round %d%s: D̄ %.4e\n", round, despiking ? " without spikes" : "", d);
+        if (debug) std::fprintf(stderr, "settling, round %d%s: D̄ %.4e\n", round, despiking ? " without spikes" : "", d);
         rounds_without_gain = d < 0.98 * best_dbar ? 0 : rounds_without_gain + 1;
         if (best.empty() || d < best_dbar) {
           best = lights, best_bounce = estimate, best_residual = residual, best_dbar = d;
