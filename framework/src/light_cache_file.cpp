@@ -4,10 +4,13 @@
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/version.hpp"
 
+#include <cerrno>
 #include <cstring>
-#include <fstream>
+#include <fcntl.h>
 #include <sstream>
 #include <stdexcept>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace hilight {
 
@@ -37,6 +40,29 @@ struct Header {
   uint64_t payload_bytes;
   uint64_t checksum;  ///< hash_words of the payload
 };
+
+/// Closes its descriptor when it goes.
+struct Fd {
+  int fd;
+  explicit Fd(int f) : fd(f) {}
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+  Fd(const Fd&) = delete;
+  Fd& operator=(const Fd&) = delete;
+};
+
+bool read_all(int fd, void* data, size_t size) {
+  char* p = static_cast<char*>(data);
+  while (size > 0) {
+    const ssize_t got = ::read(fd, p, size);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) return false;
+    p += got;
+    size -= size_t(got);
+  }
+  return true;
+}
 
 } // namespace
 
@@ -73,40 +99,56 @@ void save_light_cache(const fs::path& file, uint64_t key, const LightCache& cach
   header.payload_bytes = payload.size();
   header.checksum = hash_words(kFnvOffset, payload.data(), payload.size());
   std::error_code ec;
-  fs::create_directories(file.parent_path(), ec);
-  write_atomically(file, [&](const fs::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
+  const fs::path dir = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+  if (!fs::is_directory(dir, ec) && !fs::create_directories(dir, ec) && ec)
+    throw std::runtime_error("cannot create the folder " + dir.string() + ": " + ec.message());
+  // Never written in place: a FIFO or device there would hang or take the bytes.
+  struct stat st {};
+  if (::lstat(file.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) throw std::runtime_error("it is not a regular file");
+  write_atomically(file, [&](std::ostream& out) {
     out.write(reinterpret_cast<const char*>(&header), sizeof(header));
     out.write(payload.data(), std::streamsize(payload.size()));
-    if (!out) throw std::runtime_error("light cache: write failed");
   });
 }
 
 LoadedCache load_light_cache(const fs::path& file, uint64_t key, const LightCacheBuilder& builder, size_t vertex_count) {
   LoadedCache loaded;
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return loaded;
+  // Every number in the file is read as untrusted input: the checksum is no
+  // secret, so a forged file passes it.
+  const Fd fd(::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));  // O_NONBLOCK: a FIFO must not hang the solve
+  if (fd.fd < 0) return loaded;
+  struct stat st {};
+  if (::fstat(fd.fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    loaded.damage = "it is not a regular file";
+    return loaded;
+  }
   Header header{};
-  if (!in.read(reinterpret_cast<char*>(&header), sizeof(header)) || std::memcmp(header.magic, kMagic, sizeof(kMagic)) != 0 ||
+  if (!read_all(fd.fd, &header, sizeof(header)) || std::memcmp(header.magic, kMagic, sizeof(kMagic)) != 0 ||
       header.format != kFileFormat || header.key != key)
     return loaded;  // another scene, setting or format: not ours to judge
-  std::error_code ec;
-  const uint64_t size = fs::file_size(file, ec);
-  if (ec || size != sizeof(header) + header.payload_bytes) {
+  // Compared without adding to the header's number: a crafted size must not wrap.
+  const uint64_t size = uint64_t(st.st_size);
+  if (size < sizeof(header) || header.payload_bytes != size - sizeof(header)) {
     loaded.damage = "its size does not match its header (truncated?)";
     return loaded;
   }
-  std::string payload(header.payload_bytes, '\0');
-  if (!in.read(payload.data(), std::streamsize(payload.size()))) {
-    loaded.damage = "it could not be read";
+  try {
+    std::string payload(header.payload_bytes, '\0');
+    if (!read_all(fd.fd, payload.data(), payload.size())) {
+      loaded.damage = "it could not be read";
+      return loaded;
+    }
+    if (hash_words(kFnvOffset, payload.data(), payload.size()) != header.checksum) {
+      loaded.damage = "its checksum does not match (damaged)";
+      return loaded;
+    }
+    std::istringstream contents(std::move(payload), std::ios::binary);
+    loaded.cache = builder.read(contents, vertex_count);
+  } catch (const std::exception& e) {  // too large to hold, or a reader's refusal
+    loaded.cache.reset();
+    loaded.damage = std::string("it could not be read (") + e.what() + ")";
     return loaded;
   }
-  if (hash_words(kFnvOffset, payload.data(), payload.size()) != header.checksum) {
-    loaded.damage = "its checksum does not match (damaged)";
-    return loaded;
-  }
-  std::istringstream contents(std::move(payload), std::ios::binary);
-  loaded.cache = builder.read(contents, vertex_count);
   if (!loaded.cache) loaded.damage = "its contents do not fit this scene";
   return loaded;
 }

@@ -69,11 +69,9 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   }
   PovSettings settings;
   settings.bounces = bounces;
-  write_atomically(output, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp);
+  write_atomically(output, [&](std::ostream& out) {
     write_pov_scene(out, *scene, lights, settings);
     write_pov_camera(out, camera ? *camera : Camera::framing(scene->bounds, float(width) / float(height)), width, height);
-    if (!out) throw InputError(output, "write failed");
   });
   std::fprintf(stderr, "wrote %s (render: povray +W%d +H%d +FE %s)\n", output.c_str(), width, height, output.c_str());
   return 0;

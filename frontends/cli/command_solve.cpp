@@ -287,10 +287,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     }
     j["units"] = units_name;
     std::string text = j.dump(2) + "\n";
-    write_atomically(report_path, [&](const std::filesystem::path& temp) {
-      std::ofstream out(temp, std::ios::binary);
-      out << text;
-    });
+    write_atomically(report_path, text);
   }
   if (!html_path.empty()) {
     HtmlReport page;

@@ -100,7 +100,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   with_rules.placement = rules;
   if (!a.report_path.empty()) {
     const std::string text = report_json(with_rules, criteria, report, lights).dump(2) + "\n";
-    write_atomically(a.report_path, [&](const std::filesystem::path& temp) { std::ofstream(temp, std::ios::binary) << text; });
+    write_atomically(a.report_path, text);
   }
   if (!a.html_path.empty()) {
     HtmlReport page;

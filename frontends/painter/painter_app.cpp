@@ -159,7 +159,7 @@ void PainterApp::write_timings() const {
   if (m_options.timings.empty()) return;
   const std::string text = m_timer.to_json();
   if (m_options.timings == "-") std::cout << text;
-  else write_atomically(m_options.timings, [&](const std::filesystem::path& temp) { std::ofstream(temp) << text; });
+  else write_atomically(m_options.timings, text);
 }
 
 void PainterApp::frame(bool interactive, const std::filesystem::path& capture) {

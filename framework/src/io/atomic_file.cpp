@@ -3,10 +3,14 @@
 #include "hilight/error.hpp"
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <mutex>
+#include <streambuf>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace hilight {
@@ -52,7 +56,6 @@ void install_handlers() {
 class TempGuard {
 public:
   explicit TempGuard(const fs::path& temp) {
-    install_handlers();
     const std::string p = fs::absolute(temp).string();
     if (p.size() >= kPathBytes) return;  // too long to note: removed on errors, not on signals
     for (size_t i = 0; i < kSlots; ++i) {
@@ -77,39 +80,185 @@ private:
   int m_slot = -1;
 };
 
+/// A stream buffer over a file descriptor that keeps the first write error
+/// (std::ofstream forgets errno, and so the reason).
+class FdBuf : public std::streambuf {
+public:
+  explicit FdBuf(int fd) : m_fd(fd) { setp(m_buf, m_buf + sizeof(m_buf)); }
+  int error() const { return m_error; }
+
+protected:
+  int_type overflow(int_type c) override {
+    if (!drain()) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return drain() ? 0 : -1; }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    if (n < std::streamsize(sizeof(m_buf))) return std::streambuf::xsputn(s, n);
+    return drain() && write_all(s, size_t(n)) ? n : 0;  // large blocks skip the buffer
+  }
+
+private:
+  bool drain() {
+    const bool ok = write_all(pbase(), size_t(pptr() - pbase()));
+    setp(m_buf, m_buf + sizeof(m_buf));
+    return ok;
+  }
+  bool write_all(const char* p, size_t n) {
+    while (n > 0 && m_error == 0) {
+      const ssize_t w = ::write(m_fd, p, n);
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) m_error = w < 0 ? errno : EIO;
+      else p += w, n -= size_t(w);
+    }
+    return m_error == 0;
+  }
+  int m_fd;
+  int m_error = 0;
+  char m_buf[1 << 16];
+};
+
+fs::path folder_of(const fs::path& path) { return path.has_parent_path() ? path.parent_path() : fs::path("."); }
+
+/// Names under /dev and /proc are devices or streams (/dev/stdout onto a
+/// file is a link into /proc): written in place, never replaced.
+bool in_device_tree(const fs::path& path) {
+  const std::string p = fs::absolute(path).lexically_normal().string();
+  return p.rfind("/dev/", 0) == 0 || p.rfind("/proc/", 0) == 0;
+}
+
+/// True when `path` is written in place: a character device, FIFO or socket
+/// (through links), or a name in the device tree. Throws for what is never written.
+bool written_in_place(const fs::path& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return in_device_tree(path);
+  if (S_ISDIR(st.st_mode)) throw InputError(path.string(), "cannot write: it is a folder");
+  if (S_ISBLK(st.st_mode)) throw InputError(path.string(), "cannot write: it is a block device");
+  return S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode) || in_device_tree(path);
+}
+
+/// The permissions a new file gets: 0666 less the umask, read without
+/// changing it (umask() would race with other threads creating files).
+mode_t new_file_mode() {
+  static const mode_t mode = [] {
+    mode_t mask = 022;
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+      if (line.rfind("Umask:", 0) == 0) mask = mode_t(std::strtoul(line.c_str() + 6, nullptr, 8));
+    return mode_t(0666 & ~mask);
+  }();
+  return mode;
+}
+
+[[noreturn]] void fail(const fs::path& path, int err) {
+  throw InputError(path.string(), std::string("cannot write: ") + std::strerror(err));
+}
+
+/// Runs the writer on `fd`; returns 0 or the first errno. The writer's own
+/// exception passes, unless the write failed first (its complaint is then
+/// about the broken stream, and the errno says why).
+int run_writer(int fd, const std::function<void(std::ostream&)>& write) {
+  FdBuf buf(fd);
+  std::ostream out(&buf);
+  try {
+    write(out);
+  } catch (...) {
+    if (buf.error() == 0) throw;
+    return buf.error();
+  }
+  out.flush();
+  if (buf.error()) return buf.error();
+  return out ? 0 : EIO;
+}
+
+void write_in_place(const fs::path& path, const std::function<void(std::ostream&)>& write) {
+  // No O_CREAT: a device that is not there is not made; O_APPEND keeps what
+  // was already written to a redirected stdout.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | O_APPEND);
+  if (fd < 0) fail(path, errno);
+  int err = 0;
+  try {
+    err = run_writer(fd, write);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  // Devices and pipes cannot be synced (EINVAL); a redirected file can.
+  if (err == 0 && ::fsync(fd) != 0 && errno != EINVAL && errno != EROFS && errno != ENOTSUP) err = errno;
+  if (::close(fd) != 0 && err == 0 && errno != EINTR) err = errno;
+  if (err) fail(path, err);
+}
+
+void sync_folder(const fs::path& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);  // best effort: the rename is done; some file systems refuse
+  ::close(fd);
+}
+
+void write_replacing(const fs::path& path, const std::function<void(std::ostream&)>& write) {
+  const fs::path dir = folder_of(path);
+  // A random name made with O_EXCL: nothing planted at it is followed.
+  std::string name = path.filename().string();
+  if (name.size() > 200) name.resize(200);  // room for the affixes within NAME_MAX
+  std::string temp = (dir / ("." + name + ".tmpXXXXXX")).string();
+  install_handlers();
+  const int fd = ::mkostemp(temp.data(), O_CLOEXEC);
+  if (fd < 0) {
+    const int err = errno;
+    check_writable(path);  // a clearer reason when there is one
+    fail(path, err);
+  }
+  const TempGuard guard(temp);
+  // An existing file keeps its permissions; a new one gets the umask's.
+  struct stat old {};
+  const bool replaces_file = ::lstat(path.c_str(), &old) == 0 && S_ISREG(old.st_mode);
+  ::fchmod(fd, replaces_file ? (old.st_mode & 07777) : new_file_mode());
+  int err = 0;
+  try {
+    err = run_writer(fd, write);
+  } catch (...) {
+    ::close(fd);
+    ::unlink(temp.c_str());
+    throw;
+  }
+  // Synced before the rename: a power loss leaves the old file or the new, never an empty one.
+  if (err == 0 && ::fsync(fd) != 0) err = errno;
+  if (::close(fd) != 0 && err == 0 && errno != EINTR) err = errno;
+  if (err == 0 && ::rename(temp.c_str(), path.c_str()) != 0) err = errno;
+  if (err) {
+    ::unlink(temp.c_str());
+    fail(path, err);
+  }
+  sync_folder(dir);
+}
+
 } // namespace
 
 void check_writable(const fs::path& path) {
-  fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (written_in_place(path)) {
+    if (::access(path.c_str(), W_OK) != 0) fail(path, errno);
+    return;
+  }
+  const fs::path dir = folder_of(path);
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw InputError(path.string(), "cannot write: folder " + dir.string() + " does not exist");
-  if (fs::is_directory(path, ec)) throw InputError(path.string(), "cannot write: it is a folder");
-  if (::access(dir.c_str(), W_OK) != 0) throw InputError(path.string(), "cannot write: folder " + dir.string() + " is not writable");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw InputError(path.string(), "cannot write: folder " + dir.string() + " is not writable (" + std::strerror(errno) + ")");
 }
 
-void write_atomically(const fs::path& path, const std::function<void(const fs::path& temp)>& write) {
+void write_atomically(const fs::path& path, const std::function<void(std::ostream& out)>& write) {
   check_writable(path);
-  fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::error_code ec;
-  // Same folder as the target so the rename is atomic; pid keeps parallel runs apart.
-  std::string temp_name = ".";  // built by appending: GCC 12 misreports chained + (-Wrestrict)
-  temp_name.append(path.filename().string()).append(".tmp").append(std::to_string(::getpid())).append(path.extension().string());
-  fs::path temp = dir / temp_name;
-  const TempGuard guard(temp);
-  {
-    std::ofstream probe(temp, std::ios::binary);
-    if (!probe) throw InputError(path.string(), std::string("cannot write: ") + std::strerror(errno));
-  }
-  try {
-    write(temp);
-    fs::rename(temp, path);
-  } catch (const fs::filesystem_error& e) {
-    fs::remove(temp, ec);
-    throw InputError(path.string(), std::string("cannot write: ") + e.code().message());
-  } catch (...) {
-    fs::remove(temp, ec);
-    throw;
-  }
+  if (written_in_place(path)) write_in_place(path, write);
+  else write_replacing(path, write);
+}
+
+void write_atomically(const fs::path& path, std::string_view bytes) {
+  write_atomically(path, [&](std::ostream& out) { out.write(bytes.data(), std::streamsize(bytes.size())); });
 }
 
 } // namespace hilight

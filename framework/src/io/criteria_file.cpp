@@ -120,7 +120,7 @@ void write_criteria(const std::filesystem::path& path, const IlluminanceCriteria
                      {"points", points}, {"normals", normals}});
   }
   const std::string text = json{{"illuminance_criteria", 1}, {"length_unit", criteria.length_unit}, {"grids", grids}}.dump(1) + "\n";
-  write_atomically(path, [&](const std::filesystem::path& temp) { std::ofstream(temp, std::ios::binary) << text; });
+  write_atomically(path, text);
 }
 
 } // namespace hilight

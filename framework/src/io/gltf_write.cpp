@@ -153,9 +153,10 @@ glm::dquat aim(const Vec3& direction) {
   return glm::normalize(glm::dquat(1.0 + d, axis.x, axis.y, axis.z));
 }
 
-void add_light(tinygltf::Model& model, const Light& l, size_t index, const glm::dvec3& origin, tinygltf::Node& node) {
+void add_light(tinygltf::Model& model, const Light& l, size_t index, const glm::dvec3& origin, tinygltf::Node& node,
+               const fs::path& path) {
   if (l.type == LightType::Luminaire)
-    throw InputError("light " + std::to_string(index) + " is a luminaire with a measured profile: KHR_lights_punctual has only point and spot lights");
+    throw InputError(path.string(), "light " + std::to_string(index) + " is a luminaire with a measured profile: KHR_lights_punctual has only point and spot lights");
   tinygltf::Light light;
   light.name = "light " + std::to_string(index);
   light.type = l.type == LightType::Spot ? "spot" : "point";
@@ -199,7 +200,7 @@ void write_gltf(const fs::path& path, const GltfExport& in) {
   }
   for (size_t j = 0; j < in.lights.size(); ++j) {
     tinygltf::Node node;
-    add_light(model, in.lights[j], j, in.scene ? in.scene->frame.origin * in.scene->frame.scale : glm::dvec3(0.0), node);
+    add_light(model, in.lights[j], j, in.scene ? in.scene->frame.origin * in.scene->frame.scale : glm::dvec3(0.0), node, path);
     model.nodes.push_back(node);
     scene.nodes.push_back(int(model.nodes.size() - 1));
   }
@@ -218,11 +219,10 @@ void write_gltf(const fs::path& path, const GltfExport& in) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   const bool binary = ext == ".glb";
-  write_atomically(path, [&](const fs::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
+  write_atomically(path, [&](std::ostream& out) {
     tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/!binary, binary) || !out)
-      throw std::runtime_error("could not write " + path.string());
+    if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/!binary, binary))
+      throw InputError(path.string(), "cannot write: the glTF writer failed");
   });
 }
 

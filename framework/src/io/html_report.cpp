@@ -185,11 +185,7 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
   html << "<script>document.body.dataset.imagesOk = [...document.images].every(i => i.complete && i.naturalWidth > 0);</script>\n";
   html << "</body></html>\n";
   const std::string text = html.str();
-  write_atomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error("write failed");
-  });
+  write_atomically(path, text);
 }
 
 } // namespace hilight

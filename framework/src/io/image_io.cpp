@@ -5,6 +5,7 @@
 
 #include <ImfArray.h>
 #include <ImfRgbaFile.h>
+#include <ImfStdIO.h>
 #include <algorithm>
 #include <stdexcept>
 #include <cmath>
@@ -69,24 +70,22 @@ std::vector<unsigned char> encode_png(const Image& image, float exposure) {
 
 namespace {
 
-void write_png(const fs::path& path, const Image& image, float exposure) {
-  const std::vector<unsigned char> bytes = encode_png(image, exposure);
-  FILE* fp = std::fopen(path.c_str(), "wb");
-  if (!fp) throw InputError(path.string(), "cannot open for writing");
-  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), fp) == bytes.size();
-  if (std::fclose(fp) != 0 || !ok) throw InputError(path.string(), "write failed");
-}
-
-void write_exr(const fs::path& path, const Image& image) {
+/// The EXR's bytes, made in memory so that the file is written like every
+/// other output (and an error names the target, not a temporary).
+std::string encode_exr(const fs::path& path, const Image& image) {
   std::vector<Imf::Rgba> px(image.pixels.size());
   for (size_t i = 0; i < px.size(); ++i) {
     const Rgb& c = image.pixels[i];
     px[i] = Imf::Rgba(c.r, c.g, c.b, image.covered[i] ? 1.f : 0.f);
   }
   try {
-    Imf::RgbaOutputFile file(path.c_str(), image.width, image.height, Imf::WRITE_RGBA);
-    file.setFrameBuffer(px.data(), 1, size_t(image.width));
-    file.writePixels(image.height);
+    Imf::StdOSStream stream;
+    {
+      Imf::RgbaOutputFile file(stream, Imf::Header(image.width, image.height), Imf::WRITE_RGBA);
+      file.setFrameBuffer(px.data(), 1, size_t(image.width));
+      file.writePixels(image.height);
+    }  // the file's destructor writes the last of it
+    return stream.str();
   } catch (const std::exception& e) {
     throw InputError(path.string(), std::string("OpenEXR: ") + e.what());
   }
@@ -98,10 +97,12 @@ void write_image(const fs::path& path, const Image& image, float exposure) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
   if (ext != ".png" && ext != ".exr") throw InputError(path.string(), "unknown image type (use .png or .exr)");
-  write_atomically(path, [&](const fs::path& temp) {
-    if (ext == ".png") write_png(temp, image, exposure);
-    else write_exr(temp, image);
-  });
+  if (ext == ".png") {
+    const std::vector<unsigned char> bytes = encode_png(image, exposure);
+    write_atomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  } else {
+    write_atomically(path, encode_exr(path, image));
+  }
 }
 
 Image read_exr(const fs::path& path) {

@@ -162,11 +162,7 @@ std::string lights_to_json(const Lighting& lights, const std::string& length_uni
 
 void write_lights_json(const std::filesystem::path& path, const Lighting& lights, const std::string& length_unit) {
   std::string text = lights_to_json(lights, length_unit);
-  write_atomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    if (!out) throw InputError(path.string(), "write failed");
-  });
+  write_atomically(path, text);
 }
 
 } // namespace hilight

@@ -14,8 +14,7 @@ static_assert(std::endian::native == std::endian::little, "PLY writer assumes a 
 
 void write_illuminated_ply(const std::filesystem::path& path, const Scene& scene, const std::vector<Rgb>& radiance) {
   if (radiance.size() != scene.positions.size()) throw std::logic_error("write_illuminated_ply: one colour per vertex expected");
-  write_atomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
+  write_atomically(path, [&](std::ostream& out) {
     // Far from the origin the world positions need doubles (scene_origin.hpp).
     const bool far = !scene.frame.identity();
     out << "ply\nformat binary_little_endian 1.0\ncomment hilight illuminated scene: linear outgoing radiance\n"
@@ -44,7 +43,6 @@ void write_illuminated_ply(const std::filesystem::path& path, const Scene& scene
       out.write(reinterpret_cast<const char*>(&count), 1);
       out.write(reinterpret_cast<const char*>(idx), sizeof(idx));
     }
-    if (!out) throw InputError(path.string(), "write failed");
   });
 }
 

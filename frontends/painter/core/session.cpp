@@ -64,11 +64,7 @@ std::string session_to_json(const Session& session) {
 
 void write_session(const std::filesystem::path& path, const Session& session) {
   const std::string text = session_to_json(session);
-  write_atomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    if (!out) throw InputError(path.string(), "write failed");
-  });
+  write_atomically(path, text);
 }
 
 void SessionRecorder::record(Action action) {

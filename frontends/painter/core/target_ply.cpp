@@ -12,8 +12,7 @@ namespace hilight::painter {
 void write_target_ply(const std::filesystem::path& path, const TargetPoints& points, const SceneFrame& frame) {
   static_assert(std::endian::native == std::endian::little, "the target PLY is written as binary_little_endian");
   const size_t n = points.positions.size();
-  write_atomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
+  write_atomically(path, [&](std::ostream& out) {
     out << "ply\nformat binary_little_endian 1.0\ncomment hilight painter target: linear radiance, weight 0 = don't care\n"
         << "element vertex " << n << "\n";
     // The world's coordinates: doubles when the scene was moved home (scene_origin.hpp).
@@ -34,7 +33,6 @@ void write_target_ply(const std::filesystem::path& path, const TargetPoints& poi
                             points.values[i].g,  points.values[i].b,  points.weights[i]};
       out.write(reinterpret_cast<const char*>(row), sizeof(row));
     }
-    if (!out) throw InputError(path.string(), "write failed");
   });
 }
 
