@@ -1,11 +1,17 @@
 // The light cache folder: listing, clearing, and the size cap that evicts
 // the least recently used files first (never the one just written); and
 // `hilight cache list|clear` on it.
+#include "hilight/light_cache.hpp"
+#include "hilight/light_cache_file.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "support.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <ostream>
+#include <sys/mount.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace hilight;
@@ -18,6 +24,13 @@ fs::path fake_cache(const fs::path& dir, const std::string& key, size_t megabyte
   fs::last_write_time(p, fs::file_time_type::clock::now() - std::chrono::minutes(minutes_ago));
   return p;
 }
+
+/// A cache of no nodes, for saving.
+struct EmptyCache final : LightCache {
+  std::unique_ptr<LightCacheView> view(const Scene&, const SampleSet&) const override { return nullptr; }
+  size_t node_count() const override { return 0; }
+  void write(std::ostream& out) const override { out << "empty"; }
+};
 } // namespace
 
 TEST_CASE("cache folder: the cap evicts the least recently used files, never the one just written", "[cache]") {
@@ -90,4 +103,86 @@ TEST_CASE("hilight solve --cache picks the light cache plugin, and a wrong one i
     CHECK(r.exit_code == 2);
     CHECK(test::line_count(r.err) == 1);
   }
+}
+
+TEST_CASE("cache folder: temporaries of killed writes are listed, cleared, counted and removed when stale", "[cache]") {
+  const auto dir = test::output_dir("cache_store_temporaries");
+  const auto kept = fake_cache(dir, "0000000000000001", 2, 30);
+  // What a kill -9 during a cache write leaves: ".lightcache-KEY.bin.tmpXXXXXX".
+  const auto stale = dir / ".lightcache-0000000000000002.bin.tmpAbC123";
+  const auto fresh = dir / ".lightcache-0000000000000003.bin.tmpXyZ789";
+  test::write_text(stale, std::string(3u << 20, 'x'));
+  test::write_text(fresh, std::string(3u << 20, 'x'));
+  fs::last_write_time(stale, fs::file_time_type::clock::now() - std::chrono::minutes(30));
+  // A folder and a link named like cache files are neither listed nor sized.
+  fs::create_directory(dir / "lightcache-00000000000000cc.bin");
+  fs::create_symlink("/etc/passwd", dir / "lightcache-00000000000000dd.bin");
+  const auto listed = list_cache(dir);
+  REQUIRE(listed.size() == 3);
+  CHECK(std::count_if(listed.begin(), listed.end(), [](const CacheFile& f) { return f.temporary; }) == 2);
+  auto list = test::run_hilight({"cache", "list", "--cache-dir", dir.string()});
+  CHECK_THAT(list.out, Catch::Contains(".lightcache-0000000000000002.bin.tmpAbC123"));
+  CHECK_THAT(list.out, Catch::Contains("8.0 MB  total"));
+  // The cap: the stale temporary goes; the fresh one (maybe still being
+  // written) stays but counts, so the cache file goes too.
+  const auto removed = evict_cache(dir, 4u << 20);
+  CHECK_FALSE(fs::exists(stale));
+  CHECK(fs::exists(fresh));
+  CHECK_FALSE(fs::exists(kept));
+  CHECK(removed.size() == 2);
+  // clear: every cache file and temporary, nothing else.
+  fake_cache(dir, "0000000000000004", 1, 1);
+  auto clear = test::run_hilight({"cache", "clear", "--cache-dir", dir.string()});
+  CHECK_THAT(clear.out, Catch::Contains("removed 2 light cache files"));
+  CHECK_FALSE(fs::exists(fresh));
+  CHECK(fs::is_directory(dir / "lightcache-00000000000000cc.bin"));
+  CHECK(fs::is_symlink(dir / "lightcache-00000000000000dd.bin"));
+}
+
+TEST_CASE("HILIGHT_CACHE_MAX_MB that is negative, not a number or overflows is one line and exit 2", "[cache][cli]") {
+  const auto dir = test::output_dir("cache_store_cap_env");
+  for (const std::string value : {"-1", "12abc", "18446744073709551615", "99999999999999999999999"}) {
+    INFO(value);
+    const auto r = test::run_hilight({"cache", "list", "--cache-dir", dir.string()}, {{"HILIGHT_CACHE_MAX_MB", value}});
+    CHECK(r.exit_code == 2);
+    CHECK(test::line_count(r.err) == 1);
+    CHECK_THAT(r.err, Catch::Contains("HILIGHT_CACHE_MAX_MB"));
+  }
+  const auto fine = test::run_hilight({"cache", "list", "--cache-dir", dir.string()}, {{"HILIGHT_CACHE_MAX_MB", "17592186044415"}});
+  CHECK(fine.exit_code == 0);
+}
+
+TEST_CASE("with HOME unset the light caches do not go to a shared folder in /tmp", "[cache][security]") {
+  const auto r = test::run_hilight({"cache", "list"}, {{"HOME", ""}, {"XDG_CACHE_HOME", ""}, {"HILIGHT_CACHE_DIR", ""}});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 0);
+  const std::string shared = (fs::temp_directory_path() / "hilight-cache").string();
+  CHECK_THAT(r.out, !Catch::Contains(shared + " "));
+  CHECK_THAT(r.out, !Catch::Contains(shared + "\n"));
+}
+
+TEST_CASE("a light cache that cannot be saved says why (a read-only folder is not 'missing')", "[cache]") {
+  const auto dir = test::output_dir("cache_store_read_only");
+  // A read-only file system (root can write anywhere else) or a 0500 folder.
+  const fs::path ro = dir / "ro";
+  fs::create_directories(ro);
+  const bool mounted = ::mount("tmpfs", ro.c_str(), "tmpfs", MS_RDONLY, "size=64k") == 0;
+  if (!mounted) fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec);
+  if (!mounted && ::geteuid() == 0) {
+    std::printf("SKIPPED: root without mount: a read-only folder is writable\n");
+    return;
+  }
+  for (const fs::path& cache : {ro / "lightcache-0000000000000001.bin", ro / "sub" / "lightcache-0000000000000001.bin"}) {
+    INFO(cache);
+    std::string message;
+    try {
+      save_light_cache(cache, 1, EmptyCache{});
+    } catch (const std::exception& e) {
+      message = e.what();
+    }
+    CHECK_THAT(message, !Catch::Contains("does not exist"));
+    CHECK_THAT(message, Catch::Contains(mounted ? "Read-only file system" : "Permission denied"));
+  }
+  if (mounted) ::umount2(ro.c_str(), MNT_DETACH);
+  else fs::permissions(ro, fs::perms::owner_all);
 }

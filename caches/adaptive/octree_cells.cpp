@@ -1,5 +1,7 @@
 #include "octree_cells.hpp"
 
+#include "hilight/light_cache_nodes.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <istream>
@@ -86,10 +88,17 @@ bool CellTree::read(std::istream& in, size_t nodes) {
   in.read(reinterpret_cast<char*>(&base_cells), sizeof(base_cells));
   in.read(reinterpret_cast<char*>(&depth), sizeof(depth));
   in.read(reinterpret_cast<char*>(&count), sizeof(count));
-  if (!in || depth < 0 || depth > 8 || base_cells.x < 1 || base_cells.y < 1 || base_cells.z < 1 || count > (1u << 24))
+  // Untrusted numbers: each base size within the count before multiplying
+  // (no wrap), a finite origin and positive cell sizes (a NaN would make a
+  // negative index).
+  const auto within = [&](int n) { return n >= 1 && uint64_t(n) <= count; };
+  if (!in || depth < 0 || depth > 8 || count > (1u << 24) || !within(base_cells.x) || !within(base_cells.y) || !within(base_cells.z))
     return false;
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(origin[k]) || !std::isfinite(base_size[k]) || !(base_size[k] > 0.f)) return false;
   const uint64_t base = uint64_t(base_cells.x) * base_cells.y * base_cells.z;
   if (base > count) return false;
+  if (count > stream_bytes_left(in) / sizeof(Cell)) return false;
   cells.resize(count);
   if (!in.read(reinterpret_cast<char*>(cells.data()), std::streamsize(count * sizeof(Cell)))) return false;
   // Every child index points forward and inside, every corner at a node: a

@@ -47,7 +47,14 @@ public:
     in.read(reinterpret_cast<char*>(&origin), sizeof(origin));
     in.read(reinterpret_cast<char*>(&spacing), sizeof(spacing));
     in.read(reinterpret_cast<char*>(&dims), sizeof(dims));
-    if (!in || dims.x < 1 || dims.y < 1 || dims.z < 1 || uint64_t(dims.x) * dims.y * dims.z != counts[0]) return false;
+    // Untrusted numbers: each size within the count before multiplying (no
+    // wrap to a small product), a finite origin and a positive spacing (a NaN
+    // would make a negative index).
+    const auto within = [&](int d) { return d >= 1 && uint64_t(d) <= counts[0]; };
+    if (!in || !within(dims.x) || !within(dims.y) || !within(dims.z) || uint64_t(dims.x) * dims.y * dims.z != counts[0]) return false;
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(origin[k]) || !(spacing[k] > 0.f) || !std::isfinite(spacing[k])) return false;
+    if (counts[0] > stream_bytes_left(in) / sizeof(uint32_t)) return false;
     slot.resize(counts[0]);
     if (!in.read(reinterpret_cast<char*>(slot.data()), std::streamsize(slot.size() * sizeof(uint32_t)))) return false;
     for (uint32_t s : slot)

@@ -13,6 +13,12 @@ namespace {
 
 using Block = NodeResponses::Block;
 
+constexpr uint16_t kHalfOne = 0x3C00;  ///< 1.0 as a half float
+/// A block's scale is a unit light's bounce at a vertex. Nodes stand 1e-3 of
+/// the scene's diagonal from every surface, so it stays below about
+/// 1/(π (1e-3 d)²): 3e11 even for a 1 mm scene. A larger one is forged or damaged.
+constexpr float kMaxScale = 1e12f;
+
 /// A block from `count` vertices' halves (3 each) over `scale`: only its lit runs kept.
 Block pack_block(float scale, const uint16_t* h, size_t count) {
   Block block;
@@ -171,8 +177,20 @@ void NodeResponses::write(std::ostream& out) const {
     }
 }
 
+uint64_t stream_bytes_left(std::istream& in) {
+  const auto at = in.tellg();
+  if (at < 0 || !in.seekg(0, std::ios::end)) return UINT64_MAX;
+  const auto end = in.tellg();
+  in.seekg(at);
+  return end >= at ? uint64_t(end - at) : UINT64_MAX;
+}
+
 bool NodeResponses::read(std::istream& in, size_t vertex_count, size_t count) {
   if (vertex_count == 0 || vertex_count >= (uint64_t(1) << 32) || count > (size_t(1) << 24)) return false;
+  // Each block takes at least its scale and two sizes on disk: a count the
+  // file is too short for is refused before the nodes are allocated.
+  const uint64_t min_block = sizeof(float) + 2 * sizeof(uint64_t);
+  if (uint64_t(count) * ((vertex_count + kBlock - 1) / kBlock) > stream_bytes_left(in) / min_block) return false;
   m_vertex_count = vertex_count;
   m_nodes.assign(count, std::vector<Block>(blocks()));
   for (auto& node : m_nodes)
@@ -182,10 +200,13 @@ bool NodeResponses::read(std::istream& in, size_t vertex_count, size_t count) {
       uint64_t sizes[2];
       if (!get(in, &scale, 1) || !get(in, sizes, 2)) return false;
       // At most two runs and three halves a vertex: anything more is damage.
-      if (sizes[0] > 2 * n + 2 || sizes[1] > 3 * n || !std::isfinite(scale)) return false;
+      if (sizes[0] > 2 * n + 2 || sizes[1] > 3 * n || !(scale >= 0.f && scale <= kMaxScale)) return false;
       std::vector<uint32_t> runs(sizes[0]);
       std::vector<uint16_t> halves(sizes[1]);
       if (!get(in, runs.data(), sizes[0]) || !get(in, halves.data(), sizes[1])) return false;
+      // Written over the block's largest value: each in [0, 1] (as bits: no
+      // sign, at most 1.0), which also rules out NaN and infinity.
+      if (std::any_of(halves.begin(), halves.end(), [](uint16_t h) { return h > kHalfOne; })) return false;
       if (!block_from_runs(runs, std::move(halves), n, node[block])) return false;
       node[block].scale = scale;
     }

@@ -40,7 +40,8 @@ int run_cache(const std::vector<std::string>& args) {
   if (list->parsed()) {
     uint64_t total = 0;
     for (const auto& f : list_cache(folder)) {
-      std::printf("%10.1f MB  %s  %s\n", megabytes(f.bytes), when(f.last_used).c_str(), f.path.filename().c_str());
+      std::printf("%10.1f MB  %s  %s%s\n", megabytes(f.bytes), when(f.last_used).c_str(), f.path.filename().c_str(),
+                  f.temporary ? "  (an unfinished write; removed by clear, or when 10 minutes old)" : "");
       total += f.bytes;
     }
     std::printf("%10.1f MB  total in %s (cap %.0f MB, $HILIGHT_CACHE_MAX_MB; least recently used go first)\n", megabytes(total),

@@ -65,6 +65,10 @@ private:
   std::vector<std::vector<Block>> m_nodes;  ///< [slot][block]
 };
 
+/// Bytes left to read in `in` (UINT64_MAX when it cannot tell): a count read
+/// from a cache file is checked against it before anything is allocated.
+uint64_t stream_bytes_left(std::istream& in);
+
 /// The nodes' bounce at one sample set's points (barycentric from each
 /// sample's triangle), and blends of them.
 class NodeSampleTable {
