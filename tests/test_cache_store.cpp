@@ -186,3 +186,18 @@ TEST_CASE("a light cache that cannot be saved says why (a read-only folder is no
   if (mounted) ::umount2(ro.c_str(), MNT_DETACH);
   else fs::permissions(ro, fs::perms::owner_all);
 }
+
+TEST_CASE("hilight bench solve --cache-dir removes only the light caches in that folder", "[cache][cli]") {
+  const auto dir = test::output_dir("cache_store_bench_dir");
+  test::write_text(dir / "notes.txt", "not a cache file");
+  fs::create_directories(dir / "project");
+  test::write_text(dir / "project" / "model.obj", "v 0 0 0\n");
+  fake_cache(dir, "0000000000000001", 1, 5);
+  const auto r = test::run_hilight({"bench", "solve", "--scenes", "room", "--optimizers", "varpro", "--max-edge", "1.5", "--repeat", "1",
+                                    "--skip-no-cache", "--cache-dir", dir.string()});
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(test::read_file(dir / "notes.txt") == "not a cache file");
+  CHECK(test::read_file(dir / "project" / "model.obj") == "v 0 0 0\n");
+  CHECK(list_cache(dir).empty());  // its own caches, and the old one, are gone
+}

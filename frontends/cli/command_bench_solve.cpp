@@ -11,8 +11,13 @@
 #include "hilight/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
+#include "hilight/error.hpp"
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <nlohmann/json.hpp>
 
 namespace hilight::cli {
@@ -23,6 +28,30 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
+
+/// The bench's cache folder: --cache-dir as given (only its light caches are
+/// ever removed), or a new private temporary folder, removed whole at the end.
+class BenchCacheFolder {
+public:
+  explicit BenchCacheFolder(std::string& given) : m_path(given) {
+    if (!given.empty()) return;
+    std::string pattern = (std::filesystem::temp_directory_path() / "hilight-bench-XXXXXX").string();
+    if (!::mkdtemp(pattern.data())) throw InputError(pattern, std::string("cannot make a folder: ") + std::strerror(errno));
+    given = pattern;
+    m_owned = true;
+  }
+  ~BenchCacheFolder() {
+    std::error_code ec;
+    if (m_owned) std::filesystem::remove_all(m_path, ec);
+    else clear_cache(m_path);
+  }
+  BenchCacheFolder(const BenchCacheFolder&) = delete;
+  BenchCacheFolder& operator=(const BenchCacheFolder&) = delete;
+
+private:
+  const std::string& m_path;
+  bool m_owned = false;
+};
 
 /// Mean distance from each true light to the nearest found light.
 double mean_position_error(const Lighting& truth, const Lighting& found) {
@@ -35,7 +64,8 @@ double mean_position_error(const Lighting& truth, const Lighting& found) {
   return truth.empty() ? 0.0 : sum / double(truth.size());
 }
 
-/// Seconds of a solve that builds the light cache (the folder emptied first).
+/// Seconds of a solve that builds the light cache (the folder's light caches
+/// removed first: only those, since --cache-dir may name a folder with other things in it).
 /// The solve as `hilight solve` assembles it, its light cache kept in `cache_root`.
 SolveSpec bench_spec(const std::string& cache_root, const std::string& optimizer = PluginDefaults::optimizer) {
   SolveSpec spec;
@@ -45,7 +75,7 @@ SolveSpec bench_spec(const std::string& cache_root, const std::string& optimizer
 }
 
 double cold_solve_seconds(const SolveSession& session, const Target& target, const std::string& cache_root) {
-  std::filesystem::remove_all(cache_root);
+  clear_cache(cache_root);
   SolveReport report;
   session.make_solver()->solve(target, report);
   return report.seconds["total"];
@@ -98,11 +128,12 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   std::vector<std::string> optimizers = {"varpro", "nelder-mead"};
   int repeat = 3, threads = 0;
   float max_edge = 0.15f;
-  std::string cache_root = (std::filesystem::temp_directory_path() / "hilight-bench-cache").string();
+  std::string cache_root;
   app.add_option("--optimizers", optimizers, "optimizer plugins to compare")->capture_default_str();
   app.add_option("--repeat", repeat, "runs per figure (median reported)")->check(CLI::Range(1, 50))->capture_default_str();
   app.add_option("--max-edge", max_edge, "tessellation of the room (0.15: about 25k vertices)")->check(FiniteNonNegative)->capture_default_str();
-  app.add_option("--cache-dir", cache_root, "scratch folder for light caches (emptied first)")->capture_default_str();
+  app.add_option("--cache-dir", cache_root,
+                 "folder for the light caches (default: a new temporary one, removed after); only its light cache files are removed");
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   bool no_cache_figure = false;
   std::vector<std::string> scenes = {"room", "building", "product"};
@@ -115,6 +146,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_flag("--skip-no-cache", no_cache_figure, "skip the comparison solve without the light cache");
   if (auto code = parse_arguments(app, args)) return *code;
   set_thread_limit(threads);
+  const BenchCacheFolder cache_folder(cache_root);
   auto wants = [&](const char* s) { return std::find(scenes.begin(), scenes.end(), s) != scenes.end(); };
   if (wants("building")) bench_built_scene(builders::two_storey_building(), building_edge, 6, repeat, cache_root, registry);
   if (wants("product")) bench_built_scene(builders::product_on_turntable(), 0.f, 3, repeat, cache_root, registry);
@@ -172,7 +204,6 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
                         {"seconds", report.seconds["total"]}, {"stage_seconds", report.seconds}};
     std::printf("%s\n", j.dump().c_str());
   }
-  std::filesystem::remove_all(cache_root);
   return 0;
 }
 
