@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes hilight's readers of untrusted files with libFuzzer (issue 15):
-# lights JSON, IES/EULUMDAT, painter session scripts, PLY, glTF, scenes.
+# lights JSON, IES/EULUMDAT, painter session scripts, PLY, glTF, scenes, light cache files.
 #   bash tools/fuzz.sh [SECONDS]    each target for SECONDS (default 8: the CI step)
 # Builds fuzz/ with clang-14 into build-fuzz/ (FUZZ_BUILD_DIR), starts each
 # target from its corpus in fuzz/corpus/ (new inputs go to build-fuzz/corpus/,
@@ -18,7 +18,7 @@ if ! cmake --build "$OUT" -j "$(nproc)" >"$OUT/fuzz-build.log" 2>&1; then
   exit 1
 fi
 failed=0
-for target in lights_json photometry session ply gltf scene; do
+for target in lights_json photometry session ply gltf scene light_cache; do
   corpus="$OUT/corpus/$target" findings="$OUT/findings/$target"
   mkdir -p "$corpus" "$findings"
   log="$OUT/$target.log"
