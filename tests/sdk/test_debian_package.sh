@@ -27,6 +27,8 @@ for lib in libembree3 libassimp libtbb libc6; do
   echo "$depends" | grep -q "$lib" || fail "Depends lacks $lib"
 done
 [ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || fail "the package's version is not $version"
+# POV-Ray is the reference renderer's program: recommended, not required.
+grep -qw povray <<<"$(dpkg-deb -f "$deb" Recommends)" || fail "hilight does not recommend povray"
 grep -q "hilight (= $version)" <<<"$(dpkg-deb -f "$dev" Depends)" || fail "hilight-dev does not depend on hilight (= $version)"
 # (Listed first: grep -q stops reading early, and dpkg-deb would fail on the broken pipe.)
 dev_files=$(dpkg-deb -c "$dev") deb_files=$(dpkg-deb -c "$deb")
