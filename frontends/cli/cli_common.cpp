@@ -19,10 +19,22 @@ const CLI::Validator FiniteNonNegative(
     },
     "NUMBER >= 0");
 
+const CLI::Validator BounceCount(
+    [](std::string& text) -> std::string {
+      try {
+        parse_bounces(text, "--bounces");
+      } catch (const InputError& e) {
+        return e.what();
+      }
+      return {};
+    },
+    "all|0..1000");
+
 void RendererOptions::add_to(CLI::App& app) {
   app.add_option("--renderer", name, "renderer plugin (hilight plugins lists them)")->capture_default_str();
-  app.add_option("--bounces", bounces, "0 = direct light only, 1 = plus the first diffuse bounce")
-      ->check(CLI::IsMember({0, 1}))
+  app.add_option("--bounces", bounces,
+                 "diffuse bounces: all (every bounce, to convergence), 0 (direct light only), 1 (the first bounce), or a count up to 1000")
+      ->check(BounceCount)
       ->capture_default_str();
   app.add_option("--bounce-samples", bounce_samples, "gather rays per point for the bounce (renderer default if 0)")
       ->check(CLI::Range(0, 4096));
@@ -36,7 +48,7 @@ std::vector<std::string> RendererOptions::assignments() const {
     const std::string key = setting_key(kv);
     if (key != "bounces" && !(key == "bounce_samples" && bounce_samples > 0)) out.push_back(kv);
   }
-  out.push_back("bounces=" + std::to_string(bounces));
+  out.push_back("bounces=" + bounces);
   if (bounce_samples > 0) out.push_back("bounce_samples=" + std::to_string(bounce_samples));
   return out;
 }

@@ -2,6 +2,7 @@
 /// Helpers shared by the CLI's commands: argument parsing with CLI11, the
 /// scene/renderer options every command takes, and output-path checks.
 #include "cli_arguments.hpp"
+#include "hilight/bounces.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/registry.hpp"
@@ -20,12 +21,14 @@ using hilight::parse_arguments;
 /// Renderer choice and its settings, as every rendering command takes them.
 struct RendererOptions {
   std::string name = PluginDefaults::renderer;
-  int bounces = 1;
+  std::string bounces = "1";  ///< "all" or a count (hilight/bounces.hpp)
   int bounce_samples = 0;  ///< 0: the renderer's default
   std::vector<std::string> settings;  ///< --set key=value, passed through
   int threads = 0;
 
   void add_to(CLI::App& app);
+  /// --bounces as a count, or kAllBounces.
+  int bounce_count() const { return parse_bounces(bounces, "--bounces"); }
   /// --set's settings with --bounces and --bounce-samples (which win).
   std::vector<std::string> assignments() const;
   /// Creates and binds the renderer; InputError for unknown/unavailable ones.
@@ -37,6 +40,8 @@ void add_scene_options(CLI::App& app, SceneLoadOptions& options);
 
 /// CLI11 validator: a finite number ≥ 0 (NonNegativeNumber lets NaN through).
 extern const CLI::Validator FiniteNonNegative;
+/// CLI11 validator: "all" or a bounce count 0..1000 (hilight/bounces.hpp).
+extern const CLI::Validator BounceCount;
 
 
 } // namespace hilight::cli

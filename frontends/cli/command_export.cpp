@@ -20,12 +20,15 @@ namespace hilight::cli {
 int run_export(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Write the scene and its lights for another tool: POV-Ray 3.7 (.pov, following hilight's rendering model) or glTF 2.0 (.gltf/.glb)", "export");
   std::string scene_path, lights_path, output, camera_text;
-  int bounces = 1, width = 960, height = 720;
+  std::string bounces = "1";
+  int width = 960, height = 720;
   bool vertex_colours = false;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
   app.add_option("--lights", lights_path, "lights: hilight JSON, or a glTF's KHR_lights_punctual (.gltf/.glb)")->required();
   app.add_option("-o,--output", output, "the .pov, .gltf or .glb file to write")->required();
-  app.add_option("--bounces", bounces, "0 = direct only, 1 = the first bounce too (POV-Ray radiosity; glTF --vertex-colours)")->check(CLI::IsMember({0, 1}))->capture_default_str();
+  app.add_option("--bounces", bounces, "diffuse bounces: all, 0 (direct only), 1, or a count (POV-Ray radiosity recursion up to 20; glTF --vertex-colours)")
+      ->check(BounceCount)
+      ->capture_default_str();
   app.add_option("--camera", camera_text, "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (.pov; default frames the scene)");
   app.add_option("--width", width, "image width the camera is set up for (.pov)")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height the camera is set up for (.pov)")->check(CLI::Range(1, 16384))->capture_default_str();
@@ -59,7 +62,7 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
     contents.scene = scene.get();
     contents.lights = lights;
     if (vertex_colours) {
-      auto renderer = registry.create_renderer(PluginDefaults::renderer, Properties::from_assignments({"bounces=" + std::to_string(bounces)}));
+      auto renderer = registry.create_renderer(PluginDefaults::renderer, Properties::from_assignments({"bounces=" + bounces}));
       renderer->set_scene(scene);
       contents.result = renderer->illuminate(SurfacePoints::from_vertices(*scene), lights);
     }
@@ -68,7 +71,9 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
     return 0;
   }
   PovSettings settings;
-  settings.bounces = bounces;
+  settings.bounces = parse_bounces(bounces, "--bounces");
+  if (settings.bounces > kPovMaxBounces)
+    throw InputError("--bounces: a POV-Ray scene carries at most " + std::to_string(kPovMaxBounces) + " bounces (say all)");
   write_atomically(output, [&](std::ostream& out) {
     write_pov_scene(out, *scene, lights, settings);
     write_pov_camera(out, camera ? *camera : Camera::framing(scene->bounds, float(width) / float(height)), width, height);

@@ -104,7 +104,7 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   if (any_ply && refine_budget > (long long)scene->positions.size()) {
     // The direct light alone decides where shadow and spot edges run.
     RendererOptions direct = ropts;
-    direct.bounces = 0;
+    direct.bounces = "0";
     ShadowRefinementSettings refine;
     refine.vertex_budget = size_t(refine_budget);
     const size_t before = scene->positions.size();
@@ -130,8 +130,8 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
     std::fprintf(stderr, "wrote %s\n", path.c_str());
   }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::fprintf(stderr, "rendered %zu vertices, %zu lights with %s (bounces %d) in %.2f s\n", scene->positions.size(),
-               lights.size(), ropts.name.c_str(), ropts.bounces, seconds);
+  std::fprintf(stderr, "rendered %zu vertices, %zu lights with %s (bounces %s) in %.2f s\n", scene->positions.size(),
+               lights.size(), ropts.name.c_str(), ropts.bounces.c_str(), seconds);
   return 0;
 }
 

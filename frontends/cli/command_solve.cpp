@@ -227,7 +227,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   // where the renderer says so (Embree), a POV-Ray run or a GPU submission
   // each with the others. Direct light needs none (the polish's slopes
   // through it are clean: the lamps to 10⁻⁵ of the size after a turn).
-  s.settle_fine_tune = ropts.bounces == 1 && registry.renderer_traits(ropts.name).cheap_direct;
+  s.settle_fine_tune = ropts.bounce_count() != 0 && registry.renderer_traits(ropts.name).cheap_direct;
   s.cache_dir = spec.cache == PluginDefaults::no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
   s.cache_cap_bytes = default_cache_cap_bytes();
 

@@ -4,6 +4,7 @@
 
 #include "cli_arguments.hpp"
 
+#include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/io/atomic_file.hpp"
@@ -46,14 +47,26 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Paint the illumination you want onto a scene; hilight finds the lights", "paint");
   PaintOptions o;
   std::string scene, target, lights, script, screenshot, window_screenshot, record, timings, size = "1280x800", cache_dir;
-  int threads = 0, bounces = 1, bounce_samples = 0;
+  int threads = 0, bounce_samples = 0;
+  std::string bounces = "1";
   bool no_auto = false, no_cache = false;
   app.add_option("scene", scene, "scene file (any format assimp reads)")->required();
   app.add_option("--max-edge", o.max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::Range(0.f, 1e30f));
   app.add_option("--target", target, "target PLY or glTF with vertex colours to start from (as `hilight solve --target` reads)");
   app.add_option("--lights", lights, "lights JSON or glTF (KHR_lights_punctual) to start from");
   app.add_option("--renderer", o.job.renderer, "renderer plugin for the view and the solve")->capture_default_str();
-  app.add_option("--bounces", bounces, "0 = direct light only, 1 = plus the first diffuse bounce")->check(CLI::IsMember({0, 1}))->capture_default_str();
+  app.add_option("--bounces", bounces, "diffuse bounces: all (every bounce), 0 (direct light only), 1, or a count up to 1000")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            try {
+              parse_bounces(text, "--bounces");
+            } catch (const InputError& e) {
+              return e.what();
+            }
+            return {};
+          },
+          "all|0..1000"))
+      ->capture_default_str();
   app.add_option("--bounce-samples", bounce_samples, "gather rays per point for the bounce (renderer default if 0)")
       ->check(CLI::Range(0, 4096));
   app.add_option("--set", o.job.renderer_settings, "renderer setting key=value (repeatable)");
@@ -104,7 +117,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   o.record = record;
   o.timings = timings;
   o.auto_fine_tune = !no_auto;
-  o.job.renderer_settings.push_back("bounces=" + std::to_string(bounces));
+  o.job.renderer_settings.push_back("bounces=" + bounces);
   if (bounce_samples > 0) o.job.renderer_settings.push_back("bounce_samples=" + std::to_string(bounce_samples));
   for (const auto& rule : place_rules) o.job.settings.placement.add(rule);
   if (no_cache) o.job.cache = PluginDefaults::no_cache;

@@ -2,8 +2,11 @@
 //
 // | property        | default | meaning                                              |
 // |-----------------|---------|------------------------------------------------------|
-// | bounces         | 1       | 0 = direct light only, 1 = plus first diffuse bounce |
+// | bounces         | 1       | 0 = direct light only, 1 = plus first diffuse bounce,|
+// |                 |         | N = N bounces, all = every bounce (multi_bounce.hpp) |
 // | bounce_samples  | 128     | gather rays per point for the bounce (even, >= 2)    |
+// | transport_samples | 32    | gather rays per scene vertex for the bounces after   |
+// |                 |         | the first (even, >= 2)                               |
 // | seed            | 1       | seed of the gather's sample stream                   |
 // | bounce_direct   | exact   | direct light at gather hits: exact shadow rays, or   |
 // |                 |         | "vertex": interpolated from the hit triangle's       |
@@ -11,6 +14,7 @@
 // | hot_spots       | on      | surfaces near a light lit as virtual lights, not by  |
 // |                 |         | gather hits (no fireflies; hot_spots.hpp)            |
 #include "embree_renderer.hpp"
+#include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
 #include "hilight/version.hpp"
@@ -20,8 +24,10 @@ namespace {
 
 std::unique_ptr<hilight::Renderer> create(const hilight::Properties& props) {
   hilight::embree::EmbreeSettings s;
-  s.bounces = int(props.get_int("bounces", s.bounces));
-  if (s.bounces != 0 && s.bounces != 1) throw hilight::InputError("renderer embree: bounces must be 0 or 1");
+  s.bounces = hilight::bounces_property(props, s.bounces, "renderer embree: bounces");
+  long long transport = props.get_int("transport_samples", s.transport_samples);
+  if (transport < 2 || transport > 4096) throw hilight::InputError("renderer embree: transport_samples must be in [2, 4096]");
+  s.transport_samples = int(transport + (transport & 1));
   long long samples = props.get_int("bounce_samples", s.bounce_samples);
   if (samples < 2 || samples > 4096) throw hilight::InputError("renderer embree: bounce_samples must be in [2, 4096]");
   s.bounce_samples = int(samples + (samples & 1));
@@ -48,5 +54,5 @@ void register_embree(hilight::PluginRegistrar& registrar) {
 
 } // namespace
 
-HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "CPU ray tracing (Embree 3): direct light and first bounce by gathering",
+HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "CPU ray tracing (Embree 3): direct light and every diffuse bounce by gathering",
                register_embree)

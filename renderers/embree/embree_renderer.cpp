@@ -1,7 +1,10 @@
 #include "embree_renderer.hpp"
 
+#include "hilight/bounces.hpp"
+
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <stdexcept>
 #include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
@@ -42,8 +45,33 @@ std::shared_ptr<const std::vector<ShadingPoint>> EmbreeRenderer::shading_points(
   });
 }
 
+const MultiBounce* EmbreeRenderer::multi_bounce() {
+  if (m_settings.bounces == 0 || m_settings.bounces == 1) return nullptr;
+  std::call_once(m_multi_once, [&] {
+    m_multi = std::make_unique<MultiBounce>(*m_embree, m_vertex_shading, m_settings.transport_samples, m_settings.seed,
+                                            m_settings.bounces);
+    m_rays += m_multi->rays_cast();
+  });
+  return m_multi.get();
+}
+
+std::vector<Rgb> EmbreeRenderer::bounced_fields(std::span<const PreparedLight> lights, const std::vector<uint32_t>& also_direct,
+                                                std::vector<float>& direct) {
+  const MultiBounce* multi = multi_bounce();
+  if (!multi) return {};
+  std::vector<uint32_t> entries;
+  entries.reserve(multi->vertex_sides_read().size() + also_direct.size());
+  std::set_union(multi->vertex_sides_read().begin(), multi->vertex_sides_read().end(), also_direct.begin(), also_direct.end(),
+                 std::back_inserter(entries));
+  direct = vertex_direct_irradiance(lights, entries);
+  return multi->bounced_field(direct, lights.size());
+}
+
 std::string EmbreeRenderer::settings_key() const {
-  return "embree/bounces=" + std::to_string(m_settings.bounces) + "/samples=" + std::to_string(m_settings.bounce_samples) +
+  std::string further;  // keys of a first-bounce renderer stay as they were (caches on disk keep)
+  if (m_settings.bounces != 0 && m_settings.bounces != 1)
+    further = "/transport_samples=" + std::to_string(m_settings.transport_samples);
+  return "embree/bounces=" + bounces_text(m_settings.bounces) + further + "/samples=" + std::to_string(m_settings.bounce_samples) +
          "/seed=" + std::to_string(m_settings.seed) + "/vertex_bounce=" + std::to_string(m_settings.vertex_interpolated_bounce) +
          "/hot_spots=" + std::to_string(m_settings.hot_spots);
 }
@@ -83,13 +111,31 @@ template <class Visit>
 void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport,
                                        Visit&& visit) {
   if (!m_embree) throw std::logic_error("EmbreeRenderer: set_scene was not called");
+  // Each light's bounced field takes ~80 bytes a scene vertex while it is
+  // iterated: lights go in groups that keep that under 512 MB.
+  size_t group = lights.size();
+  if (m_settings.bounces != 0 && m_settings.bounces != 1 && transport != Transport::DirectOnly)
+    group = std::max<size_t>(1, size_t(512e6 / (80.0 * double(std::max<size_t>(1, m_scene->positions.size())))));
+  for (size_t j0 = 0; j0 < lights.size(); j0 += group)
+    for_each_response_group(points, lights.subspan(j0, std::min(group, lights.size() - j0)), transport,
+                            [&](size_t i, size_t j, const Rgb& r) { visit(i, j0 + j, r); });
+}
+
+template <class Visit>
+void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::span<const Light> lights, Transport transport,
+                                             Visit&& visit) {
   std::vector<PreparedLight> prepared(lights.begin(), lights.end());
   const bool want_direct = transport != Transport::IndirectOnly;
   std::shared_ptr<const BounceGather> gather_owner;
-  if (m_settings.bounces > 0 && transport != Transport::DirectOnly) gather_owner = gather_for(points);
+  if (m_settings.bounces != 0 && transport != Transport::DirectOnly) gather_owner = gather_for(points);
   const BounceGather* gather = gather_owner.get();
   std::vector<float> vertex_direct;
-  if (gather && m_settings.vertex_interpolated_bounce) vertex_direct = vertex_direct_irradiance(prepared, gather->vertex_sides_read());
+  std::vector<Rgb> bounced;  // the light bounced once or more, at the vertices (more than one bounce)
+  if (gather) {
+    const std::vector<uint32_t> none, &direct_read = m_settings.vertex_interpolated_bounce ? gather->vertex_sides_read() : none;
+    bounced = bounced_fields(prepared, direct_read, vertex_direct);
+    if (bounced.empty() && m_settings.vertex_interpolated_bounce) vertex_direct = vertex_direct_irradiance(prepared, direct_read);
+  }
   const size_t v_count = m_scene->positions.size();
   auto shading_owner = want_direct || gather ? shading_points(points) : nullptr;
   const std::vector<HotSpots> hot = gather ? hot_spots_of(prepared) : std::vector<HotSpots>();
@@ -117,6 +163,7 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
             e += gather->unit_indirect_irradiance(i, light, h, at.position, local_rays);
             if (h) e += h->irradiance(*m_embree, at, n, local_rays);
           }
+          if (!bounced.empty()) e += gather->field_irradiance(i, BounceGather::kBothSides, &bounced[j * 2 * v_count]);
         }
         visit(i, j, points.albedo[i] * float(1.0 / kPi) * e);
       }
@@ -150,11 +197,13 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
   // direct light is exact per pixel so shadow edges stay sharp.
   const std::vector<PreparedLight> prepared(lights.begin(), lights.end());
   std::vector<Rgb> vertex_indirect;
-  if (m_settings.bounces > 0) {
+  if (m_settings.bounces != 0) {
     SurfacePoints vertices = SurfacePoints::from_vertices(scene);
     auto gather_owner = gather_for(vertices);
     const BounceGather& gather = *gather_owner;
     const std::vector<HotSpots> hot = hot_spots_of(prepared);
+    std::vector<float> unused;
+    const std::vector<Rgb> bounced = bounced_fields(prepared, {}, unused);
     vertex_indirect.assign(vertices.size(), Rgb(0.f));
     tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
     tbb::parallel_for(tbb::blocked_range<size_t>(0, vertices.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
@@ -164,6 +213,7 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
           const ShadingPoint& at = m_vertex_shading[i];
           Rgb e = gather.unit_indirect_irradiance(i, prepared[j], h, at.position, rays.local());
           if (h) e += h->irradiance(*m_embree, at, scene.normals[i], rays.local());
+          if (!bounced.empty()) e += gather.field_irradiance(i, BounceGather::kBothSides, &bounced[j * 2 * vertices.size()]);
           vertex_indirect[i] += prepared[j].intensity * e;
         }
     });

@@ -4,16 +4,19 @@
 #include "hilight/ray_scene.hpp"
 #include "first_bounce.hpp"
 #include "keyed_lru.hpp"
+#include "multi_bounce.hpp"
 #include "hilight/renderer.hpp"
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 
 namespace hilight::embree {
 
 struct EmbreeSettings {
-  int bounces = 1;           ///< 0: direct only; 1: plus the first diffuse bounce
+  int bounces = 1;           ///< 0: direct only; 1: plus the first diffuse bounce; N; kAllBounces
   int bounce_samples = 128;  ///< gather rays per point (even)
+  int transport_samples = 32;  ///< gather rays per scene vertex for bounces after the first (even; multi_bounce.hpp)
   bool hot_spots = true;     ///< near-light hot patches lit as virtual lights (hot_spots.hpp)
   uint64_t seed = 1;         ///< gather sample stream
   /// Direct light at the gather's hit points: exact shadow rays per hit, or
@@ -47,9 +50,20 @@ private:
   std::shared_ptr<const BounceGather> gather_for(const SurfacePoints& points);
   /// Where each point is shaded (hilight::shading_point), per point set.
   std::shared_ptr<const std::vector<ShadingPoint>> shading_points(const SurfacePoints& points);
-  /// Calls visit(i, j, unit RGB response) for every point i and light j, in parallel over points.
+  /// Calls visit(i, j, unit RGB response) for every point i and light j, in
+  /// parallel over points; lights in groups whose bounced fields fit in memory.
   template <class Visit>
   void for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Visit&& visit);
+  template <class Visit>
+  void for_each_response_group(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Visit&& visit);
+  /// The operator of the bounces after the first (null at 0 or 1 bounce), built once.
+  const MultiBounce* multi_bounce();
+  /// Per light, the light bounced once or more at every (vertex, side)
+  /// (MultiBounce::bounced_field); empty without further bounces. Also
+  /// returns, through `direct`, e₀ at the entries `also_direct` lists (for
+  /// the vertex mode, which reads it too).
+  std::vector<Rgb> bounced_fields(std::span<const PreparedLight> lights, const std::vector<uint32_t>& also_direct,
+                                  std::vector<float>& direct);
   /// Unit direct irradiance at scene vertices for each light, on each side
   /// (light-major; per vertex: normal side, then the other), computed for the
   /// entries in `vertex_sides` (BounceGather::vertex_sides_read), 0 elsewhere.
@@ -63,6 +77,8 @@ private:
   KeyedLru<BounceGather> m_gathers{4};
   KeyedLru<std::vector<ShadingPoint>> m_shading_points{4};
   std::vector<ShadingPoint> m_vertex_shading;  ///< shading_point() of every scene vertex
+  std::once_flag m_multi_once;
+  std::unique_ptr<MultiBounce> m_multi;
   std::atomic<uint64_t> m_rays{0};  ///< calls may come from several threads (concurrent refinements)
 };
 

@@ -133,4 +133,12 @@ Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex
   return sum * (2.f / float(m_samples));
 }
 
+Rgb BounceGather::field_irradiance(size_t i, int side, const Rgb* field) const {
+  Rgb sum(0.f);
+  for_each_hit(i, side, [&](const Rgb& albedo, const uint32_t* entry, const float* weight) {
+    sum += albedo * (weight[0] * field[entry[0]] + weight[1] * field[entry[1]] + weight[2] * field[entry[2]]);
+  });
+  return sum * (2.f / float(m_samples));
+}
+
 } // namespace hilight::embree

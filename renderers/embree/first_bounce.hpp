@@ -48,6 +48,33 @@ public:
   /// `vertex_direct` — per scene vertex, two values: the side its normal
   /// points to, then the other — instead of shadow rays.
   Rgb interpolated_indirect_irradiance(size_t i, const float* vertex_direct, const HotSpots* hot, const Vec3& x) const;
+  /// Irradiance at point i gathered from a field of irradiance given per
+  /// (vertex, side) as vertex_sides_read() indexes it, interpolated across
+  /// each hit triangle: (2/N) Σ ρ(y) F(y), over hemisphere `side` (0: the
+  /// point's normal side, 1: the other; kBothSides: the whole sphere). The
+  /// further bounces read the light already bounced from this (multi_bounce.hpp).
+  static constexpr int kBothSides = 2;
+  Rgb field_irradiance(size_t i, int side, const Rgb* field) const;
+  /// Visits each valid hit of point i's hemisphere `side` (as above) with the
+  /// hit triangle's albedo, its three field entries and their barycentric
+  /// weights: visit(albedo, const uint32_t entry[3], const float weight[3]).
+  template <class Visit>
+  void for_each_hit(size_t i, int side, Visit&& visit) const {
+    const Scene& scene = m_es.scene();
+    const int per_side = m_samples / 2;
+    const int begin = side == 1 ? per_side : 0, end = side == 0 ? per_side : m_samples;
+    const GatherHit* hits = &m_hits[i * size_t(m_samples)];
+    for (int k = begin; k < end; ++k) {
+      const GatherHit& hit = hits[k];
+      if (!hit.valid()) continue;
+      const auto& tri = scene.triangles[hit.triangle()];
+      const float u = hit.u(), v = hit.v();
+      uint32_t entry[3];
+      for (int c = 0; c < 3; ++c) entry[c] = 2 * tri[c] + ((hit.vertex_sides() >> c) & 1 ? 0u : 1u);
+      const float weight[3] = {1.f - u - v, u, v};
+      visit(scene.triangle_albedo(hit.triangle()), entry, weight);
+    }
+  }
 
 private:
   const RayScene& m_es;

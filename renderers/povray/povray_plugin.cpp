@@ -2,12 +2,14 @@
 //
 // | property        | default | meaning                                                |
 // |-----------------|---------|--------------------------------------------------------|
-// | bounces         | 1       | 0 = direct only, 1 = plus first bounce (radiosity)     |
+// | bounces         | 1       | 0 = direct only, N = N bounces (radiosity recursion,   |
+// |                 |         | up to 20), all = 20 (POV-Ray's most; docs/povray.md)   |
 // | radiosity_count | 800     | radiosity rays per sample                              |
 // | error_bound     | 0.15    | radiosity error_bound                                  |
 // | pretrace_end    | 0.005   | radiosity pretrace_end                                 |
 // | timeout         | 600     | seconds one POV-Ray run may take                       |
 // | bounce_samples, seed      | accepted for interface compatibility, unused  |
+#include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
 #include "hilight/version.hpp"
@@ -20,8 +22,10 @@ namespace {
 std::unique_ptr<hilight::Renderer> create(const hilight::Properties& props) {
   hilight::povray::PovraySettings s;
   s.executable = hilight::povray::find_povray();
-  s.pov.bounces = int(props.get_int("bounces", 1));
-  if (s.pov.bounces != 0 && s.pov.bounces != 1) throw hilight::InputError("renderer povray: bounces must be 0 or 1");
+  s.pov.bounces = hilight::bounces_property(props, 1, "renderer povray: bounces");
+  if (s.pov.bounces > hilight::kPovMaxBounces)
+    throw hilight::InputError("renderer povray: bounces must be 'all' or at most " + std::to_string(hilight::kPovMaxBounces) +
+                              " (POV-Ray's radiosity recursion_limit)");
   s.pov.radiosity_count = int(props.get_int("radiosity_count", s.pov.radiosity_count));
   s.pov.error_bound = props.get_double("error_bound", s.pov.error_bound);
   s.pov.pretrace_end = props.get_double("pretrace_end", s.pov.pretrace_end);

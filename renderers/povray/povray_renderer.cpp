@@ -87,7 +87,7 @@ std::vector<Rgb> PovrayRenderer::bake(const SurfacePoints& world_points, std::sp
   const SurfacePoints points = to_pov(world_points);
   const Lighting lights = to_pov(world_lights);
   std::vector<Rgb> out = bake_direct(points, lights);
-  if (bounces > 0 && points.size() > 0 && !lights.empty()) {
+  if (bounces != 0 && points.size() > 0 && !lights.empty()) {
     // The bounce: POV-Ray's radiosity on the mesh itself (receivers would
     // gather it at a surface that is not in the scene), as the difference of
     // a run with and one without it, so it carries no direct light.

@@ -1,5 +1,6 @@
 #include "hilight/io/pov_export.hpp"
 
+#include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
 
 #include <cmath>
@@ -24,10 +25,10 @@ void write_pov_scene(std::ostream& out, const Scene& scene, const Lighting& ligh
   out << std::setprecision(9);
   out << "// Written by hilight: follows docs/rendering-model.md (see docs/povray.md).\n#version 3.7;\n";
   out << "global_settings {\n  assumed_gamma 1.0\n  ambient_light 0\n  max_trace_level 8\n";
-  if (s.bounces > 0) {
-    // recursion_limit 1: exactly the first diffuse bounce. always_sample off
+  if (s.bounces != 0) {
+    // recursion_limit N: exactly N diffuse bounces ("all": POV-Ray's most, 20). always_sample off
     // and a dense pretrace keep the estimate smooth; brightness 1 keeps it physical.
-    out << "  radiosity {\n    recursion_limit 1\n    brightness 1\n    count " << s.radiosity_count
+    out << "  radiosity {\n    recursion_limit " << (s.bounces == kAllBounces ? kPovMaxBounces : s.bounces) << "\n    brightness 1\n    count " << s.radiosity_count
         << "\n    error_bound " << s.error_bound << "\n    low_error_factor 0.5\n    pretrace_start 0.08\n    pretrace_end "
         << s.pretrace_end << "\n    nearest_count 10\n    minimum_reuse 0.005\n    gray_threshold 0\n    adc_bailout 0.001\n"
         << "    always_sample off\n    normal off\n  }\n";

@@ -12,8 +12,11 @@
 
 namespace hilight {
 
+/// POV-Ray's radiosity recursion_limit goes up to 20: "all bounces" there.
+constexpr int kPovMaxBounces = 20;
+
 struct PovSettings {
-  int bounces = 1;               ///< 0: direct only; 1: radiosity with recursion_limit 1
+  int bounces = 1;               ///< 0: direct only; N: radiosity with recursion_limit N; kAllBounces: kPovMaxBounces
   int radiosity_count = 800;     ///< rays per radiosity sample
   double error_bound = 0.15;     ///< radiosity error_bound (lower = more samples)
   double pretrace_end = 0.005;   ///< radiosity pretrace_end (lower = denser samples)

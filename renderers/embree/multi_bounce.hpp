@@ -1,0 +1,53 @@
+#pragma once
+/// Every diffuse bounce after the first (docs/rendering-model.md, "Every
+/// bounce"). The scene's vertices gather too, each side of each vertex over
+/// its own hemisphere (`transport_samples` rays a vertex, half a side), and
+/// their hits define one linear operator T on irradiance per (vertex, side):
+///   (T F)(v, s) = (2/N) Σ_hits ρ(y) F(y, the side of y seen),
+/// F interpolated across the hit triangle. From the direct light e₀ at the
+/// vertices, d_k = T^k e₀ is the light bounced k times, and a point's
+/// gather reads f = d₁ + … + d_{B−1} at its hits: B bounces in all (the
+/// first, from e₀ at the hits, stays as first_bounce.hpp computes it).
+/// Linear in the lights, deterministic, no light is created: each step
+/// multiplies by the albedo, so a closed room's flux is passed on as ρ^k.
+/// "All" iterates until the steps shrink geometrically (their ratio steady
+/// to kSteadyRatio) or fall under kNegligible of the sum, and adds the
+/// geometric rest d_k·r/(1−r) per channel (bright rooms converge as ρ^k:
+/// ρ = 0.95 would take ~180 steps to 10⁻⁴ without it).
+#include "first_bounce.hpp"
+
+#include <vector>
+
+namespace hilight::embree {
+
+class MultiBounce {
+public:
+  /// `bounces`: the total count (≥ 2), or kAllBounces; `vertex_shading`:
+  /// where each scene vertex is shaded (shading_point).
+  MultiBounce(const RayScene& es, const std::vector<ShadingPoint>& vertex_shading, int samples, uint64_t seed, int bounces);
+
+  /// The (vertex, side) entries whose direct light the operator reads
+  /// (as BounceGather::vertex_sides_read).
+  const std::vector<uint32_t>& vertex_sides_read() const { return m_gather.vertex_sides_read(); }
+  uint64_t rays_cast() const { return m_gather.rays_cast(); }
+
+  /// f for each light: `direct` holds e₀ per light (2 values a vertex, light-
+  /// major, as EmbreeRenderer::vertex_direct_irradiance lays them out); the
+  /// result holds, per light, 2 RGB values a vertex.
+  std::vector<Rgb> bounced_field(const std::vector<float>& direct, size_t light_count) const;
+
+  /// Steps the last bounced_field took (the most over its lights).
+  int last_steps() const { return m_last_steps; }
+
+  static constexpr int kMaxSteps = 200;
+  static constexpr double kNegligible = 1e-5;  ///< a step this small of the sum ends the series
+  static constexpr double kSteadyRatio = 2e-3; ///< ratios of successive steps this close: the geometric rest is added
+
+private:
+  const RayScene& m_es;
+  BounceGather m_gather;  ///< over the scene's vertices
+  int m_bounces;
+  mutable int m_last_steps = 0;
+};
+
+} // namespace hilight::embree
