@@ -84,7 +84,7 @@ TEST_CASE("a symlink planted at a temporary's name is not followed, and one at t
   test::write_text(victim, "precious");
   // The names the temporary had before: ".NAME.tmp<pid>.EXT", and without the extension.
   const std::string pid = std::to_string(::getpid());
-  for (const std::string name : {".out.json.tmp" + pid + ".json", ".out.json.tmp" + pid}) fs::create_symlink(victim, dir / name);
+  for (const std::string& name : {".out.json.tmp" + pid + ".json", ".out.json.tmp" + pid}) fs::create_symlink(victim, dir / name);
   write_atomically(dir / "out.json", std::string("{}\n"));
   CHECK(test::read_file(victim) == "precious");
   CHECK(fs::is_regular_file(fs::symlink_status(dir / "out.json")));
@@ -126,6 +126,22 @@ TEST_CASE("a device or FIFO output is written in place, never replaced by a file
   INFO(out.err);
   CHECK(out.exit_code == 0);
   CHECK_THAT(out.out, Contains("illuminance_criteria"));
+  // A link to a FIFO outside /dev (planted where the output goes) is
+  // replaced, not written through; another user's FIFO is refused.
+  const auto planted = dir / "planted.fifo";
+  REQUIRE(::mkfifo(planted.c_str(), 0666) == 0);
+  fs::create_symlink(planted, dir / "linked.json");
+  write_atomically(dir / "linked.json", std::string("{}\n"));
+  CHECK(fs::is_regular_file(fs::symlink_status(dir / "linked.json")));
+  if (::chown(planted.c_str(), 65534, 65534) == 0 && ::geteuid() != 65534)
+    CHECK_THROWS_WITH(write_atomically(planted, std::string("secret")), Contains("another user's"));
+  // A new regular file in /dev/shm (a tmpfs under /dev) is an ordinary output.
+  if (fs::is_directory("/dev/shm")) {
+    const fs::path shm = "/dev/shm/hilight-test-" + std::to_string(::getpid()) + ".json";
+    write_atomically(shm, std::string("{}\n"));
+    CHECK(test::read_file(shm) == "{}\n");
+    fs::remove(shm);
+  }
   // A block device is refused.
   if (fs::exists("/dev/loop0") && fs::is_block_file("/dev/loop0"))
     CHECK_THROWS_WITH(write_atomically("/dev/loop0", std::string("x")), Contains("block device"));

@@ -12,6 +12,7 @@
 #include <streambuf>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 namespace hilight {
 
@@ -84,7 +85,7 @@ private:
 /// (std::ofstream forgets errno, and so the reason).
 class FdBuf : public std::streambuf {
 public:
-  explicit FdBuf(int fd) : m_fd(fd) { setp(m_buf, m_buf + sizeof(m_buf)); }
+  explicit FdBuf(int fd) : m_fd(fd), m_buf(kBytes) { setp(m_buf.data(), m_buf.data() + kBytes); }
   int error() const { return m_error; }
 
 protected:
@@ -98,14 +99,14 @@ protected:
   }
   int sync() override { return drain() ? 0 : -1; }
   std::streamsize xsputn(const char* s, std::streamsize n) override {
-    if (n < std::streamsize(sizeof(m_buf))) return std::streambuf::xsputn(s, n);
+    if (n < std::streamsize(kBytes)) return std::streambuf::xsputn(s, n);
     return drain() && write_all(s, size_t(n)) ? n : 0;  // large blocks skip the buffer
   }
 
 private:
   bool drain() {
     const bool ok = write_all(pbase(), size_t(pptr() - pbase()));
-    setp(m_buf, m_buf + sizeof(m_buf));
+    setp(m_buf.data(), m_buf.data() + kBytes);
     return ok;
   }
   bool write_all(const char* p, size_t n) {
@@ -117,28 +118,46 @@ private:
     }
     return m_error == 0;
   }
+  static constexpr size_t kBytes = size_t(1) << 16;
   int m_fd;
   int m_error = 0;
-  char m_buf[1 << 16];
+  std::vector<char> m_buf;
 };
 
 fs::path folder_of(const fs::path& path) { return path.has_parent_path() ? path.parent_path() : fs::path("."); }
 
-/// Names under /dev and /proc are devices or streams (/dev/stdout onto a
-/// file is a link into /proc): written in place, never replaced.
-bool in_device_tree(const fs::path& path) {
-  const std::string p = fs::absolute(path).lexically_normal().string();
-  return p.rfind("/dev/", 0) == 0 || p.rfind("/proc/", 0) == 0;
+bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+/// A process's open file named through /proc (/dev/stdout, /dev/fd/N,
+/// /proc/self/fd/N): written in place whatever it is, since a redirected
+/// stdout may be a regular file, and /dev must never get one.
+bool names_open_file(const fs::path& path) {
+  std::error_code ec;
+  const fs::path dir = fs::canonical(folder_of(path), ec);
+  if (!ec && starts_with(dir.string() + "/", "/proc/")) return true;
+  const fs::path target = fs::read_symlink(path, ec);
+  return !ec && starts_with(target.string(), "/proc/");
 }
 
-/// True when `path` is written in place: a character device, FIFO or socket
-/// (through links), or a name in the device tree. Throws for what is never written.
+/// True when `path` is written in place: an open file named through /proc,
+/// a character device, or a FIFO or socket of this user's. A link is
+/// followed only into /dev: one planted elsewhere (to someone's FIFO) is
+/// replaced, never written through. Throws for what is never written: a
+/// folder, a block device, another user's FIFO or socket.
 bool written_in_place(const fs::path& path) {
+  const bool open_file = names_open_file(path);
   struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) return in_device_tree(path);
+  if (!open_file) {
+    if (::lstat(path.c_str(), &st) != 0) return false;  // a new file
+    std::error_code ec;
+    if (S_ISLNK(st.st_mode) && !starts_with(fs::canonical(path, ec).string(), "/dev/")) return false;
+  }
+  if (::stat(path.c_str(), &st) != 0) return open_file;  // open fails with the reason
   if (S_ISDIR(st.st_mode)) throw InputError(path.string(), "cannot write: it is a folder");
   if (S_ISBLK(st.st_mode)) throw InputError(path.string(), "cannot write: it is a block device");
-  return S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode) || in_device_tree(path);
+  if ((S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)) && st.st_uid != ::geteuid() && !open_file)
+    throw InputError(path.string(), "cannot write: it is a FIFO or socket of another user's");
+  return open_file || S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode);
 }
 
 /// The permissions a new file gets: 0666 less the umask, read without

@@ -6,9 +6,11 @@
 /// in the target's folder (O_EXCL, a random name, so a planted symlink is
 /// never followed), flushed, checked, fsynced, renamed over the target, and
 /// the folder is fsynced. A name that is itself a symlink is replaced, never
-/// written through. A character device, FIFO or socket (`/dev/null`,
-/// `/dev/stdout`, a pipe), and any name under /dev or /proc, is written
-/// directly and never replaced; a block device is refused.
+/// written through, unless it leads into /dev. A character device
+/// (`/dev/null`), a FIFO or socket of this user's, and an open file named
+/// through /proc (`/dev/stdout`, `/dev/fd/3`, even when it is a regular
+/// file) are written in place and never replaced; a block device, a folder
+/// and another user's FIFO are refused.
 #include <filesystem>
 #include <functional>
 #include <ostream>
