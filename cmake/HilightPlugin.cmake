@@ -26,12 +26,12 @@ function(hilight_add_plugin kind name)
     CXX_VISIBILITY_PRESET hidden
     VISIBILITY_INLINES_HIDDEN ON
     INSTALL_RPATH "$ORIGIN/..")
-  # In the tree (the installed layout), built with the install RPATH: a build
-  # RPATH would be padded with empty entries, which the loader reads as the
-  # current folder (framework/CMakeLists.txt).
-  if(HILIGHT_PLUGIN_OUTPUT_DIR)
-    set_target_properties(${target} PROPERTIES BUILD_WITH_INSTALL_RPATH ON)
-  endif()
+  # Built with the install RPATH: a build RPATH is padded with empty entries
+  # (for the install to edit in place), which the loader reads as the current
+  # folder (framework/CMakeLists.txt). The framework it links is the one the
+  # launcher has loaded already; a plugin that needs libraries of its own
+  # from elsewhere adds their folder to INSTALL_RPATH.
+  set_target_properties(${target} PROPERTIES BUILD_WITH_INSTALL_RPATH ON)
   target_compile_definitions(${target} PRIVATE HILIGHT_PLUGIN_NAME="${name}")
   target_link_libraries(${target} PRIVATE hilight::framework ${P_LIBS})
   if(COMMAND hilight_warnings)

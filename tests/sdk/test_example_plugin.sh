@@ -39,6 +39,9 @@ grep -q "$prefix/lib/cmake/hilight" "$work/example/CMakeCache.txt" || fail "find
 cmake --build "$work/example" -j "$(nproc)" >"$work/build.log" 2>&1 || { tail -30 "$work/build.log" >&2; fail "the example does not build"; }
 module_dir=$work/example/lib/hilight
 [ -e "$module_dir/hilight-renderer-unshadowed.so" ] || fail "no hilight-renderer-unshadowed.so in $module_dir"
+# No empty RUNPATH entry (the loader's current folder) in the built module (issue 35).
+runpath=$(readelf -d "$module_dir/hilight-renderer-unshadowed.so" | sed -n 's/.*R\(UN\)\{0,1\}PATH.*\[\(.*\)\]/\2/p')
+[ -n "$runpath" ] && [[ ":$runpath:" == *"::"* ]] && fail "the example's RUNPATH [$runpath] has an empty entry"
 
 # The installed launcher loads it from HILIGHT_PLUGIN_PATH and says so.
 listing=$(env -u XDG_DATA_HOME HOME="$work/home" HILIGHT_PLUGIN_PATH="$module_dir" "$prefix/bin/hilight" plugins)
