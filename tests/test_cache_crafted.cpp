@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstring>
 #include <future>
@@ -131,4 +132,28 @@ TEST_CASE("a FIFO at the light cache's name neither hangs the load nor takes the
   CHECK_THROWS_WITH(save_light_cache(fifo, rig.key, *cache), Catch::Contains("not a regular file"));
   struct stat st {};
   CHECK((::lstat(fifo.c_str(), &st) == 0 && S_ISFIFO(st.st_mode)));
+}
+
+TEST_CASE("hilight solve with a FIFO at its cache file's name warns and finishes", "[cache][cli][security]") {
+  const auto dir = test::output_dir("cache_fifo_cli");
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  const auto target = dir / "target.ply";
+  REQUIRE(test::run_hilight({"render", room, "--lights", std::string(HILIGHT_SOURCE_DIR) + "/scenes/room-4lights.json", "-o",
+                             target.string(), "--max-edge", "0.6"})
+              .exit_code == 0);
+  const std::vector<std::string> solve = {"solve", room, "--target", target.string(), "-o", (dir / "lights.json").string(), "--max-edge",
+                                          "0.6", "--cache-dir", (dir / "cache").string(), "--evaluation-points", "2000"};
+  REQUIRE(test::run_hilight(solve).exit_code == 0);
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir / "cache")) files.push_back(e.path());
+  REQUIRE(files.size() == 1);
+  fs::remove(files[0]);
+  REQUIRE(::mkfifo(files[0].c_str(), 0600) == 0);
+  // Killed after 120 s were it to hang (exit 128 + 9).
+  const auto r = test::run_hilight_interrupted(solve, 120.0, SIGKILL);
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("not a regular file"));
+  struct stat st {};
+  CHECK((::lstat(files[0].c_str(), &st) == 0 && S_ISFIFO(st.st_mode)));
 }

@@ -30,8 +30,8 @@ int run_cache(const std::vector<std::string>& args) {
   app.require_subcommand(1);
   std::string dir;
   app.add_option("--cache-dir", dir, "the cache folder (default: ~/.cache/hilight, or $HILIGHT_CACHE_DIR)");
-  auto* list = app.add_subcommand("list", "each cache file, most recently used first, and the total against the cap");
-  auto* clear = app.add_subcommand("clear", "remove every light cache file");
+  auto* list = app.add_subcommand("list", "each cache file (and unfinished writes), most recently used first, and the total against the cap");
+  auto* clear = app.add_subcommand("clear", "remove every light cache file and unfinished write, nothing else");
   list->fallthrough();  // --cache-dir may follow the subcommand
   clear->fallthrough();
   if (auto code = parse_arguments(app, args)) return *code;
