@@ -5,6 +5,7 @@
 #include "hilight/threads.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace hilight::cli {
 
@@ -42,20 +43,29 @@ void RendererOptions::add_to(CLI::App& app) {
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
 }
 
-std::vector<std::string> RendererOptions::assignments() const {
+std::string RendererOptions::bounces_for(const Registry& registry) const {
+  const int asked = bounce_count(), most = registry.renderer_traits(name).max_bounces;
+  if (most == kAllBounces || (asked != kAllBounces && asked <= most)) return bounces;
+  if (asked != kAllBounces)
+    throw InputError("--bounces " + bounces + ": renderer " + name + " carries at most " + std::to_string(most) + " bounce(s)");
+  std::fprintf(stderr, "note: renderer %s carries at most %d bounce(s); the light of later bounces is left out\n", name.c_str(), most);
+  return std::to_string(most);
+}
+
+std::vector<std::string> RendererOptions::assignments(const Registry* registry) const {
   std::vector<std::string> out;
   for (const auto& kv : settings) {
     const std::string key = setting_key(kv);
     if (key != "bounces" && !(key == "bounce_samples" && bounce_samples > 0)) out.push_back(kv);
   }
-  out.push_back("bounces=" + bounces);
+  out.push_back("bounces=" + (registry ? bounces_for(*registry) : bounces));
   if (bounce_samples > 0) out.push_back("bounce_samples=" + std::to_string(bounce_samples));
   return out;
 }
 
 std::unique_ptr<Renderer> RendererOptions::create(const Registry& registry, std::shared_ptr<const Scene> scene) const {
   set_thread_limit(threads);
-  const Properties props = Properties::from_assignments(assignments());
+  const Properties props = Properties::from_assignments(assignments(&registry));
   auto renderer = registry.create_renderer(name, props);
   renderer->set_scene(std::move(scene));
   return renderer;

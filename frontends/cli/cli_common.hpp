@@ -29,8 +29,12 @@ struct RendererOptions {
   void add_to(CLI::App& app);
   /// --bounces as a count, or kAllBounces.
   int bounce_count() const { return parse_bounces(bounces, "--bounces"); }
-  /// --set's settings with --bounces and --bounce-samples (which win).
-  std::vector<std::string> assignments() const;
+  /// --set's settings with --bounces and --bounce-samples (which win); with
+  /// a registry, --bounces within what the renderer carries (bounces_for).
+  std::vector<std::string> assignments(const Registry* registry = nullptr) const;
+  /// --bounces for the renderer: "all" lowered to RendererTraits::max_bounces
+  /// with a note on stderr; a count above it is an InputError.
+  std::string bounces_for(const Registry& registry) const;
   /// Creates and binds the renderer; InputError for unknown/unavailable ones.
   std::unique_ptr<Renderer> create(const Registry& registry, std::shared_ptr<const Scene> scene) const;
 };

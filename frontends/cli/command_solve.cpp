@@ -209,7 +209,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   }
   if (no_cache) spec.cache = PluginDefaults::no_cache;
   spec.renderer = ropts.name;
-  spec.renderer_settings = ropts.assignments();
+  spec.renderer_settings = ropts.assignments(&registry);
   SolveSession::check_names(registry, spec);  // unknown plugins fail before the scene loads
 
   const bool progress = !quiet && ::isatty(2);

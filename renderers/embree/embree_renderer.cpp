@@ -156,7 +156,7 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
         if (gather) {
           const ShadingPoint& at = (*shading_owner)[i];
           const HotSpots* h = hot.empty() ? nullptr : &hot[j];
-          if (!vertex_direct.empty()) {
+          if (m_settings.vertex_interpolated_bounce) {
             e += gather->interpolated_indirect_irradiance(i, &vertex_direct[j * 2 * v_count], h, at.position);
             if (h && !h->empty()) e += h->irradiance_seen(at, n, h->sees_light(*m_embree, at, n, local_rays));
           } else {

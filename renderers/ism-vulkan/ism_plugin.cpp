@@ -4,7 +4,8 @@
 //
 // | property        | default | meaning                                                  |
 // |-----------------|---------|----------------------------------------------------------|
-// | bounces         | 1       | 0 = direct light only, 1 = plus the first bounce (VPLs)  |
+// | bounces         | 1       | 0 = direct light only, 1 = plus the first bounce (VPLs); |
+// |                 |         | no more (traits: max_bounces 1)                          |
 // | shadow_size     | 512     | cube ID map face resolution, texels (16..4096)          |
 // | vpls            | 256     | virtual point lights per light (1..16384)                |
 // | ism_size        | 32      | imperfect shadow map per VPL, texels (power of 2, 4..256) |
@@ -19,6 +20,7 @@
 // | validation      | false   | Vulkan validation layer on; its errors fail the call     |
 // | seed            | 1       | VPL spiral rotation and ISM point pool                   |
 // The environment variable HILIGHT_VULKAN_VALIDATION=1 also turns validation on.
+#include "hilight/bounces.hpp"
 #include "ism_renderer.hpp"
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
@@ -47,7 +49,9 @@ double positive(const hilight::Properties& props, const char* key, double fallba
 
 std::unique_ptr<hilight::Renderer> create(const hilight::Properties& props) {
   hilight::ism::IsmSettings s;
-  s.bounces = int(in_range(props, "bounces", s.bounces, 0, 1));
+  s.bounces = hilight::bounces_property(props, s.bounces, "renderer ism-vulkan: bounces");
+  if (s.bounces != 0 && s.bounces != 1)
+    throw hilight::InputError("renderer ism-vulkan: bounces must be 0 or 1 (its VPLs carry the first bounce only)");
   s.shadow_size = uint32_t(in_range(props, "shadow_size", s.shadow_size, 16, 4096));
   s.vpls = uint32_t(in_range(props, "vpls", s.vpls, 1, 16384));
   s.ism_size = uint32_t(in_range(props, "ism_size", s.ism_size, 4, 256));
@@ -82,7 +86,7 @@ std::string detail() {
 
 void register_ism(hilight::PluginRegistrar& registrar) {
   registrar.renderer(create, probe, detail);
-  registrar.renderer_traits({{"vpls=64"}, {}});  // fewer VPLs a light in the fast twin; the reference re-fits
+  registrar.renderer_traits({{"vpls=64"}, {}, false, 1});  // fewer VPLs a light in the fast twin; the reference re-fits
 }
 
 } // namespace

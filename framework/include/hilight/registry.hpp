@@ -50,6 +50,10 @@ struct RendererTraits {
   /// bounce (SolveSettings::settle_fine_tune); false where each is a
   /// process run or a GPU submission (minutes in all).
   bool cheap_direct = false;
+  /// The most diffuse bounces it carries (kAllBounces: every one). A
+  /// command asked for "all" lowers it to this and says so; a count above
+  /// it is refused.
+  int max_bounces = -1;
 };
 
 struct ModuleRecord {
