@@ -6,8 +6,36 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 namespace hilight::embree {
+
+/// An area or line source ready to integrate (direct_light.cpp): its outline
+/// (a rectangle's 4 corners, a disk as a 48-gon of the disk's area), the
+/// centres of its equal parts (the visibility samples), and its profile.
+struct AreaSource {
+  LightType type = LightType::Rectangle;
+  AreaFrame frame;
+  std::vector<Vec3> outline;
+  float area = 1.f;              ///< of the true shape (a line: its length)
+  std::vector<Vec3> samples;
+  const Light* profiled = nullptr;  ///< with a profile (the Light outlives the batch)
+  LuminaireFrame profile_frame;
+  float lambert_part = 1.f;  ///< the profile's value along the normal: the cosine part integrated exactly
+};
+
+/// Visibility samples per area source (line: half as many): 16 shadow rays
+/// per point where the source is partly hidden; unhidden, the result is exact.
+constexpr int kAreaSamples = 16;
+
+/// Irradiance on the side `side_normal` points to, from an area or line
+/// source at unit intensity: the exact form factor of the part of the source
+/// in front of that side (Lambertian), times the fraction of it the shadow
+/// rays to its parts see; a profile's difference from the cosine summed over
+/// the parts (docs/rendering-model.md "Area and line sources").
+float area_irradiance_on_side(const RayScene& es, const ShadingPoint& at, const Vec3& n, const Vec3& side_normal,
+                              const AreaSource& area, uint64_t& rays);
 
 /// A light with its cone precomputed as cosines, so the hot loop has no trig.
 struct PreparedLight {
@@ -18,12 +46,19 @@ struct PreparedLight {
   Rgb intensity{1.f};
   const Light* luminaire = nullptr;  ///< with a profile (the Light outlives the batch)
   LuminaireFrame frame;
+  std::shared_ptr<const AreaSource> area;  ///< area and line sources
 
   explicit PreparedLight(const Light& light);
+  /// An area or line source: integrated over its extent by the functions
+  /// below. What treats a light as a point at `position` with `angular()`
+  /// (hot patches) sees only its far field here, and may skip it.
+  bool extended() const { return area != nullptr; }
   /// Angular factor toward unit direction `to_point` (from the light):
   /// smoothstep in the cosine between the cone's edge and its full-intensity
   /// core; a luminaire's candela there over its peak (bilinear in its grid).
+  /// An area or line source's, seen from afar (cos θ on its front side).
   float angular(const Vec3& to_point) const {
+    if (area) return area->profiled ? luminaire_factor(*area->profiled, frame, to_point) : std::max(0.f, glm::dot(direction, to_point));
     if (luminaire) return luminaire_factor(*luminaire, frame, to_point);
     return spot ? cone.factor(glm::dot(direction, to_point)) : 1.f;
   }
@@ -35,6 +70,7 @@ struct PreparedLight {
 /// ray_start). Counts the shadow ray it casts in `rays`.
 inline float unit_direct_irradiance_on_side(const RayScene& es, const ShadingPoint& at, const Vec3& n,
                                             const Vec3& side_normal, const PreparedLight& light, uint64_t& rays) {
+  if (light.area) return area_irradiance_on_side(es, at, n, side_normal, *light.area, rays);
   const Vec3& p = at.position;
   Vec3 d = light.position - p;
   float dist2 = glm::dot(d, d);
@@ -58,6 +94,9 @@ inline float unit_direct_irradiance_on_side(const RayScene& es, const ShadingPoi
 /// tells the sides apart.
 inline float unit_direct_irradiance(const RayScene& es, const ShadingPoint& at, const Vec3& n, const Vec3& side_normal,
                                     const PreparedLight& light, uint64_t& rays) {
+  if (light.area)  // an extended source can light both sides
+    return area_irradiance_on_side(es, at, n, side_normal, *light.area, rays) +
+           area_irradiance_on_side(es, at, n, -side_normal, *light.area, rays);
   Vec3 side = glm::dot(side_normal, light.position - at.position) >= 0.f ? side_normal : -side_normal;
   return unit_direct_irradiance_on_side(es, at, n, side, light, rays);
 }

@@ -24,6 +24,11 @@ struct Photometry {
   std::vector<double> candela;     ///< [plane * vertical.size() + i], at the rated lamp output
   double rated_lumens = 0;  ///< the lamps' rated flux (0: absolute photometry, see flux())
   double input_watts = 0;   ///< electrical input, 0 when the file does not say
+  /// The luminous opening the file gives, metres: `opening_length` along
+  /// C0–C180 (a disk's diameter when `opening_round`), `opening_width` along
+  /// C90–C270; 0 × 0 for a point source.
+  double opening_length = 0, opening_width = 0;
+  bool opening_round = false;
 
   /// Candela towards (C, γ) in degrees (type C angles whatever the file's type):
   /// bilinear in the stored grid, 0 outside the measured range.

@@ -74,10 +74,50 @@ Light read_luminaire(const json& obj, Light light, const std::string& where, con
   return light;
 }
 
+/// A rectangle, disk or line: a shape, and a profile or Lambertian emission.
+Light read_area(const json& obj, Light light, const std::string& where, const std::filesystem::path& base,
+                ProfileCache& profiles) {
+  if (obj.contains("cutoff_deg") || obj.contains("falloff_deg"))
+    throw InputError(where + ": an area or line source has no cutoff_deg or falloff_deg");
+  if (obj.contains("spin_deg") && !obj.contains("profile"))
+    throw InputError(where + ": spin_deg turns a profile (an area source's C0 plane is along \"up\", turned spin_deg)");
+  light.direction = read_vec3(obj, "direction", where);
+  if (light.type == LightType::Disk && !obj.contains("up")) {  // a disk's up only orients a profile
+    const Vec3 d = light.direction;
+    light.up = std::abs(d.x) > 0.9f ? Vec3(0.f, 0.f, 1.f) : Vec3(1.f, 0.f, 0.f);
+  } else {
+    light.up = read_vec3(obj, "up", where);
+  }
+  if (!obj.contains("size") || !obj.at("size").is_array()) throw InputError(where + ": missing \"size\" (an array)");
+  const json& size = obj.at("size");
+  const size_t want = light.type == LightType::Rectangle ? 2 : 1;
+  const char* shape = light.type == LightType::Rectangle ? "[width, height]" : light.type == LightType::Disk ? "[diameter]" : "[length]";
+  if (size.size() != want) throw InputError(where + ": \"size\" must be " + shape);
+  for (size_t i = 0; i < want; ++i) {
+    if (!size[i].is_number()) throw InputError(where + ": \"size\" must be " + shape + " in numbers");
+    light.size[int(i)] = size[i].get<float>();
+  }
+  if (const std::string problem = area_light_problem(light); !problem.empty()) throw InputError(where + ": " + problem);
+  light.up = glm::normalize(light.up - glm::dot(light.up, light.direction) * light.direction);
+  if (obj.contains("profile")) {
+    if (!obj.at("profile").is_string()) throw InputError(where + ": \"profile\" must be the .ies or .ldt file");
+    Light lum = read_luminaire(obj, light, where, base, profiles);  // the profile and its intensity or dimming
+    light.profile = lum.profile;
+    light.profile_path = lum.profile_path;
+    light.intensity = lum.intensity;
+    light.spin_deg = lum.spin_deg;
+    return light;
+  }
+  if (obj.contains("dimming")) throw InputError(where + ": \"dimming\" needs a \"profile\"");
+  light.intensity = read_vec3(obj, "intensity", where);
+  if (glm::any(glm::lessThan(light.intensity, Vec3(0.f)))) throw InputError(where + ": negative intensity");
+  return light;
+}
+
 Light read_light(const json& obj, const std::string& where, const std::filesystem::path& base, ProfileCache& profiles) {
   if (!obj.is_object()) throw InputError(where + ": must be an object");
   static const char* kKnown[] = {"type", "position", "intensity", "direction", "cutoff_deg", "falloff_deg", "name",
-                                 "profile", "spin_deg", "dimming"};
+                                 "profile", "spin_deg", "dimming", "up", "size"};
   for (const auto& [key, value] : obj.items())
     if (std::find(std::begin(kKnown), std::end(kKnown), key) == std::end(kKnown))
       throw InputError(where + ": unknown field \"" + key + "\"");
@@ -86,6 +126,12 @@ Light read_light(const json& obj, const std::string& where, const std::filesyste
   Light light;
   light.position = read_vec3(obj, "position", where);
   if (type == "luminaire") return read_luminaire(obj, std::move(light), where, base, profiles);
+  if (LightType t; light_type_from_string(type, t) && is_area(t)) {
+    light.type = t;
+    return read_area(obj, std::move(light), where, base, profiles);
+  }
+  if (obj.contains("up") || obj.contains("size"))
+    throw InputError(where + ": up and size belong to an area or line source (\"type\": rectangle, disk or line)");
   if (obj.contains("profile") || obj.contains("spin_deg") || obj.contains("dimming"))
     throw InputError(where + ": profile, spin_deg and dimming belong to a luminaire (\"type\":\"luminaire\")");
   light.intensity = read_vec3(obj, "intensity", where);
@@ -106,7 +152,7 @@ Light read_light(const json& obj, const std::string& where, const std::filesyste
     if (light.falloff_deg < 0.f || light.falloff_deg > light.cutoff_deg)
       throw InputError(where + ": falloff_deg must be in [0, cutoff_deg]");
   } else {
-    throw InputError(where + ": unknown light type \"" + type + "\" (point, spot or luminaire)");
+    throw InputError(where + ": unknown light type \"" + type + "\" (point, spot, luminaire, rectangle, disk or line)");
   }
   return light;
 }
@@ -153,6 +199,15 @@ std::string lights_to_json(const Lighting& lights, const std::string& length_uni
       o["profile"] = l.profile_path;
       o["direction"] = {l.direction.x, l.direction.y, l.direction.z};
       o["spin_deg"] = l.spin_deg;
+    }
+    if (is_area(l.type)) {
+      o["direction"] = {l.direction.x, l.direction.y, l.direction.z};
+      o["up"] = {l.up.x, l.up.y, l.up.z};
+      o["size"] = l.type == LightType::Rectangle ? json{l.size[0], l.size[1]} : json{l.size[0]};
+      if (l.profile) {
+        o["profile"] = l.profile_path;
+        o["spin_deg"] = l.spin_deg;
+      }
     }
     o["intensity"] = {l.intensity.r, l.intensity.g, l.intensity.b};
     arr.push_back(o);
