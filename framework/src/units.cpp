@@ -50,7 +50,7 @@ void target_from_units(Target& target, Units units, TargetQuantity quantity) {
 }
 
 double luminaire_dimming(const Light& light) {
-  if (light.type != LightType::Luminaire || !light.profile || !(light.profile->peak() > 0)) return 0.0;
+  if ((light.type != LightType::Luminaire && !is_area(light.type)) || !light.profile || !(light.profile->peak() > 0)) return 0.0;
   const double largest = std::max({light.intensity.r, light.intensity.g, light.intensity.b});
   return largest * kLumensPerWatt / light.profile->peak();
 }
@@ -58,11 +58,12 @@ double luminaire_dimming(const Light& light) {
 double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 double luminous_flux(const Light& light) {
-  if (light.type == LightType::Luminaire) {  // its profile's flux, scaled from peak candela to the light's
+  if (light.type == LightType::Luminaire || (is_area(light.type) && light.profile)) {  // its profile's flux, scaled from peak candela to the light's
     if (!light.profile || !(light.profile->peak() > 0)) return 0.0;
     return kLumensPerWatt * luminance(light.intensity) * light.profile->flux() / light.profile->peak();
   }
   double solid_angle = 4.0 * kPi;
+  if (is_area(light.type)) solid_angle = kPi;  // Lambertian: ∫ cos θ over the front hemisphere
   if (light.type == LightType::Spot) {
     const SpotCone cone = SpotCone::of(light);
     // ∫ over the sphere of the cone's factor: full inside the core, the

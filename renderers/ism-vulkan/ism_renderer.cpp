@@ -64,6 +64,9 @@ std::vector<float> profile_table(const Photometry& p) {
   return t;
 }
 
+/// Parts per area or line source: each costs a light's shadow maps and VPLs.
+constexpr int kAreaElements = 16;
+
 GpuLight to_gpu(const Light& light, uint32_t profile_offset) {
   GpuLight g{};
   for (int k = 0; k < 3; ++k) {
@@ -422,6 +425,29 @@ void IsmRenderer::submit_and_wait(VkCommandBuffer cmd) {
 }
 
 std::vector<Rgb> IsmRenderer::unit_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport) {
+  if (std::none_of(lights.begin(), lights.end(), [](const Light& l) { return is_area(l.type); }))
+    return point_responses(points, lights, transport);
+  // An area or line source as its parts, each a cosine (or its profile's)
+  // luminaire carrying an equal share (lighting.hpp: area_light_elements);
+  // its φ is the sum of theirs.
+  Lighting parts;
+  std::vector<size_t> first(lights.size() + 1, 0);
+  for (size_t j = 0; j < lights.size(); ++j) {
+    for (const Light& part : area_light_elements(lights[j], kAreaElements)) parts.push_back(part);
+    first[j + 1] = parts.size();
+  }
+  const std::vector<Rgb> each = point_responses(points, parts, transport);
+  const size_t n = points.size();
+  std::vector<Rgb> out(n * lights.size(), Rgb(0.f));
+  for (size_t j = 0; j < lights.size(); ++j) {
+    const float share = 1.f / float(first[j + 1] - first[j]);
+    for (size_t e = first[j]; e < first[j + 1]; ++e)
+      for (size_t i = 0; i < n; ++i) out[j * n + i] += share * each[e * n + i];
+  }
+  return out;
+}
+
+std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport) {
   std::lock_guard lock(m_mutex);
   if (!m_scene) throw std::logic_error("IsmRenderer: set_scene was not called");
   const size_t n = points.size();

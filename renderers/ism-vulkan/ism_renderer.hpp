@@ -39,6 +39,9 @@ private:
   struct Kernels;
   class StageClock;
 
+  /// unit_responses for point-like lights (point, spot, luminaire).
+  std::vector<Rgb> point_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport);
+
   /// The points on the device (shading points, normals, albedo), kept while the same set comes back.
   const PointBuffers& upload_points(const SurfacePoints& points);
   Workspace& workspace(uint32_t lights_per_chunk, size_t point_count);

@@ -60,6 +60,7 @@ Lighting PovrayRenderer::to_pov(std::span<const Light> lights) const {
   Lighting out(lights.begin(), lights.end());
   for (auto& l : out) {
     l.position *= m_pov_scale;
+    l.size *= m_pov_scale;  // an area or line source scales with the scene
     l.intensity *= m_pov_scale * m_pov_scale;
   }
   return out;
