@@ -4,6 +4,7 @@
 // InputError naming it, never a crash.
 #include "hilight/error.hpp"
 #include "hilight/io/gltf.hpp"
+#include "confined_path.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -25,9 +26,31 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;  // textures play no part in hilight's Lambertian model
 }
 
-/// Files a glTF refers to (buffers): regular files of sane size only — a
-/// `uri` naming /dev/zero would otherwise never finish reading.
-bool read_referenced_file(std::vector<unsigned char>* out, std::string* err, const std::string& file, void*) {
+/// What the file callbacks know: the glTF's folder, and the first file it
+/// names outside that folder (refused; the load then fails on it).
+struct Referenced {
+  fs::path folder;
+  std::string outside;
+};
+
+/// tinygltf checks a file exists before reading it: one outside the folder
+/// is said to exist, so that the read refuses it by name and nothing about
+/// it (its existence, its size) reaches the error.
+bool referenced_file_exists(const std::string& file, void* context) {
+  const auto* referenced = static_cast<const Referenced*>(context);
+  return !inside_folder(referenced->folder, file) || tinygltf::FileExists(file, nullptr);
+}
+
+/// Files a glTF refers to (buffers, images): inside its folder only (issue 35),
+/// regular files of sane size only — a `uri` naming /dev/zero would
+/// otherwise never finish reading.
+bool read_referenced_file(std::vector<unsigned char>* out, std::string* err, const std::string& file, void* context) {
+  auto* referenced = static_cast<Referenced*>(context);
+  if (!inside_folder(referenced->folder, file)) {
+    if (referenced->outside.empty()) referenced->outside = file;
+    if (err) *err += "refers to a file outside its folder\n";
+    return false;
+  }
   std::error_code ec;
   if (!fs::is_regular_file(file, ec) || fs::file_size(file, ec) > (uintmax_t(1) << 31)) {
     if (err) *err += "cannot read " + file + " (not a regular file, or larger than 2 GB)\n";
@@ -51,12 +74,16 @@ tinygltf::Model load(const fs::path& path) {
   probe.read(magic, 4);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&skip_image, nullptr);
-  loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_referenced_file, &tinygltf::WriteWholeFile, nullptr});
+  Referenced referenced{path.parent_path(), {}};
+  loader.SetFsCallbacks({&referenced_file_exists, &tinygltf::ExpandFilePath, &read_referenced_file, &tinygltf::WriteWholeFile, &referenced});
   tinygltf::Model model;
   std::string error, warning;
   const bool binary = std::memcmp(magic, "glTF", 4) == 0;
   const bool ok = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path.string())
                          : loader.LoadASCIIFromFile(&model, &error, &warning, path.string());
+  if (!ok && !referenced.outside.empty())  // a buffer; an image outside is not read either, and not needed
+    throw InputError(path.string(), "refers to " + named_from(referenced.folder, referenced.outside) +
+                                        ", outside its folder (the files it names must lie in its folder or below)");
   if (!ok) {
     std::string first = error.substr(0, error.find('\n'));
     if (first.empty()) first = "not a glTF 2.0 file";

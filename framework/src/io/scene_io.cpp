@@ -3,6 +3,8 @@
 
 #include "hilight/error.hpp"
 #include "hilight/io/tessellate.hpp"
+#include "far_positions.hpp"
+#include "scene_files.hpp"
 #include "texture_average.hpp"
 
 #include <assimp/Importer.hpp>
@@ -135,6 +137,19 @@ void check_binary_ply_start(const fs::path& path) {
                    "save it as ASCII PLY, or with another vertex order or a leading property");
 }
 
+/// A far scene assimp read in single precision from a more precise file
+/// (glTF node transforms, OFF, ASCII STL, ...): rounded before it was moved
+/// home. Said once, with how much.
+void warn_rounded(const std::string& file, const Bounds& world, const SceneFrame& frame) {
+  double largest = 0;
+  for (int axis = 0; axis < 3; ++axis) largest = std::max({largest, std::abs(double(world.lo[axis])), std::abs(double(world.hi[axis]))});
+  const double error_mm = far_positions::float_rounding(largest) * frame.scale * 1000.0;
+  std::fprintf(stderr,
+               "hilight: warning: %s: its positions were read in single precision (assimp) %.3g m from the origin: "
+               "rounded by up to %.2g mm before the scene was moved home (OBJ and ASCII PLY are read in full)\n",
+               file.c_str(), largest * frame.scale, error_mm);
+}
+
 } // namespace
 
 Scene finish_scene(Scene scene, const SceneLoadOptions& options) {
@@ -176,7 +191,12 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
 
   check_off_header(path);
   check_binary_ply_start(path);
+  // Positions in double where hilight can read them, moved home before
+  // assimp's floats round them (far_positions.hpp).
+  const far_positions::Shifted shifted = far_positions::read(path);
   Assimp::Importer importer;
+  auto* files = new SceneFiles(path, shifted.text);  // the importer owns it
+  importer.SetIOHandler(files);
   // Points and lines carry no surface: drop them during import.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 60.f);
@@ -184,6 +204,9 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
                          aiProcess_GenSmoothNormals | aiProcess_SortByPType | aiProcess_FindDegenerates |
                          aiProcess_ValidateDataStructure;
   const aiScene* ai = importer.ReadFile(file, flags);
+  // A file named outside the folder was refused unread; so is the scene.
+  if (!files->outside().empty())
+    throw InputError(file, "refers to " + files->outside() + ", outside its folder (the files it names must lie in its folder or below)");
   if (!ai) throw InputError(file, std::string("cannot read scene: ") + importer.GetErrorString());
 
   Scene scene;
@@ -223,9 +246,16 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
                                                                         : "glTF files are in metres (their specification)") +
                                ": --unit " + scene.frame.unit + " does not apply");
   scene.update_bounds();
-  scene.frame.origin = recentring_origin(scene.bounds);
-  if (!scene.frame.identity())
-    for (auto& p : scene.positions) p = to_local(p, scene.frame);
+  if (!shifted.text.empty()) {  // already moved home, in double: scaled only
+    scene.frame.origin = shifted.origin;
+    for (auto& p : scene.positions) p = Vec3(glm::dvec3(p) * scene.frame.scale);
+  } else {
+    scene.frame.origin = recentring_origin(scene.bounds);
+    if (!scene.frame.identity())
+      for (auto& p : scene.positions) p = to_local(p, scene.frame);
+    if (scene.frame.origin != glm::dvec3(0.0) && shifted.precision == far_positions::Precision::Rounded)
+      warn_rounded(file, scene.bounds, scene.frame);
+  }
   SceneLoadOptions in_metres = options;
   in_metres.max_edge = options.max_edge > 0.f ? length_to_local(options.max_edge, scene.frame) : 0.f;
   Scene out = finish_scene(std::move(scene), in_metres);

@@ -1,4 +1,5 @@
 #include "texture_average.hpp"
+#include "confined_path.hpp"
 
 #include <assimp/material.h>
 #include <assimp/scene.h>
@@ -35,6 +36,7 @@ struct StbFree {
 
 std::optional<Rgb> average_texture(const aiScene& scene, const aiMaterial& material, const std::filesystem::path& folder,
                                    std::string& problem) {
+  std::string outside;
   aiString path;
   if (material.GetTexture(aiTextureType_BASE_COLOR, 0, &path) != AI_SUCCESS &&
       material.GetTexture(aiTextureType_DIFFUSE, 0, &path) != AI_SUCCESS)
@@ -60,9 +62,17 @@ std::optional<Rgb> average_texture(const aiScene& scene, const aiMaterial& mater
     std::string name = path.C_Str();
     std::replace(name.begin(), name.end(), '\\', '/');
     for (const auto& file : {folder / name, folder / std::filesystem::path(name).filename()}) {
+      if (!inside_folder(folder, file)) {  // not read (issue 35); the bare name in the folder may still be it
+        outside = named_from(folder, file);
+        continue;
+      }
       pixels.reset(stbi_load(file.c_str(), &w, &h, &channels, 4));
       if (pixels) break;
     }
+  }
+  if (!pixels && !outside.empty()) {
+    problem = "texture " + outside + " lies outside the scene's folder, so it is not read";
+    return std::nullopt;
   }
   if (!pixels) {
     problem = std::string("texture ") + path.C_Str() + " cannot be read (" + (stbi_failure_reason() ? stbi_failure_reason() : "?") + ")";
