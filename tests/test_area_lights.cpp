@@ -3,12 +3,14 @@
 // configuration factors derived here (CIE 171 case 5.3 style), from 0.1× to
 // 10× the source's size away, shadows, and the far-field limit.
 #include "hilight/error.hpp"
+#include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 using namespace hilight;
 
@@ -226,4 +228,30 @@ TEST_CASE("Embree: area sources add up like any light (render = sum of I_j phi_j
     lit += all[i].r;
   }
   CHECK(lit > 0);
+}
+
+TEST_CASE("glTF: an area or line source goes out as a hemisphere spot with its shape in extras, and comes back", "[area][gltf]") {
+  const Lighting lights = {Light::area(LightType::Rectangle, {1.f, 2.f, 3.f}, glm::normalize(Vec3(0.3f, -1.f, 0.f)), {0.f, 0.f, 1.f}, {0.6f, 0.3f}, Rgb(2.f, 1.f, 0.5f)),
+                           Light::area(LightType::Disk, {0.f, 2.5f, 0.f}, {0.f, -1.f, 0.f}, {1.f, 0.f, 0.f}, {0.4f, 0.f}, Rgb(1.f)),
+                           Light::area(LightType::Line, {0.f, 2.f, 1.f}, {0.f, 0.f, 1.f}, {1.f, 0.f, 0.f}, {1.5f, 0.f}, Rgb(0.5f))};
+  auto dir = test::output_dir("area_lights_gltf");
+  write_gltf(dir / "l.gltf", GltfExport{nullptr, lights});
+  // What Blender's importer reads: a spot of the source's peak candela, a 90° cone.
+  const auto doc = nlohmann::json::parse(test::read_file(dir / "l.gltf"));
+  const auto& first = doc["extensions"]["KHR_lights_punctual"]["lights"][0];
+  CHECK(first["type"] == "spot");
+  CHECK(first["spot"]["outerConeAngle"].get<double>() == Approx(kPi / 2));
+  CHECK(first["intensity"].get<double>() == Approx(2.0 * kCandelaPerWattPerSr));
+  CHECK(first["extras"]["hilight"]["type"] == "rectangle");
+  const Lighting back = read_gltf_lights(dir / "l.gltf");
+  REQUIRE(back.size() == 3);
+  for (size_t i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    CHECK(back[i].type == lights[i].type);
+    CHECK(glm::length(back[i].position - lights[i].position) < 1e-5f);
+    CHECK(glm::length(back[i].direction - lights[i].direction) < 1e-5f);
+    CHECK(glm::length(back[i].up - lights[i].up) < 1e-5f);
+    CHECK(back[i].size == lights[i].size);
+    CHECK(glm::length(back[i].intensity - lights[i].intensity) < 1e-5f);
+  }
 }

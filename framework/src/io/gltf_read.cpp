@@ -197,6 +197,33 @@ double colour_scale(const tinygltf::Mesh& mesh) {
 
 } // namespace
 
+namespace {
+
+/// `extras.hilight` of a light: {"type": rectangle|disk|line, "size": [...], "up": [x, y, z]}.
+Light area_from_extras(const tinygltf::Value& shape, const Vec3& position, const Vec3& direction, const Rgb& intensity,
+                       const fs::path& path, const std::string& name) {
+  LightType type = LightType::Point;
+  const bool typed = shape.IsObject() && shape.Has("type") && shape.Get("type").IsString() &&
+                     light_type_from_string(shape.Get("type").Get<std::string>(), type) && is_area(type);
+  const tinygltf::Value size = typed && shape.Has("size") ? shape.Get("size") : tinygltf::Value();
+  const tinygltf::Value up = typed && shape.Has("up") ? shape.Get("up") : tinygltf::Value();
+  const size_t sizes = type == LightType::Rectangle ? 2 : 1;
+  bool ok = typed && size.IsArray() && size.ArrayLen() == sizes && up.IsArray() && up.ArrayLen() == 3;
+  glm::vec2 s(0.f);
+  Vec3 u(0.f);
+  for (size_t i = 0; ok && i < sizes; ++i) ok = size.Get(int(i)).IsNumber(), s[int(i)] = float(size.Get(int(i)).GetNumberAsDouble());
+  for (int i = 0; ok && i < 3; ++i) ok = up.Get(i).IsNumber(), u[i] = float(up.Get(i).GetNumberAsDouble());
+  Light light = Light::area(type, position, direction, ok ? u : Vec3(1.f, 0.f, 0.f), s, intensity);
+  light.up = u;
+  if (!ok || !area_light_problem(light).empty())
+    throw InputError(path.string(), name + ": extras.hilight must be an area or line source's {\"type\", \"size\", \"up\"} (" +
+                                        (ok ? area_light_problem(light) : std::string("malformed")) + ")");
+  light.up = glm::normalize(u - glm::dot(u, light.direction) * light.direction);
+  return light;
+}
+
+} // namespace
+
 Lighting read_gltf_lights(const fs::path& path) {
   const tinygltf::Model model = load(path);
   Lighting lights;
@@ -231,6 +258,10 @@ Lighting read_gltf_lights(const fs::path& path) {
     const double outer = g.spot.outerConeAngle * 180.0 / kPi, inner = g.spot.innerConeAngle * 180.0 / kPi;
     if (glm::length(axis) <= 0 || !(outer > 0 && outer <= 90) || !(inner >= 0 && inner <= outer))
       throw InputError(path.string(), name + ": a spot needs 0 <= innerConeAngle <= outerConeAngle <= pi/2 and an axis");
+    if (g.extras.IsObject() && g.extras.Has("hilight")) {  // an area or line source written by hilight (docs/interchange.md)
+      lights.push_back(area_from_extras(g.extras.Get("hilight"), Vec3(position), Vec3(glm::normalize(axis)), intensity, path, name));
+      return;
+    }
     lights.push_back(Light::spot(Vec3(position), Vec3(glm::normalize(axis)), float(outer), intensity, float(outer - inner)));
   });
   if (lights.empty()) throw InputError(path.string(), "no KHR_lights_punctual light in its default scene");

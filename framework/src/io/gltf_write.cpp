@@ -153,13 +153,33 @@ glm::dquat aim(const Vec3& direction) {
   return glm::normalize(glm::dquat(1.0 + d, axis.x, axis.y, axis.z));
 }
 
+/// An area or line source as what Blender imports: a hemisphere spot (90°
+/// cone, its edge soft from the axis) of I0 along the normal; its true shape
+/// in the light's `extras.hilight`, which reading restores (docs/interchange.md).
+void add_area_extras(const Light& l, tinygltf::Light& light, tinygltf::Node& node) {
+  light.spot.outerConeAngle = kPi / 2;
+  light.spot.innerConeAngle = 0.0;
+  const glm::dquat q = aim(l.direction);
+  node.rotation = {q.x, q.y, q.z, q.w};
+  tinygltf::Value::Object shape;
+  shape["type"] = tinygltf::Value(std::string(to_string(l.type)));
+  tinygltf::Value::Array size{tinygltf::Value(double(l.size[0]))};
+  if (l.type == LightType::Rectangle) size.push_back(tinygltf::Value(double(l.size[1])));
+  shape["size"] = tinygltf::Value(std::move(size));
+  shape["up"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(double(l.up.x)), tinygltf::Value(double(l.up.y)),
+                                                      tinygltf::Value(double(l.up.z))});
+  tinygltf::Value::Object extras;
+  extras["hilight"] = tinygltf::Value(std::move(shape));
+  light.extras = tinygltf::Value(std::move(extras));
+}
+
 void add_light(tinygltf::Model& model, const Light& l, size_t index, const glm::dvec3& origin, tinygltf::Node& node,
                const fs::path& path) {
-  if (l.type == LightType::Luminaire)
+  if (l.type == LightType::Luminaire || (is_area(l.type) && l.profile))
     throw InputError(path.string(), "light " + std::to_string(index) + " is a luminaire with a measured profile: KHR_lights_punctual has only point and spot lights");
   tinygltf::Light light;
   light.name = "light " + std::to_string(index);
-  light.type = l.type == LightType::Spot ? "spot" : "point";
+  light.type = l.type == LightType::Spot || is_area(l.type) ? "spot" : "point";
   const double largest = std::max({double(l.intensity.r), double(l.intensity.g), double(l.intensity.b)});
   light.color = largest > 0 ? std::vector<double>{l.intensity.r / largest, l.intensity.g / largest, l.intensity.b / largest}
                             : std::vector<double>{1.0, 1.0, 1.0};
@@ -170,6 +190,7 @@ void add_light(tinygltf::Model& model, const Light& l, size_t index, const glm::
     const glm::dquat q = aim(l.direction);
     node.rotation = {q.x, q.y, q.z, q.w};
   }
+  if (is_area(l.type)) add_area_extras(l, light, node);
   model.lights.push_back(light);
   node.name = light.name;
   const glm::dvec3 world = glm::dvec3(l.position) + origin;  // exact in the file's doubles

@@ -22,6 +22,21 @@ void add_cone(LineBatch& lines, const Light& spot, float length, const glm::vec4
   lines.line(spot.position, spot.position + length * axis, glm::vec4(glm::vec3(colour), 0.5f * colour.a));
 }
 
+/// An area or line source's true outline, and a tick along its emitting normal.
+void add_area_outline(LineBatch& lines, const Light& light, float diagonal, const glm::vec4& colour) {
+  const AreaFrame f = AreaFrame::of(light);
+  if (light.type == LightType::Rectangle) {
+    const Vec3 c[4] = {f.centre - f.half_u - f.half_v, f.centre + f.half_u - f.half_v, f.centre + f.half_u + f.half_v,
+                       f.centre - f.half_u + f.half_v};
+    for (int i = 0; i < 4; ++i) lines.line(c[i], c[(i + 1) % 4], colour);
+  } else if (light.type == LightType::Disk) {
+    lines.circle(f.centre, f.normal, glm::length(f.half_u), colour, 32);
+  } else {
+    lines.line(f.centre - f.half_u, f.centre + f.half_u, colour);
+  }
+  lines.line(f.centre, f.centre + diagonal / 40.f * f.normal, glm::vec4(glm::vec3(colour), 0.5f * colour.a));
+}
+
 } // namespace
 
 void add_light_markers(LineBatch& lines, const Lighting& lights, float diagonal) {
@@ -31,6 +46,7 @@ void add_light_markers(LineBatch& lines, const Lighting& lights, float diagonal)
     lines.point(light.position, glm::vec4(0.f, 0.f, 0.f, 1.f), 15.f);
     lines.point(light.position, glm::vec4(0.25f + 0.75f * colour, 1.f), 11.f);
     if (light.type == LightType::Spot) add_cone(lines, light, diagonal / 8.f, glm::vec4(1.f, 0.95f, 0.6f, 0.9f));
+    if (is_area(light.type)) add_area_outline(lines, light, diagonal, glm::vec4(1.f, 0.95f, 0.6f, 0.9f));
   }
 }
 
