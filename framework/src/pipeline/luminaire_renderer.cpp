@@ -26,7 +26,8 @@ Lighting as_points(const Lighting& lights, const Light& luminaire) {
   Lighting out;
   out.reserve(lights.size());
   for (const Light& l : lights)
-    out.push_back(l.type == LightType::Luminaire && l.profile_path == luminaire.profile_path ? Light::point(l.position, l.intensity) : l);
+    // An area template (its shape given: --area-light, --luminaire-size) comes back too.
+    out.push_back(l.type == luminaire.type && l.profile_path == luminaire.profile_path ? Light::point(l.position, l.intensity) : l);
   return out;
 }
 
@@ -46,6 +47,9 @@ std::string LuminaireRenderer::settings_key() const {
   std::ostringstream key;
   key << m_inner.settings_key() << "|luminaire " << m_luminaire.profile_path << " aim " << m_luminaire.direction.x << ","
       << m_luminaire.direction.y << "," << m_luminaire.direction.z << " spin " << m_luminaire.spin_deg;
+  if (is_area(m_luminaire.type))
+    key << " " << to_string(m_luminaire.type) << " up " << m_luminaire.up.x << "," << m_luminaire.up.y << "," << m_luminaire.up.z
+        << " size " << m_luminaire.size[0] << "x" << m_luminaire.size[1];
   return key.str();
 }
 

@@ -283,8 +283,8 @@ void Solver::finish_report(const Target& target, const Lighting& lights, SolveRe
 
 void Solver::require_admissible(const Lighting& lights, const std::string& what) const {
   for (size_t j = 0; j < lights.size(); ++j)
-    if (lights[j].type == LightType::Luminaire)
-      throw InputError(what + ": light " + std::to_string(j) + " is a luminaire with a profile; the solve does not optimize luminaires yet");
+    if (lights[j].type == LightType::Luminaire || is_area(lights[j].type))
+      throw InputError(what + ": light " + std::to_string(j) + " is a luminaire or an area source; the solve optimizes those only as --luminaire or --area-light");
   for (size_t j = 0; j < lights.size(); ++j) {
     const Vec3& p = lights[j].position;
     const char* problem = !m_space->light_bounds().contains(p) ? "is outside the space lights may take (the scene's bounds)"
@@ -316,7 +316,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
   open_space_for(m_settings.spot_hints);
   require_admissible(m_settings.spot_hints, "spot hints");
   Lighting lights = solve_in_space(target, report);
-  if (m_settings.luminaire && distinct_spins(*m_settings.luminaire->profile).size() > 1 && report.dbar > kTurnDbar)
+  if (m_settings.luminaire && m_settings.luminaire->profile && distinct_spins(*m_settings.luminaire->profile).size() > 1 && report.dbar > kTurnDbar)
     lights = solve_each_spin(target, std::move(lights), report);
   // Lights inside cannot explain the target: perhaps it is lit from outside
   // (a product, a facade). Look again beyond the open sides; keep the better.
@@ -365,7 +365,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
     }
   }
   drop_idle_lights(lights);
-  if (m_settings.luminaire && distinct_spins(*m_settings.luminaire->profile).size() > 1 && !lights.empty()) {
+  if (m_settings.luminaire && m_settings.luminaire->profile && distinct_spins(*m_settings.luminaire->profile).size() > 1 && !lights.empty()) {
     // An asymmetric luminaire: each one's turn about its aim, then measured again.
     stage("aiming the luminaires");
     Stopwatch watch;
@@ -508,8 +508,8 @@ Lighting Solver::add_lights(const Target& target, const Lighting& given, SolveRe
   open_space_for(m_settings.spot_hints);
   require_admissible(m_settings.spot_hints, "spot hints");
   for (size_t j = 0; j < lights.size(); ++j)
-    if (lights[j].type == LightType::Luminaire)
-      throw InputError("lights to add to: light " + std::to_string(j) + " is a luminaire with a profile; the solve does not optimize luminaires yet");
+    if (lights[j].type == LightType::Luminaire || is_area(lights[j].type))
+      throw InputError("lights to add to: light " + std::to_string(j) + " is a luminaire or an area source; the solve optimizes those only as --luminaire or --area-light");
   ensure_cache(report);
   // ΔΨ = max(Ψ − I(L), 0): what the current lights leave to be lit.
   std::vector<Rgb> current = illumination(target, lights);
