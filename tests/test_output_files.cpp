@@ -173,7 +173,7 @@ TEST_CASE("a failed write is one error naming the file, and nothing under its na
   check_write_failed(r, "/dev/full", "No space left on device");
 }
 
-TEST_CASE("on a full disk solve -o, --report, target workplane -o and the glTF writers fail cleanly", "[output][cli]") {
+TEST_CASE("on a full disk solve -o, --report, target workplane -o, the glTF writers and EXR fail cleanly", "[output][cli]") {
   const auto dir = test::output_dir("output_full_disk");
   const auto target = dir / "target.ply";
   REQUIRE(test::run_hilight({"render", kRoom, "--lights", kRoomLights, "-o", target.string(), "--max-edge", "0.6", "--bounces", "0"})
@@ -199,7 +199,12 @@ TEST_CASE("on a full disk solve -o, --report, target workplane -o and the glTF w
   for (const std::string name : {"scene.glb", "scene.gltf"})
     check_write_failed(test::run_hilight({"export", kRoom, "--lights", kRoomLights, "-o", (full / name).string()}), full / name,
                        "No space left on device");
-  for (const std::string name : {"one.json", "report.json", "desks.json", "scene.glb", "scene.gltf"}) {
+  // The EXR error named the temporary file; it names the target.
+  const auto exr = test::run_hilight({"render", kRoom, "--lights", kRoomLights, "-o", (full / "image.exr").string(), "--bounces", "0",
+                                      "--width", "64", "--height", "48", "--max-edge", "0.6"});
+  check_write_failed(exr, full / "image.exr", "No space left on device");
+  CHECK_THAT(exr.err, !Contains(".tmp"));
+  for (const std::string name : {"one.json", "report.json", "desks.json", "scene.glb", "scene.gltf", "image.exr"}) {
     INFO(name);
     CHECK_FALSE(fs::exists(full / name));
   }
