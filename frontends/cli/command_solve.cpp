@@ -66,6 +66,33 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
 
 } // namespace
 
+namespace {
+
+/// `--area-light rectangle:WxH | disk:D | line:L`: a Lambertian source aimed
+/// straight down, its first side (or length) along +X.
+Light area_light_template(const std::string& spec) {
+  const size_t colon = spec.find(':');
+  const std::string shape = spec.substr(0, colon), sizes = colon == std::string::npos ? "" : spec.substr(colon + 1);
+  LightType type;
+  const bool known = light_type_from_string(shape, type) && is_area(type);
+  glm::vec2 size(0.f);
+  char* end = nullptr;
+  size[0] = std::strtof(sizes.c_str(), &end);
+  bool ok = known && end != sizes.c_str();
+  if (ok && type == LightType::Rectangle) {
+    ok = *end == 'x';
+    const char* second = end + 1;
+    if (ok) size[1] = std::strtof(second, &end), ok = end != second;
+  }
+  ok = ok && *end == '\0';
+  Light l = Light::area(known ? type : LightType::Rectangle, Vec3(0.f), {0.f, -1.f, 0.f}, {1.f, 0.f, 0.f}, size, Rgb(1.f));
+  if (!ok || !area_light_problem(l).empty())
+    throw InputError("--area-light " + spec + ": give rectangle:WxH, disk:D or line:L with positive sizes, e.g. rectangle:0.6x0.6");
+  return l;
+}
+
+} // namespace
+
 int run_solve(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Find the lights that produce a target illumination", "solve");
   std::string scene_path, target_path, output, report_path, initial_path, mode = "solve", hints_path, cache_dir;
@@ -103,6 +130,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--luminaire", luminaire_path,
                  "every light is this luminaire (IES LM-63 or EULUMDAT), aimed straight down: the solve finds how many, where, and their dimming");
   app.add_option("--luminaire-spin", luminaire_spin, "turn the luminaire's C0 plane about its aim, degrees")->check(CLI::Range(-360.0, 360.0));
+  std::string luminaire_size, area_light;
+  app.add_option("--luminaire-size", luminaire_size, "auto: the luminaire is its file's luminous opening (a rectangle, disk or line), integrated over it")
+      ->check(CLI::IsMember({"auto"}));
+  app.add_option("--area-light", area_light,
+                 "every light is this Lambertian source, aimed straight down: rectangle:WxH, disk:D or line:L (scene units; W and a line along +X)");
   std::string units_name = "radiometric", quantity_name = "luminance";
   app.add_option("--units", units_name,
                  "radiometric: lights JSON in W/sr, targets in W/(sr m2); photometric: candela, and targets in cd/m2 or lux (--target-quantity)")
@@ -179,6 +211,15 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     s.luminaire = std::move(luminaire);
   } else if (luminaire_spin != 0.f) {
     throw InputError("--luminaire-spin needs --luminaire");
+  }
+  if (!luminaire_size.empty()) {
+    if (!s.luminaire) throw InputError("--luminaire-size needs --luminaire");
+    if (!with_luminous_opening(*s.luminaire))
+      throw InputError(luminaire_path, "gives no luminous opening (its width and length are 0): --luminaire-size auto needs one");
+  }
+  if (!area_light.empty()) {
+    if (s.luminaire) throw InputError("--area-light and --luminaire exclude each other (--luminaire-size auto: the luminaire's own opening)");
+    s.luminaire = area_light_template(area_light);
   }
   if (is_criteria_target(target_path)) {
     if (mode != "solve") throw InputError("--mode " + mode + " works on painted targets, not on criteria (" + target_path + ")");
@@ -273,7 +314,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     }
     j["luminous_flux_lm"] = flux;
     j["total_luminous_flux_lm"] = total;
-    if (s.luminaire) {  // each light's share of the luminaire's rated output, and the power it draws
+    if (s.luminaire && s.luminaire->profile) {  // each light's share of the luminaire's rated output, and the power it draws
       nlohmann::json dimming = nlohmann::json::array();
       double watts = 0;
       for (const auto& l : lights) {
@@ -306,7 +347,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
                                  ? "all " + std::to_string(report.target_points) + " target points"
                                  : std::to_string(report.dbar_points) + " of " + std::to_string(report.target_points) + " target points";
     const auto spots = std::count_if(lights.begin(), lights.end(), [](const Light& l) { return l.type == LightType::Spot; });
-    const std::string of_them = s.luminaire ? " (" + std::filesystem::path(s.luminaire->profile_path).filename().string() + ")"
+    const std::string of_them = s.luminaire && s.luminaire->profile ? " (" + std::filesystem::path(s.luminaire->profile_path).filename().string() + ")"
+                                : s.luminaire ? std::string(" (") + to_string(s.luminaire->type) + ")"
                                 : spots     ? " (" + std::to_string(spots) + (spots == 1 ? " spot)" : " spots)")
                                             : "";
     std::fprintf(stderr, "hilight: %zu light%s%s, D̄ %.2f%% over %s (%zu samples), %.2f s -> %s\n", report.chosen,
@@ -318,7 +360,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   }
   if (s.luminaire)
     for (size_t j = 0; j < lights.size(); ++j)
-      if (lights[j].type == LightType::Luminaire && luminaire_dimming(lights[j]) > 1.0 + 1e-6)
+      if (lights[j].profile && luminaire_dimming(lights[j]) > 1.0 + 1e-6)
         std::fprintf(stderr, "hilight: warning: light %zu needs %.0f%% of the luminaire's rated output (more luminaires, or a brighter one)\n", j,
                      100.0 * luminaire_dimming(lights[j]));
   // No silent failure: a poor fit says so, whatever --quiet says, and

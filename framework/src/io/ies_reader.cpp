@@ -97,8 +97,11 @@ Photometry parse_ies(const std::string& text, const std::string& source) {
   const size_t nv = numbers.count("the number of vertical angles", 100000);
   const size_t nh = numbers.count("the number of horizontal angles", 100000);
   const double type = numbers.next("the photometric type");
-  numbers.next("the units type");
-  for (const char* d : {"the width", "the length", "the height"}) numbers.next(d);
+  const double units = numbers.next("the units type");
+  // The luminous opening: width along C90–C270, length along C0–C180, feet
+  // (units 1) or metres; both negative: round (LM-63-2002), diameter |width|.
+  const double width = numbers.next("the width"), length = numbers.next("the length");
+  numbers.next("the height");
   const double ballast = numbers.next("the ballast factor");
   const double ballast_lamp = numbers.next("the ballast-lamp factor (future use)");
   p.input_watts = std::max(0.0, numbers.next("the input watts"));
@@ -108,6 +111,12 @@ Photometry parse_ies(const std::string& text, const std::string& source) {
     throw InputError(source, "the candela multiplier and ballast factor must be positive, the lamp count not negative");
   if (nv * nh > 4000000) throw InputError(source, "too many angles (" + std::to_string(nv) + " × " + std::to_string(nh) + ")");
   p.type = type == 2 ? Photometry::Type::B : Photometry::Type::C;
+  const double metres = units == 1 ? 0.3048 : 1.0;
+  if (std::isfinite(width) && std::isfinite(length)) {
+    p.opening_round = width < 0 && length < 0;
+    p.opening_length = std::abs(length) * metres;
+    p.opening_width = std::abs(width) * metres;
+  }
   p.rated_lumens = lumens_per_lamp > 0 ? lamps * lumens_per_lamp : 0.0;  // −1: absolute photometry
   p.vertical.resize(nv);
   p.horizontal.resize(nh);

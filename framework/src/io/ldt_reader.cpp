@@ -67,7 +67,13 @@ Photometry parse_ldt(const std::string& text, const std::string& source) {
   const size_t ng = in.whole("the number of gamma angles Ng", 1, 3600);
   in.number("the distance between gamma angles Dg");
   for (const char* what : {"the measurement report", "the luminaire name", "the luminaire number", "the file name", "the date/user"}) in.text(what);
-  for (int k = 0; k < 9; ++k) in.number("a luminaire or luminous area dimension");
+  // Luminaire length, width, height; then the luminous area's length (or
+  // diameter) and width (0: round), mm; then its heights.
+  double dimension[9];
+  for (double& d : dimension) d = in.number("a luminaire or luminous area dimension");
+  p.opening_round = dimension[4] == 0 && dimension[3] > 0;
+  p.opening_length = std::abs(dimension[3]) * 1e-3;
+  p.opening_width = p.opening_round ? p.opening_length : std::abs(dimension[4]) * 1e-3;
   in.number("the downward flux fraction");
   in.number("the light output ratio");
   const double conversion = in.number("the conversion factor for luminous intensities");
