@@ -18,6 +18,13 @@ int parse_bounces(std::string_view text, const std::string& owner) {
 
 std::string bounces_text(int bounces) { return bounces == kAllBounces ? "all" : std::to_string(bounces); }
 
+std::string bounce_model(int bounces) {
+  if (bounces == kAllBounces) return "every diffuse bounce";
+  if (bounces == 0) return "direct light only";
+  if (bounces == 1) return "the first diffuse bounce";
+  return std::to_string(bounces) + " diffuse bounces";
+}
+
 int bounces_property(const Properties& props, int fallback, const std::string& owner) {
   return parse_bounces(props.get_string("bounces", bounces_text(fallback)), owner);
 }

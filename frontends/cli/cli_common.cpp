@@ -48,8 +48,13 @@ std::string RendererOptions::bounces_for(const Registry& registry) const {
   if (most == kAllBounces || (asked != kAllBounces && asked <= most)) return bounces;
   if (asked != kAllBounces)
     throw InputError("--bounces " + bounces + ": renderer " + name + " carries at most " + std::to_string(most) + " bounce(s)");
-  std::fprintf(stderr, "note: renderer %s carries at most %d bounce(s); the light of later bounces is left out\n", name.c_str(), most);
   return std::to_string(most);
+}
+
+void RendererOptions::note_bounces(const Registry& registry) const {
+  if (bounces_for(registry) == bounces) return;
+  std::fprintf(stderr, "note: renderer %s carries at most %s bounce(s); the light of later bounces is left out\n", name.c_str(),
+               bounces_for(registry).c_str());
 }
 
 std::vector<std::string> RendererOptions::assignments(const Registry* registry) const {
@@ -68,6 +73,7 @@ std::unique_ptr<Renderer> RendererOptions::create(const Registry& registry, std:
   const Properties props = Properties::from_assignments(assignments(&registry));
   auto renderer = registry.create_renderer(name, props);
   renderer->set_scene(std::move(scene));
+  note_bounces(registry);  // once the set-up has succeeded: bad input gets one line
   return renderer;
 }
 

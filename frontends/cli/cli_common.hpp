@@ -21,7 +21,7 @@ using hilight::parse_arguments;
 /// Renderer choice and its settings, as every rendering command takes them.
 struct RendererOptions {
   std::string name = PluginDefaults::renderer;
-  std::string bounces = "1";  ///< "all" or a count (hilight/bounces.hpp)
+  std::string bounces = "all";  ///< "all" or a count (hilight/bounces.hpp)
   int bounce_samples = 0;  ///< 0: the renderer's default
   std::vector<std::string> settings;  ///< --set key=value, passed through
   int threads = 0;
@@ -32,9 +32,11 @@ struct RendererOptions {
   /// --set's settings with --bounces and --bounce-samples (which win); with
   /// a registry, --bounces within what the renderer carries (bounces_for).
   std::vector<std::string> assignments(const Registry* registry = nullptr) const;
-  /// --bounces for the renderer: "all" lowered to RendererTraits::max_bounces
-  /// with a note on stderr; a count above it is an InputError.
+  /// --bounces for the renderer: "all" lowered to RendererTraits::max_bounces;
+  /// a count above it is an InputError.
   std::string bounces_for(const Registry& registry) const;
+  /// Says on stderr when bounces_for lowered "all".
+  void note_bounces(const Registry& registry) const;
   /// Creates and binds the renderer; InputError for unknown/unavailable ones.
   std::unique_ptr<Renderer> create(const Registry& registry, std::shared_ptr<const Scene> scene) const;
 };

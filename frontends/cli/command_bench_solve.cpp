@@ -67,9 +67,11 @@ double mean_position_error(const Lighting& truth, const Lighting& found) {
 /// Seconds of a solve that builds the light cache (the folder's light caches
 /// removed first: only those, since --cache-dir may name a folder with other things in it).
 /// The solve as `hilight solve` assembles it, its light cache kept in `cache_root`.
-SolveSpec bench_spec(const std::string& cache_root, const std::string& optimizer = PluginDefaults::optimizer) {
+/// `bounces`: as `hilight solve --bounces` takes it.
+SolveSpec bench_spec(const std::string& cache_root, const std::string& bounces, const std::string& optimizer = PluginDefaults::optimizer) {
   SolveSpec spec;
   spec.optimizer = optimizer;
+  spec.renderer_settings = {"bounces=" + bounces};
   spec.settings.cache_dir = cache_root;
   return spec;
 }
@@ -84,14 +86,14 @@ double cold_solve_seconds(const SolveSession& session, const Target& target, con
 /// A built scene (issue 10) with one seeded random configuration of `lights`
 /// lights: cold and warm solve, D̄, position error, the light cache's size.
 void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights, int repeat, const std::string& cache_root,
-                       Registry& registry) {
+                       const std::string& bounces, Registry& registry) {
   auto scene = std::make_shared<const Scene>(finish_scene(built.scene, {max_edge}));
   auto rays = RayScene::shared(scene);
   std::mt19937_64 rng(7);
   builders::RandomLightRules rules;
   rules.min_count = rules.max_count = lights;
   const Lighting truth = builders::random_lights(built, *rays, rng, rules);
-  SolveSession session(registry, bench_spec(cache_root), scene, rays);
+  SolveSession session(registry, bench_spec(cache_root, bounces), scene, rays);
   const std::vector<Rgb> values = session.reference().illuminate(SurfacePoints::from_vertices(*scene), truth);
   const Target target = bind_target("bench", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
   std::vector<double> cold, warm, dbar, pos_err;
@@ -111,7 +113,7 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
     pos_err.push_back(mean_position_error(truth, found) / scene->diagonal());
     found_count = found.size();
   }
-  nlohmann::json j = {{"figure", "solve_scene"}, {"scene", built.name}, {"vertices", scene->positions.size()},
+  nlohmann::json j = {{"figure", "solve_scene"}, {"scene", built.name}, {"bounces", bounces}, {"vertices", scene->positions.size()},
                             {"true_lights", truth.size()}, {"found_lights", found_count}, {"repeat", repeat},
                             {"dbar_median", median(dbar)}, {"position_error_over_diagonal_median", median(pos_err)},
                             {"cold_seconds_median", median(cold)}, {"warm_seconds_median", median(warm)},
@@ -136,6 +138,10 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
                  "folder for the light caches (default: a new temporary one, removed after); only its light cache files are removed");
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   bool no_cache_figure = false;
+  std::string bounces = "all";
+  app.add_option("--bounces", bounces, "diffuse bounces of the targets and the solve, as hilight solve takes them")
+      ->check(BounceCount)
+      ->capture_default_str();
   std::vector<std::string> scenes = {"room", "building", "product"};
   float building_edge = 0.22f;
   app.add_option("--scenes", scenes, "room (the furnished room, each optimizer), building (two storeys, 6 lights), product (3 lights outside it)")
@@ -148,8 +154,8 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   set_thread_limit(threads);
   const BenchCacheFolder cache_folder(cache_root);
   auto wants = [&](const char* s) { return std::find(scenes.begin(), scenes.end(), s) != scenes.end(); };
-  if (wants("building")) bench_built_scene(builders::two_storey_building(), building_edge, 6, repeat, cache_root, registry);
-  if (wants("product")) bench_built_scene(builders::product_on_turntable(), 0.f, 3, repeat, cache_root, registry);
+  if (wants("building")) bench_built_scene(builders::two_storey_building(), building_edge, 6, repeat, cache_root, bounces, registry);
+  if (wants("product")) bench_built_scene(builders::product_on_turntable(), 0.f, 3, repeat, cache_root, bounces, registry);
   if (!wants("room")) return 0;
 
   auto scene = std::make_shared<const Scene>(finish_scene(builders::furnished_room(), {max_edge}));
@@ -158,7 +164,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
                           Light::point({2.3f, 1.6f, 3.9f}, Rgb(1.6f, 1.7f, 2.f)), Light::point({4.8f, 2.2f, 3.8f}, Rgb(1.8f))};
   // The target comes from the solve's reference renderer, as `hilight
   // render` would make it; the solve evaluates with its fast twin.
-  std::vector<Rgb> values = SolveSession(registry, bench_spec(cache_root), scene, rays).reference().illuminate(SurfacePoints::from_vertices(*scene), truth);
+  std::vector<Rgb> values = SolveSession(registry, bench_spec(cache_root, bounces), scene, rays).reference().illuminate(SurfacePoints::from_vertices(*scene), truth);
   Target target = bind_target("bench", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
   // A small edit for fine-tune: 10% brighter on the floor's left half.
   Target edited = target;
@@ -166,7 +172,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
     if (edited.points.positions[i].y < 0.01f && edited.points.positions[i].x < 3.f) edited.value[i] *= 1.1f;
 
   for (const auto& name : optimizers) {
-    SolveSession session(registry, bench_spec(cache_root, name), scene, rays);
+    SolveSession session(registry, bench_spec(cache_root, bounces, name), scene, rays);
     std::vector<double> cold, warm, fine, dbar, pos_err;
     std::map<std::string, std::vector<double>> stages;
     size_t count = 0;
@@ -184,7 +190,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
       solver->fine_tune(edited, found, tune);
       fine.push_back(tune.seconds["total"]);
     }
-    nlohmann::json j = {{"figure", "solve"}, {"optimizer", name}, {"vertices", scene->positions.size()},
+    nlohmann::json j = {{"figure", "solve"}, {"optimizer", name}, {"bounces", bounces}, {"vertices", scene->positions.size()},
                         {"true_lights", truth.size()}, {"found_lights", count}, {"repeat", repeat},
                         {"dbar_median", median(dbar)}, {"position_error_over_diagonal_median", median(pos_err)},
                         {"cold_seconds_median", median(cold)}, {"warm_seconds_median", median(warm)},
@@ -195,7 +201,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   }
   // Does the light cache pay? The same solve with every φ from the renderer.
   if (!no_cache_figure) {
-    SolveSpec spec = bench_spec(cache_root, optimizers.front());
+    SolveSpec spec = bench_spec(cache_root, bounces, optimizers.front());
     spec.cache = PluginDefaults::no_cache;
     SolveReport report;
     Lighting found = SolveSession(registry, spec, scene, rays).make_solver()->solve(target, report);

@@ -20,7 +20,7 @@ namespace hilight::cli {
 int run_export(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Write the scene and its lights for another tool: POV-Ray 3.7 (.pov, following hilight's rendering model) or glTF 2.0 (.gltf/.glb)", "export");
   std::string scene_path, lights_path, output, camera_text;
-  std::string bounces = "1";
+  std::string bounces = "all";
   int width = 960, height = 720;
   bool vertex_colours = false;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();

@@ -58,7 +58,9 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
           {"seconds", r.seconds},
           {"length_unit", a.scene_options.unit.empty() ? "m" : a.scene_options.unit},
           {"units", a.units_name},
-          {"renderer", a.renderer.name}};
+          {"renderer", a.renderer.name},
+          {"bounces", a.renderer.bounces},
+          {"bounce_model", bounce_model(a.renderer.bounce_count())}};
 }
 
 } // namespace

@@ -19,6 +19,9 @@ constexpr int kMaxBounceCount = 1000;
 int parse_bounces(std::string_view text, const std::string& owner);
 /// The inverse: "all" or the count.
 std::string bounces_text(int bounces);
+/// In words, for reports: "every diffuse bounce", "the first diffuse bounce",
+/// "direct light only" or "N diffuse bounces".
+std::string bounce_model(int bounces);
 /// The "bounces" property of a renderer (`fallback` when unset).
 int bounces_property(const Properties& props, int fallback, const std::string& owner);
 
