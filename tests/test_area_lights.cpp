@@ -6,6 +6,7 @@
 #include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/scene_builders.hpp"
+#include "hilight/scene_origin.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
@@ -254,4 +255,17 @@ TEST_CASE("glTF: an area or line source goes out as a hemisphere spot with its s
     CHECK(back[i].size == lights[i].size);
     CHECK(glm::length(back[i].intensity - lights[i].intensity) < 1e-5f);
   }
+}
+
+TEST_CASE("an area source's size is a length in the scene's unit, like its position", "[area][units]") {
+  SceneFrame mm;
+  mm.scale = 0.001;
+  mm.unit = "mm";
+  const Lighting in = {Light::area(LightType::Rectangle, {1000.f, 2500.f, 0.f}, {0.f, -1.f, 0.f}, {1.f, 0.f, 0.f}, {600.f, 300.f}, Rgb(1.f))};
+  const Lighting local = lights_to_local(in, mm);
+  CHECK(local[0].size[0] == Approx(0.6f));
+  CHECK(local[0].size[1] == Approx(0.3f));
+  const Lighting back = lights_to_world(local, mm);
+  CHECK(back[0].size[0] == Approx(600.f));
+  CHECK(back[0].position.y == Approx(2500.f));
 }

@@ -30,12 +30,18 @@ double metres_per_unit(const std::string& unit) {
 }
 
 Lighting lights_to_local(Lighting lights, const SceneFrame& frame) {
-  for (auto& l : lights) l.position = to_local(l.position, frame);
+  for (auto& l : lights) {
+    l.position = to_local(l.position, frame);
+    l.size *= float(frame.scale);  // an area source's size is a length in the file's unit
+  }
   return lights;
 }
 
 Lighting lights_to_world(Lighting lights, const SceneFrame& frame) {
-  for (auto& l : lights) l.position = Vec3(to_world(l.position, frame));
+  for (auto& l : lights) {
+    l.position = Vec3(to_world(l.position, frame));
+    l.size /= float(frame.scale);
+  }
   return lights;
 }
 
