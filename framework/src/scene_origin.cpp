@@ -3,7 +3,9 @@
 
 #include "hilight/error.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace hilight {
 
@@ -41,6 +43,22 @@ Lighting lights_to_world(Lighting lights, const SceneFrame& frame) {
   for (auto& l : lights) {
     l.position = Vec3(to_world(l.position, frame));
     l.size /= float(frame.scale);
+  }
+  return lights;
+}
+
+Lighting lights_from_file(Lighting lights, const Scene& scene, const std::string& file) {
+  lights = lights_to_local(std::move(lights), scene.frame);
+  const glm::dvec3 centre = 0.5 * (glm::dvec3(scene.bounds.lo) + glm::dvec3(scene.bounds.hi));
+  const double reach = 1e6 * std::max(double(scene.diagonal()), 1.0);  // metres (local)
+  for (size_t j = 0; j < lights.size(); ++j) {
+    const double distance = glm::length(glm::dvec3(lights[j].position) - centre);
+    if (distance <= reach) continue;  // NaN, infinity (from a far world position) and too far fall through
+    const glm::dvec3 world = to_world(lights[j].position, scene.frame);
+    char text[300];
+    std::snprintf(text, sizeof(text), "light %zu at (%g, %g, %g) is %.3g m from the scene, farther than a million times its size (%.3g m): beyond what the renderers trace",
+                  j, world.x, world.y, world.z, distance, double(scene.diagonal()));
+    throw InputError(file, text);
   }
   return lights;
 }

@@ -48,17 +48,19 @@ Target bind_target(const std::string& source, const std::vector<Vec3>& positions
                    const std::vector<Vec3>& normals) {
   const size_t n = positions.size();
   if (n == 0) throw InputError(source, "the target has no points");
-  size_t bad_position = 0, bad_value = 0, negative = 0, bad_weight = 0;
+  size_t bad_position = 0, bad_value = 0, negative = 0, bad_weight = 0, huge = 0;
   for (size_t i = 0; i < n; ++i) {
     bad_position += !is_finite(positions[i]);
     bad_value += !is_finite(values[i]);
     negative += is_finite(values[i]) && glm::any(glm::lessThan(values[i], Rgb(0.f)));
+    huge += is_finite(values[i]) && glm::any(glm::greaterThan(values[i], Rgb(kLargestTargetValue)));
     bad_weight += !(std::isfinite(weights[i]) && weights[i] >= 0.f);
   }
   auto count_of = [&](size_t k) { return std::to_string(k) + " of " + std::to_string(n) + " points"; };
   if (bad_position) throw InputError(source, count_of(bad_position) + " have NaN or infinite coordinates");
   if (bad_value) throw InputError(source, count_of(bad_value) + " have NaN or infinite colours");
   if (negative) throw InputError(source, count_of(negative) + " have negative colours");
+  if (huge) throw InputError(source, count_of(huge) + " have colours above 1e12, beyond any real light (values near float's limit overflow the solve)");
   if (bad_weight) throw InputError(source, count_of(bad_weight) + " have a negative or non-finite weight");
 
   const std::vector<int32_t> vertex = match_vertices(scene, positions, normals);

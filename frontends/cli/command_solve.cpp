@@ -258,7 +258,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, scene_options));
   auto rays = RayScene::shared(scene);
   // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).
-  initial = lights_to_local(std::move(initial), scene->frame);
+  initial = lights_from_file(std::move(initial), *scene, initial_path);
   s.spot_hints = lights_to_local(std::move(s.spot_hints), scene->frame);
   s.placement = rules_to_local(std::move(s.placement), scene->frame);
   // --area-light's size is in the scene's unit (a file's opening is in metres already).

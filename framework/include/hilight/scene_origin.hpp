@@ -35,6 +35,14 @@ inline float length_to_local(double length, const SceneFrame& f) { return float(
 Lighting lights_to_local(Lighting lights, const SceneFrame& frame);
 Lighting lights_to_world(Lighting lights, const SceneFrame& frame);
 
+/// Lights read from `file` for `scene`, moved in, each checked to lie within
+/// reach: no farther from the scene than a million times its size (a light
+/// at 10¹⁹ aborted Embree; beyond that reach a light adds nothing a float
+/// can hold). InputError naming the file and the light otherwise. Every
+/// command that reads lights for a scene calls this (render, solve
+/// --initial); the solve then holds them to its own light space.
+Lighting lights_from_file(Lighting lights, const Scene& scene, const std::string& file);
+
 /// Placement rules given in the file's coordinates (boxes, heights, the
 /// ceiling offset) in hilight's.
 PlacementRules rules_to_local(PlacementRules rules, const SceneFrame& frame);

@@ -36,6 +36,10 @@ struct Target {
 /// Fraction of the scene diagonal within which a target point must lie of the
 /// surface to be bound to it.
 constexpr float kTargetSurfaceTolerance = 1e-3f;
+/// The largest target value taken (issue 35): a thousand times the sun's
+/// disk in cd/m². Near float's limit (3e38) the solve's sums overflow and
+/// its lights came out NaN; bind_target refuses such targets.
+constexpr float kLargestTargetValue = 1e12f;
 
 /// Reads a target PLY (red green blue as float = linear, or uchar = sRGB;
 /// optional float weight; optional nx ny nz) and binds each point: to the

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace hilight {
@@ -131,6 +132,11 @@ Photometry parse_ies(const std::string& text, const std::string& source) {
     const double c = numbers.next("candela value " + std::to_string(k + 1) + " of " + std::to_string(p.candela.size()));
     if (c < 0) throw InputError(source, "candela value " + std::to_string(k + 1) + " is negative (" + std::to_string(c) + ")");
     p.candela[k] = c * scale;
+    if (!(p.candela[k] <= kBrightestCandela)) {
+      char text[160];
+      std::snprintf(text, sizeof(text), "candela value %zu comes to %.3g cd, beyond any luminaire (at most 1e10 cd)", k + 1, p.candela[k]);
+      throw InputError(source, text);
+    }
   }
   if (numbers.more()) throw InputError(source, "more numbers than the angle counts say (wrong counts?)");
   const double first = p.horizontal.front(), last = p.horizontal.back();

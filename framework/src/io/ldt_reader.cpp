@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -123,6 +124,11 @@ Photometry parse_ldt(const std::string& text, const std::string& source) {
     const double v = in.number("luminous intensity " + std::to_string(k + 1) + " of " + std::to_string(p.candela.size()));
     if (v < 0) throw InputError(source, "luminous intensity " + std::to_string(k + 1) + " is negative");
     p.candela[k] = v * scale;
+    if (!(p.candela[k] <= kBrightestCandela)) {
+      char text[160];
+      std::snprintf(text, sizeof(text), "luminous intensity %zu comes to %.3g cd, beyond any luminaire (at most 1e10 cd)", k + 1, p.candela[k]);
+      throw InputError(source, text);
+    }
   }
   // Isym 0 planes cover [0, 360): close the circle for interpolation.
   if (isym == 0 && p.horizontal.back() < 360.0) {

@@ -6,7 +6,9 @@
 #include "hilight/io/gltf.hpp"
 #include "hilight/io/photometry_io.hpp"
 
+#include <cmath>
 #include <fstream>
+#include <stdexcept>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -186,7 +188,13 @@ Lighting read_lights_json(const std::filesystem::path& path) {
 
 std::string lights_to_json(const Lighting& lights, const std::string& length_unit) {
   json arr = json::array();
-  for (const auto& l : lights) {
+  for (size_t j = 0; j < lights.size(); ++j) {
+    const Light& l = lights[j];
+    // JSON has no NaN: nlohmann writes null, which no reader takes back
+    // (issue 35). Input checks keep such numbers out: one here is a bug.
+    if (!is_finite(l.position) || !is_finite(l.intensity) || !is_finite(l.direction) || !std::isfinite(l.cutoff_deg) ||
+        !std::isfinite(l.falloff_deg) || !std::isfinite(l.spin_deg))
+      throw std::logic_error("light " + std::to_string(j) + " to be written has a NaN or infinite value");
     json o;
     o["type"] = to_string(l.type);
     o["position"] = {l.position.x, l.position.y, l.position.z};

@@ -15,6 +15,11 @@
 
 namespace hilight {
 
+/// The brightest luminaire taken, in candela: searchlights reach 10⁹. A
+/// file beyond it (3e38 cd was taken, and the solve then asked for "a
+/// brighter luminaire") is refused (issue 35).
+constexpr double kBrightestCandela = 1e10;
+
 /// By extension: .ies or .ldt (any case).
 Photometry read_photometry(const std::filesystem::path& path);
 Photometry parse_ies(const std::string& text, const std::string& source);
