@@ -269,3 +269,21 @@ TEST_CASE("an area source's size is a length in the scene's unit, like its posit
   CHECK(back[0].size[0] == Approx(600.f));
   CHECK(back[0].position.y == Approx(2500.f));
 }
+
+TEST_CASE("hilight render refuses a malformed area source in one line, exit 2, and writes nothing", "[area][bad-input][cli]") {
+  const auto dir = test::output_dir("area_lights_bad_cli");
+  const std::string scene = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"("size":[0.6,0.6],"direction":[0,-1,0],"up":[0,1,0])", "\"up\" must not be parallel"},
+      {R"("size":[-0.6,0.6],"direction":[0,-1,0],"up":[1,0,0])", "\"size\" must be positive"},
+      {R"("size":[0.6,0.6],"direction":[0,-0.5,0],"up":[1,0,0])", "\"direction\" must be a unit vector"}};
+  for (const auto& [fields, mention] : cases) {
+    test::write_text(dir / "bad.json", R"({"lights":[{"type":"point","position":[1,2,1],"intensity":[1,1,1]},{"type":"rectangle","position":[3,2.5,2],"intensity":[1,1,1],)" + fields + "}]}");
+    const auto r = test::run_hilight({"render", scene, "--lights", (dir / "bad.json").string(), "-o", (dir / "out.ply").string()});
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(test::line_count(r.err) == 1);
+    CHECK(r.err.find((dir / "bad.json").string() + ": light 1: " + mention) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / "out.ply"));
+  }
+}
