@@ -102,6 +102,19 @@ RunResult run_hilight(const std::vector<std::string>& args, unsigned long long a
 
 namespace {
 
+bool g_cli_own_bounces = false;
+
+/// `args` with --bounces 1 for render, solve and export when the test does
+/// not say (support.hpp, CliOwnBounces).
+std::vector<std::string> with_suite_bounces(const std::vector<std::string>& args) {
+  if (g_cli_own_bounces || args.empty() || (args[0] != "render" && args[0] != "solve" && args[0] != "export")) return args;
+  for (const auto& a : args)
+    if (a == "--bounces" || a.rfind("--bounces=", 0) == 0 || a == "--help" || a == "-h") return args;
+  std::vector<std::string> out = args;
+  out.insert(out.end(), {"--bounces", "1"});
+  return out;
+}
+
 RunResult spawn_hilight(const std::vector<std::string>& args, const Environment& env, unsigned long long address_space,
                         double interrupt_after, int interrupt_signal) {
   // Output goes through files, not pipes, so large outputs cannot deadlock.
@@ -120,6 +133,7 @@ RunResult spawn_hilight(const std::vector<std::string>& args, const Environment&
   std::vector<char*> envp;
   for (auto& entry : environment) envp.push_back(entry.data());
   envp.push_back(nullptr);
+  std::vector<std::string> copy = with_suite_bounces(args);  // before fork: the child allocates nothing
   pid_t pid = ::fork();
   if (pid == 0) {
     if (address_space) {
@@ -135,7 +149,6 @@ RunResult spawn_hilight(const std::vector<std::string>& args, const Environment&
     std::vector<char*> argv;
     std::string bin = HILIGHT_BINARY;
     argv.push_back(bin.data());
-    std::vector<std::string> copy = args;
     for (auto& a : copy) argv.push_back(a.data());
     argv.push_back(nullptr);
     ::execve(bin.c_str(), argv.data(), envp.data());
@@ -170,6 +183,9 @@ RunResult run_hilight(const std::vector<std::string>& args, const Environment& e
 RunResult run_hilight_interrupted(const std::vector<std::string>& args, double seconds, int signal) {
   return spawn_hilight(args, {}, 0, seconds, signal);
 }
+
+CliOwnBounces::CliOwnBounces() { g_cli_own_bounces = true; }
+CliOwnBounces::~CliOwnBounces() { g_cli_own_bounces = false; }
 
 fs::path output_dir(const std::string& test_name) {
   fs::path dir = fs::path(HILIGHT_TEST_OUTPUT_DIR) / test_name;

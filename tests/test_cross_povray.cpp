@@ -208,7 +208,8 @@ TEST_CASE("a POV-Ray target solved with Embree gives back the known lights", "[p
   obj.close();
   mtl.close();
   auto r = test::run_hilight({"solve", (dir / "scene.obj").string(), "--target", (dir / "target.ply").string(), "-o",
-                              (dir / "found.json").string(), "--max-edge", "0.25", "--cache-dir", (dir / "cache").string(), "-q"});
+                              (dir / "found.json").string(), "--max-edge", "0.25", "--cache-dir", (dir / "cache").string(), "-q",
+                              "--bounces", "1"});  // the target's bounce model (POV-Ray's first bounce)
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   Lighting found = read_lights_json(dir / "found.json");
