@@ -3,9 +3,13 @@
 #include "hilight/own_frame.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 namespace hilight {
 
@@ -87,13 +91,45 @@ struct Facing {
   double total = 0.0, square = 0.0;
 };
 
+/// Triangles covered back to back by another (the same corners, wound the
+/// other way): a two-sided sheet, which faces neither way. Counted in the
+/// lean, a flipped copy of half a floor's quad made it face "both ways", and
+/// the light bounds reached only half as high (issue 35, item 11).
+std::vector<bool> back_to_back(const Scene& scene) {
+  using Corners = std::array<float, 9>;
+  std::vector<std::pair<Corners, uint32_t>> keyed(scene.triangles.size());
+  for (size_t t = 0; t < scene.triangles.size(); ++t) {
+    std::array<Vec3, 3> c;
+    for (int k = 0; k < 3; ++k) c[k] = scene.positions[scene.triangles[t][k]];
+    std::sort(c.begin(), c.end(), [](const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+    keyed[t] = {{c[0].x, c[0].y, c[0].z, c[1].x, c[1].y, c[1].z, c[2].x, c[2].y, c[2].z}, uint32_t(t)};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<bool> paired(scene.triangles.size(), false);
+  auto normal = [&](uint32_t t) {
+    const auto& tri = scene.triangles[t];
+    return glm::cross(scene.positions[tri[1]] - scene.positions[tri[0]], scene.positions[tri[2]] - scene.positions[tri[0]]);
+  };
+  for (size_t i = 0, j = 0; i < keyed.size(); i = j) {
+    for (j = i + 1; j < keyed.size() && keyed[j].first == keyed[i].first;) ++j;
+    bool both_ways = false;  // one pass: a group is a handful, but a crafted file may pile up thousands
+    for (size_t b = i + 1; b < j && !both_ways; ++b) both_ways = glm::dot(normal(keyed[i].second), normal(keyed[b].second)) < 0.f;
+    for (size_t b = i; b < j && both_ways; ++b) paired[keyed[b].second] = true;
+  }
+  return paired;
+}
+
 Facing facing_in(const Scene& scene, const glm::mat3& to_frame) {
   Facing f;
-  for (const auto& tri : scene.triangles) {
+  const std::vector<bool> two_sided = back_to_back(scene);
+  for (size_t t = 0; t < scene.triangles.size(); ++t) {
+    const auto& tri = scene.triangles[t];
     const Vec3& a = scene.positions[tri[0]];
     const Vec3 n = to_frame * glm::cross(scene.positions[tri[1]] - a, scene.positions[tri[2]] - a);  // length: twice the area
-    f.facing += n;
-    f.area += glm::abs(n);
+    if (!two_sided[t]) {  // the lean: which way the surface faces
+      f.facing += n;
+      f.area += glm::abs(n);
+    }
     const float length = glm::length(n);
     f.total += double(length);
     if (std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)}) >= 0.999f * length) f.square += double(length);
