@@ -334,6 +334,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       j["electrical_power_w"] = s.luminaire->profile->input_watts > 0 ? nlohmann::json(watts) : nlohmann::json(nullptr);
     }
     j["units"] = units_name;
+    if (s.fixed_count > 0) j["lights_asked"] = s.fixed_count;  // "lights" (report.chosen) may be fewer
     std::string text = j.dump(2) + "\n";
     write_atomically(report_path, text);
   }
@@ -370,6 +371,13 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       if (lights[j].profile && luminaire_dimming(lights[j]) > 1.0 + 1e-6)
         std::fprintf(stderr, "hilight: warning: light %zu needs %.0f%% of the luminaire's rated output (more luminaires, or a brighter one)\n", j,
                      100.0 * luminaire_dimming(lights[j]));
+  // A count the solve could not reach is said, and why (issue 35): no free
+  // place was left where one more light changes the fit.
+  if (s.fixed_count > 0 && report.chosen < s.fixed_count)
+    std::fprintf(stderr,
+                 "hilight: warning: --lights %zu: the solve placed %zu: no place was left in the scene where one more light "
+                 "changes the fit (D̄ %.2f%%)\n",
+                 s.fixed_count, report.chosen, 100.0 * report.dbar);
   // No silent failure: a poor fit says so, whatever --quiet says, and
   // --max-dbar makes it an error (after the files are written).
   if (report.dbar > kPoorFit && report.unreachable >= 0.1)
