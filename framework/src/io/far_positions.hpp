@@ -157,10 +157,8 @@ inline Shifted read(const std::filesystem::path& path) {
   if (ext == ".obj" ? !obj_layout(in, layout) : !ply_layout(in, layout, out.precision)) return out;
   // The positions in double, and their bounds.
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
-  std::vector<std::vector<std::string>> split(layout.vertex_lines.size());
   for (size_t k = 0; k < layout.vertex_lines.size(); ++k) {
-    split[k] = tokens(layout.lines[layout.vertex_lines[k]]);
-    const auto& t = split[k];
+    const auto t = tokens(layout.lines[layout.vertex_lines[k]]);  // not kept: most scenes are near home
     glm::dvec3 p;
     if (std::max({layout.x, layout.y, layout.z}) >= t.size() || !to_double(t[layout.x], p.x) || !to_double(t[layout.y], p.y) ||
         !to_double(t[layout.z], p.z))
@@ -175,7 +173,7 @@ inline Shifted read(const std::filesystem::path& path) {
   if (out.origin == glm::dvec3(0.0)) return out;
   // The file again, each position minus the origin, in full.
   for (size_t k = 0; k < layout.vertex_lines.size(); ++k) {
-    auto& t = split[k];
+    auto t = tokens(layout.lines[layout.vertex_lines[k]]);
     for (int axis = 0; axis < 3; ++axis) {
       const size_t i = axis == 0 ? layout.x : axis == 1 ? layout.y : layout.z;
       double v = 0;
