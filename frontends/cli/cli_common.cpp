@@ -20,16 +20,7 @@ const CLI::Validator FiniteNonNegative(
     },
     "NUMBER >= 0");
 
-const CLI::Validator BounceCount(
-    [](std::string& text) -> std::string {
-      try {
-        parse_bounces(text, "--bounces");
-      } catch (const InputError& e) {
-        return e.what();
-      }
-      return {};
-    },
-    "all|0..1000");
+const CLI::Validator BounceCount = bounce_count_validator();
 
 void RendererOptions::add_to(CLI::App& app) {
   app.add_option("--renderer", name, "renderer plugin (hilight plugins lists them)")->capture_default_str();

@@ -1,6 +1,7 @@
 #pragma once
 /// Argument parsing shared by the frontend modules that use CLI11 (the CLI's
 /// commands and `hilight paint`): one behaviour for --help and bad arguments.
+#include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
 
 #include <CLI/CLI.hpp>
@@ -25,6 +26,20 @@ inline std::optional<int> parse_arguments(CLI::App& app, const std::vector<std::
     throw InputError(app.get_name() + ": " + e.what());
   }
   return std::nullopt;
+}
+
+/// CLI11 validator of --bounces: "all" or a count 0..1000 (hilight/bounces.hpp).
+inline CLI::Validator bounce_count_validator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        try {
+          parse_bounces(text, "--bounces");
+        } catch (const InputError& e) {
+          return e.what();
+        }
+        return {};
+      },
+      "all|0..1000");
 }
 
 } // namespace hilight

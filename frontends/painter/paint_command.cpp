@@ -4,7 +4,6 @@
 
 #include "cli_arguments.hpp"
 
-#include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/io/atomic_file.hpp"
@@ -56,16 +55,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--lights", lights, "lights JSON or glTF (KHR_lights_punctual) to start from");
   app.add_option("--renderer", o.job.renderer, "renderer plugin for the view and the solve")->capture_default_str();
   app.add_option("--bounces", bounces, "diffuse bounces: all (every bounce), 0 (direct light only), 1, or a count up to 1000")
-      ->check(CLI::Validator(
-          [](std::string& text) -> std::string {
-            try {
-              parse_bounces(text, "--bounces");
-            } catch (const InputError& e) {
-              return e.what();
-            }
-            return {};
-          },
-          "all|0..1000"))
+      ->check(bounce_count_validator())
       ->capture_default_str();
   app.add_option("--bounce-samples", bounce_samples, "gather rays per point for the bounce (renderer default if 0)")
       ->check(CLI::Range(0, 4096));
