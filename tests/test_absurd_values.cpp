@@ -50,7 +50,7 @@ TEST_CASE("render refuses a light beyond the renderers' reach, naming the file a
             .exit_code == 0);
 }
 
-TEST_CASE("a target near float's limit is refused in one line; nothing is written", "[solve][target][bad-input]") {
+TEST_CASE("a target near float's limit is refused in one line, and nothing is written", "[solve][target][bad-input]") {
   const fs::path dir = test::output_dir("target_near_float_limit");
   REQUIRE(test::run_hilight({"render", kRoom, "--lights", kRoomLights, "-o", (dir / "target.ply").string(), "--bounces", "0"}).exit_code == 0);
   const hilight::PlyVertices ply = hilight::read_ply_vertices(dir / "target.ply");

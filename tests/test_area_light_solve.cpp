@@ -64,7 +64,7 @@ TEST_CASE("solve --area-light line finds a strip's place and intensity", "[area]
   check_fixed_point(found, LightType::Line, {3.5f, 2.5f, 3.f}, 3.f);
 }
 
-TEST_CASE("--luminaire-size auto takes the luminous opening from the IES file", "[area][photometry]") {
+TEST_CASE("the --luminaire-size auto option takes the luminous opening from the IES file", "[area][photometry]") {
   const auto dir = test::output_dir("area_light_opening");
   // A Lambertian panel file: 0.6 m (length, C0–C180) × 0.3 m (width), metres (units 2).
   std::string text = test::ies_text(test::angles(0, 90, 5), test::angles(0, 0, 1),

@@ -70,7 +70,7 @@ TEST_CASE("a renderer that carries one bounce lowers 'all' with a note and refus
   CHECK_FALSE(std::filesystem::exists(dir / "two.ply"));
 }
 
-TEST_CASE("--bounces outside all and 0..1000 is refused in one line", "[bounce][cli][bad-input]") {
+TEST_CASE("a --bounces outside all and 0..1000 is refused in one line", "[bounce][cli][bad-input]") {
   auto dir = test::output_dir("every_bounce_bad");
   for (const char* bad : {"-1", "1001", "some", "2.5", ""}) {
     auto r = test::run_hilight({"render", kRoom, "--lights", kLights, "-o", (dir / "x.ply").string(), "--bounces", bad});
