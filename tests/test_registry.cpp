@@ -73,6 +73,9 @@ TEST_CASE("unknown renderers and unread options are input errors", "[plugins]") 
   CHECK_THROWS_WITH(reg.create_renderer("nosuch", {}), Catch::Contains("available: embree"));
   CHECK_THROWS_WITH(reg.create_renderer("embree", Properties::from_assignments({"bounce_sampels=4"})),
                     Catch::Contains("unknown option 'bounce_sampels'"));
-  CHECK_THROWS_WITH(reg.create_renderer("embree", Properties::from_assignments({"bounces=2"})), Catch::Contains("bounces"));
+  // Two bounces are a valid count now (every bounce, issue 32); what is not a count is refused.
+  CHECK_NOTHROW(reg.create_renderer("embree", Properties::from_assignments({"bounces=2"})));
+  CHECK_THROWS_WITH(reg.create_renderer("embree", Properties::from_assignments({"bounces=1001"})), Catch::Contains("bounces"));
+  CHECK_THROWS_WITH(reg.create_renderer("embree", Properties::from_assignments({"bounces=most"})), Catch::Contains("bounces"));
   CHECK_THROWS_AS(Properties::from_assignments({"novalue"}), InputError);
 }
