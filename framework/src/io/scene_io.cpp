@@ -144,6 +144,10 @@ void warn_rounded(const std::string& file, const Bounds& world, const SceneFrame
   double largest = 0;
   for (int axis = 0; axis < 3; ++axis) largest = std::max({largest, std::abs(double(world.lo[axis])), std::abs(double(world.hi[axis]))});
   const double error_mm = far_positions::float_rounding(largest) * frame.scale * 1000.0;
+  // Only a rounding that matters against the scene's own size (its ε is 10⁻⁵
+  // of it) is worth a line; a scene a metre off, or one that is not finite, is not.
+  const double size_mm = double(glm::length(world.hi - world.lo)) * frame.scale * 1000.0;
+  if (!(error_mm > 1e-6 * size_mm)) return;
   std::fprintf(stderr,
                "hilight: warning: %s: its positions were read in single precision (assimp) %.3g m from the origin: "
                "rounded by up to %.2g mm before the scene was moved home (OBJ and ASCII PLY are read in full)\n",
