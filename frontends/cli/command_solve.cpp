@@ -275,9 +275,9 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   s.cache_cap_bytes = default_cache_cap_bytes();
 
   SolveSession session(registry, spec, scene, rays);
+  ropts.note_bounces(registry);
   const auto solver_owned = session.make_solver([&](const std::string& stage) {
     if (progress) std::fprintf(stderr, "hilight: %s...\n", stage.c_str());
-  ropts.note_bounces(registry);
   });
   Solver& solver = *solver_owned;
   SolveReport report;
@@ -308,12 +308,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   }
   if (!report_path.empty()) {
     nlohmann::json j = report_json(report, spec.renderer, spec.optimizer, spec.sampler, mode);
-    // Each light's luminous flux (lm) and the total: what a lighting designer budgets.
-    nlohmann::json flux = nlohmann::json::array();
     // Which light the fit counted: lux from one bounce and from every one differ by up to 2x.
     const int bounces = bounces_property(Properties::from_assignments(spec.renderer_settings), 1, "--bounces");
     j["bounces"] = bounces_text(bounces);
     j["bounce_model"] = bounce_model(bounces);
+    // Each light's luminous flux (lm) and the total: what a lighting designer budgets.
+    nlohmann::json flux = nlohmann::json::array();
     double total = 0;
     for (const auto& l : lights) {
       flux.push_back(luminous_flux(l));
