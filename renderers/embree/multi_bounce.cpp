@@ -96,7 +96,6 @@ std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, si
          next, active);
     std::swap(current, next);
   }
-  m_last_steps = steps;
   return sum;
 }
 

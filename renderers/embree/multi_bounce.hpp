@@ -36,9 +36,6 @@ public:
   /// result holds, per light, 2 RGB values a vertex.
   std::vector<Rgb> bounced_field(const std::vector<float>& direct, size_t light_count) const;
 
-  /// Steps the last bounced_field took (the most over its lights).
-  int last_steps() const { return m_last_steps; }
-
   static constexpr int kMaxSteps = 200;
   static constexpr double kNegligible = 1e-5;  ///< a step this small of the sum ends the series
   static constexpr double kSteadyRatio = 2e-3; ///< ratios of successive steps this close: the geometric rest is added
@@ -47,7 +44,6 @@ private:
   const RayScene& m_es;
   BounceGather m_gather;  ///< over the scene's vertices
   int m_bounces;
-  mutable int m_last_steps = 0;
 };
 
 } // namespace hilight::embree
