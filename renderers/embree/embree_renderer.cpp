@@ -46,7 +46,7 @@ std::shared_ptr<const std::vector<ShadingPoint>> EmbreeRenderer::shading_points(
 }
 
 const MultiBounce* EmbreeRenderer::multi_bounce() {
-  if (m_settings.bounces == 0 || m_settings.bounces == 1) return nullptr;
+  if (!m_settings.further_bounces()) return nullptr;
   std::call_once(m_multi_once, [&] {
     m_multi = std::make_unique<MultiBounce>(*m_embree, m_vertex_shading, m_settings.transport_samples, m_settings.seed,
                                             m_settings.bounces);
@@ -69,7 +69,7 @@ std::vector<Rgb> EmbreeRenderer::bounced_fields(std::span<const PreparedLight> l
 
 std::string EmbreeRenderer::settings_key() const {
   std::string further;  // keys of a first-bounce renderer stay as they were (caches on disk keep)
-  if (m_settings.bounces != 0 && m_settings.bounces != 1)
+  if (m_settings.further_bounces())
     further = "/transport_samples=" + std::to_string(m_settings.transport_samples);
   return "embree/bounces=" + bounces_text(m_settings.bounces) + further + "/samples=" + std::to_string(m_settings.bounce_samples) +
          "/seed=" + std::to_string(m_settings.seed) + "/vertex_bounce=" + std::to_string(m_settings.vertex_interpolated_bounce) +
@@ -114,7 +114,7 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
   // Each light's bounced field takes ~80 bytes a scene vertex while it is
   // iterated: lights go in groups that keep that under 512 MB.
   size_t group = lights.size();
-  if (m_settings.bounces != 0 && m_settings.bounces != 1 && transport != Transport::DirectOnly)
+  if (m_settings.further_bounces() && transport != Transport::DirectOnly)
     group = std::max<size_t>(1, size_t(512e6 / (80.0 * double(std::max<size_t>(1, m_scene->positions.size())))));
   for (size_t j0 = 0; j0 < lights.size(); j0 += group)
     for_each_response_group(points, lights.subspan(j0, std::min(group, lights.size() - j0)), transport,

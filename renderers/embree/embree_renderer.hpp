@@ -24,6 +24,8 @@ struct EmbreeSettings {
   /// per scene vertex and light: much faster for many points, smooths shadow
   /// edges within a triangle).
   bool vertex_interpolated_bounce = false;
+  /// Bounces after the first: the vertex transport (multi_bounce.hpp) is needed.
+  bool further_bounces() const { return bounces != 0 && bounces != 1; }
 };
 
 class EmbreeRenderer final : public Renderer {
