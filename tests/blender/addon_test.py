@@ -1,0 +1,418 @@
+# The Blender add-on (frontends/blender, issue 37) as a user meets it, headless
+# in Blender 3.4: installed from its zip into a fresh user folder, enabled,
+# and driven through its own operators and its modal step (runner.Run.handle,
+# what the Solve button's timer calls), running the real hilight.
+#
+#   blender -b --factory-startup --python-exit-code 1 --python tests/blender/addon_test.py -- \
+#     --zip hilight-blender-addon.zip --hilight build/bin/hilight --case solve|cycles|numpy --work DIR
+#
+# solve:  a room painted (a colour attribute) with hilight's render of seeded
+#         random point lights; Solve finds them (place within 1 cm, intensity
+#         within 1%); a light moved 15 cm comes back with Fine-tune; a light
+#         deleted comes back with Add light; Esc stops hilight; a missing
+#         executable and an unpainted scene fail in one line with the reason.
+# cycles: the add-on's point, spot and area lights rendered by Cycles (every
+#         diffuse bounce) against hilight's render of the same lights file.
+# numpy:  enabling the add-on lets Blender 3.4's glTF importer read hilight's
+#         glTF with Debian's numpy 1.24 (numpy.bool removed).
+import argparse
+import json
+import math
+import os
+import random
+import struct
+import subprocess
+import sys
+import time
+
+import addon_utils
+import bmesh
+import bpy
+import numpy
+from mathutils import Matrix, Vector, kdtree
+
+parser = argparse.ArgumentParser(prog="addon_test.py")
+parser.add_argument("--zip", required=True)
+parser.add_argument("--hilight", required=True)
+parser.add_argument("--case", required=True, choices=["solve", "cycles", "numpy"])
+parser.add_argument("--work", required=True)
+parser.add_argument("--seed", type=int, default=37)
+args = parser.parse_args(sys.argv[sys.argv.index("--") + 1:])
+os.makedirs(args.work, exist_ok=True)
+
+failures = []
+checks = 0
+
+
+def check(condition, what):
+    global checks
+    checks += 1
+    print(("ok   " if condition else "FAIL ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def finish():
+    print(f"{checks} checks, {len(failures)} failed", flush=True)
+    if checks == 0 or failures:
+        sys.exit(1)
+
+
+def install_addon():
+    """As a user does: Preferences → Add-ons → Install… (the zip), then enable."""
+    started = time.time()
+    bpy.ops.preferences.addon_install(filepath=os.path.abspath(args.zip), overwrite=True)
+    addon_utils.enable("hilight_blender", default_set=True, handle_error=None)
+    import hilight_blender
+    where = os.path.dirname(hilight_blender.__file__)
+    check(where.startswith(bpy.utils.user_resource("SCRIPTS")), f"installed into the user's scripts ({where})")
+    prefs = bpy.context.preferences.addons["hilight_blender"].preferences
+    prefs.executable = os.path.abspath(args.hilight)
+    prefs.threads = 2
+    print(f"installed and enabled in {time.time() - started:.1f} s")
+    return hilight_blender
+
+
+def lambert(name, rho):
+    material = bpy.data.materials.new(name)
+    material.use_nodes = True
+    nodes = material.node_tree.nodes
+    nodes.clear()
+    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Color"].default_value = (*rho, 1.0)
+    diffuse.inputs["Roughness"].default_value = 0.0
+    output = nodes.new("ShaderNodeOutputMaterial")
+    material.node_tree.links.new(diffuse.outputs["BSDF"], output.inputs["Surface"])
+    return material
+
+
+def box(name, centre, size, cuts, material, inward=False):
+    """A subdivided box (Blender axes, metres); a room's faces face in, as
+    hilight finds the free space inside by them."""
+    mesh = bpy.data.meshes.new(name)
+    bm = bmesh.new()
+    bmesh.ops.create_cube(bm, size=1.0)
+    bmesh.ops.subdivide_edges(bm, edges=bm.edges[:], cuts=cuts, use_grid_fill=True)
+    if inward:
+        bmesh.ops.reverse_faces(bm, faces=bm.faces[:])
+    bm.to_mesh(mesh)
+    bm.free()
+    obj = bpy.data.objects.new(name, mesh)
+    obj.matrix_world = Matrix.Translation(centre) @ Matrix.Diagonal((*size, 1.0))
+    obj.data.materials.append(material)
+    bpy.context.scene.collection.objects.link(obj)
+    return obj
+
+
+def build_room():
+    """A 4 × 3 m room, 2.5 m high, with a table-sized block (Blender: Z up)."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    room = box("room", (2.0, -1.5, 1.25), (4.0, 3.0, 2.5), 15, lambert("walls", (0.7, 0.7, 0.7)), inward=True)
+    block = box("block", (1.4, -1.2, 0.4), (0.8, 0.6, 0.8), 3, lambert("block", (0.4, 0.35, 0.3)))
+    return [room, block]
+
+
+def run_hilight(*argv):
+    done = subprocess.run([args.hilight, *argv], capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError(f"hilight {' '.join(argv)}: {done.stderr.strip()}")
+    return done
+
+
+def read_ply(path):
+    """hilight's render PLY: binary little-endian vertex floats; positions and RGB."""
+    with open(path, "rb") as f:
+        header = b""
+        while not header.endswith(b"end_header\n"):
+            header += f.readline()
+        lines = header.decode().split("\n")
+        count = int(next(l for l in lines if l.startswith("element vertex")).split()[2])
+        names = []
+        for l in lines[lines.index(next(l for l in lines if l.startswith("element vertex"))) + 1:]:
+            if not l.startswith("property"):
+                break
+            names.append(l.split()[-1])
+        data = numpy.frombuffer(f.read(count * 4 * len(names)), dtype="<f4").reshape(count, len(names))
+    column = {n: i for i, n in enumerate(names)}
+    return data[:, [column[c] for c in "xyz"]], data[:, [column[c] for c in ("red", "green", "blue")]]
+
+
+def paint_render_of(hb, lights_path, attribute="wanted"):
+    """Renders the scene the add-on writes under the lights with hilight and
+    paints it onto the meshes, vertex by vertex: the target a designer would
+    have painted if they had wanted exactly these lights."""
+    scene_path = os.path.join(args.work, "painted_scene.obj")
+    hb.scene_io.write_scene(bpy.context, scene_path)
+    run_hilight("render", scene_path, "--unit", "m", "--lights", lights_path, "-o", os.path.join(args.work, "truth.ply"))
+    points, rgb = read_ply(os.path.join(args.work, "truth.ply"))
+    tree = kdtree.KDTree(len(points))
+    for i, p in enumerate(points):
+        tree.insert(p, i)
+    tree.balance()
+    worst = 0.0
+    for obj in hb.scene_io.scene_objects(bpy.context):
+        mesh = obj.data
+        layer = mesh.color_attributes.new(attribute, "FLOAT_COLOR", "POINT")
+        values = numpy.empty((len(mesh.vertices), 4), dtype=numpy.float32)
+        for v in mesh.vertices:
+            p = hb.units.from_blender(obj.matrix_world @ v.co)
+            _, index, distance = tree.find(p)
+            worst = max(worst, distance)
+            values[v.index] = (*rgb[index], 1.0)
+        layer.data.foreach_set("color", values.ravel())
+    check(worst < 1e-4, f"every Blender vertex is one of hilight's (farthest {worst:.2e} m)")
+
+
+def step_until_done(run, limit=120.0):
+    """What the Solve button's timer does, 4 times a second, until the end."""
+    started = time.time()
+    result = run.handle(bpy.context, "TIMER")
+    statuses = set()
+    while "RUNNING_MODAL" in result and time.time() - started < limit:
+        statuses.add(run.status_line())
+        time.sleep(0.25)
+        result = run.handle(bpy.context, "TIMER")
+    return result, statuses, time.time() - started
+
+
+def found_lights(hb):
+    return [hb.lights.to_hilight(o) for o in hb.lights.light_objects(bpy.context)]
+
+
+def match(truth, found, what):
+    """Each true light against the nearest found one: within 1 cm and 1%."""
+    check(len(found) == len(truth), f"{what}: {len(found)} lights for {len(truth)}")
+    for i, t in enumerate(truth):
+        nearest = min(found, key=lambda f: (Vector(f["position"]) - Vector(t["position"])).length)
+        distance = (Vector(nearest["position"]) - Vector(t["position"])).length
+        worst = max(abs(a / b - 1.0) for a, b in zip(nearest["intensity"], t["intensity"]))
+        check(distance <= 0.01, f"{what}: light {i} placed {distance * 100:.2f} cm from the truth (≤ 1 cm)")
+        check(worst <= 0.01, f"{what}: light {i} intensity off by {worst * 100:.2f}% (≤ 1%)")
+
+
+def random_lights(rng, count):
+    """Seeded point lights inside the room, over the floor, apart (hilight axes, W/sr)."""
+    lights = []
+    while len(lights) < count:
+        p = [rng.uniform(0.6, 3.4), rng.uniform(1.6, 2.2), rng.uniform(0.6, 2.4)]
+        if all(math.dist(p, q["position"]) > 1.2 for q in lights):
+            lights.append({"type": "point", "position": p, "intensity": [rng.uniform(1.0, 3.0) for _ in range(3)]})
+    return lights
+
+
+def case_solve():
+    build_room()  # factory settings first: they unload add-ons
+    hb = install_addon()
+    truth = random_lights(random.Random(args.seed), 2)
+    truth_path = os.path.join(args.work, "truth.json")
+    with open(truth_path, "w") as f:
+        json.dump({"lights": truth}, f)
+    paint_render_of(hb, truth_path)
+    settings = bpy.context.scene.hilight
+    settings.attribute = "wanted"
+    settings.light_kind = "POINT"
+
+    # Solve, through the modal step, automatic count.
+    run = hb.runner.Run(bpy.context, "solve")
+    result, statuses, seconds = step_until_done(run)
+    print(f"solve: {run.message} ({seconds:.1f} s)")
+    check(result == {"FINISHED"}, f"Solve finished ({result}, {run.message})")
+    check(any("Esc cancels" in s for s in statuses), f"the status bar showed progress: {sorted(statuses)[:3]}")
+    check(any(s.split(": ", 1)[1][:1].isalpha() and "starting" not in s for s in statuses) or seconds < 1.0,
+          "hilight's stages reached the status line")
+    check(not os.path.exists(run.folder), "its temporary folder is gone")
+    match(truth, found_lights(hb), "Solve")
+    objects = hb.lights.light_objects(bpy.context)
+    check(all(o.users_collection[0].name == "hilight lights" for o in objects), "the lights are in the 'hilight lights' collection")
+    check(all(o.data.type == "POINT" for o in objects), "point lights come back as Blender point lights")
+    for o in objects:
+        f = hb.lights.figures(o)
+        light = hb.lights.to_hilight(o)
+        peak = max(light["intensity"])
+        check(abs(o.data.energy - 4 * math.pi * peak) <= 1e-4 * o.data.energy and abs(f["watts"] - o.data.energy) < 1e-6,
+              f"{o.name}: Blender power {o.data.energy:.3f} W = 4π × {peak:.4f} W/sr")
+        check(abs(f["candela"] - 683 * hb.units.luminance(light["intensity"])) < 1e-6 * f["candela"]
+              and abs(f["lumens"] - 4 * math.pi * f["candela"]) < 1e-6 * f["lumens"],
+              f"{o.name}: panel figures {f['candela']:.0f} cd, {f['lumens']:.0f} lm, {f['watts']:.1f} W")
+
+    # Fine-tune after the user moves a light 15 cm (the operator itself, as a script calls it).
+    moved = objects[0]
+    moved.location.x += 0.15
+    moved.location.z -= 0.05
+    check(bpy.ops.hilight.fine_tune() == {"FINISHED"}, "Fine-tune finished")
+    match(truth, found_lights(hb), "Fine-tune after a light was moved 16 cm")
+
+    # Add light after the user deletes one.
+    doomed = hb.lights.light_objects(bpy.context)[1]
+    bpy.data.objects.remove(doomed, do_unlink=True)
+    check(len(hb.lights.light_objects(bpy.context)) == 1, "one light deleted")
+    check(bpy.ops.hilight.add_light() == {"FINISHED"}, "Add light finished")
+    match(truth, found_lights(hb), "Add light after one was deleted")
+
+    # Esc: hilight is stopped, the lights stay as they were.
+    before = [o.name for o in hb.lights.light_objects(bpy.context)]
+    run = hb.runner.Run(bpy.context, "solve")
+    check(run.handle(bpy.context, "TIMER") == {"RUNNING_MODAL"}, "a second Solve runs")
+    check(run.handle(bpy.context, "MOUSEMOVE") == {"PASS_THROUGH"}, "other events pass through while it runs")
+    check(run.handle(bpy.context, "ESC") == {"CANCELLED"}, "Esc cancels it")
+    check(run.job.proc.poll() is not None, f"hilight was stopped (exit {run.job.proc.poll()})")
+    check([o.name for o in hb.lights.light_objects(bpy.context)] == before, "the lights are untouched")
+
+    # Errors: one line, with the reason.
+    prefs = bpy.context.preferences.addons["hilight_blender"].preferences
+    prefs.executable = os.path.join(args.work, "no-such-hilight")
+    try:
+        hb.runner.Run(bpy.context, "solve")
+        check(False, "a missing executable is refused")
+    except hb.scene_io.InputError as e:
+        check("\n" not in str(e) and "no-such-hilight" in str(e) and "preferences" in str(e), f"missing executable: {e}")
+    prefs.executable = os.path.abspath(args.hilight)
+    settings.attribute = "never painted"
+    try:
+        hb.runner.Run(bpy.context, "solve")
+        check(False, "an unpainted scene is refused")
+    except hb.scene_io.InputError as e:
+        check("\n" not in str(e) and "never painted" in str(e), f"unpainted: {e}")
+    settings.attribute = "wanted"
+    # A failure inside hilight: an area light no scene unit allows.
+    settings.light_kind = "LUMINAIRE"
+    settings.luminaire = os.path.join(args.work, "truth.json")  # not a photometry file
+    run = hb.runner.Run(bpy.context, "solve")
+    result, _, _ = step_until_done(run)
+    check(result == {"CANCELLED"} and run.state == "failed", f"a failed hilight run is an error ({run.state})")
+    check("\n" not in run.message and "truth.json" in run.message, f"its one line names the reason: {run.message}")
+    finish()
+
+
+def case_numpy():
+    # Debian 12: Blender 3.4 with numpy 1.24, which has no numpy.bool.
+    if "bool" in numpy.__dict__:
+        del numpy.bool  # as Debian's numpy 1.24 is, if this one is older
+    glb = os.path.join(args.work, "room.glb")
+    run_hilight("export", os.path.join(os.path.dirname(__file__), "..", "..", "scenes", "room.obj"),
+                "--lights", os.path.join(os.path.dirname(__file__), "cycles_room_lights.json"), "-o", glb)
+    try:
+        bpy.ops.import_scene.gltf(filepath=glb)
+        broke = None
+    except Exception as e:  # what a Debian user saw
+        text = str(e)
+        broke = next((l.strip() for l in text.splitlines() if "bool" in l), text.strip().splitlines()[-1])
+    print(f"without the add-on: {broke}")
+    check(broke is not None and "bool" in broke, f"without the add-on Blender 3.4's importer breaks on numpy.bool: {broke}")
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    install_addon()
+    check("bool" in numpy.__dict__, "enabling the add-on gives numpy.bool back")
+    bpy.ops.import_scene.gltf(filepath=glb)
+    meshes = [o for o in bpy.context.scene.objects if o.type == "MESH"]
+    lamps = [o for o in bpy.context.scene.objects if o.type == "LIGHT"]
+    check(len(meshes) > 0 and len(lamps) == 4, f"then hilight's glTF imports: {len(meshes)} meshes, {len(lamps)} lights")
+    finish()
+
+
+CAMERA = ((0.3, 2.2, 0.3), (3.0, 0.6, 2.5), 80.0)  # hilight axes: a corner, looking at the block
+WIDTH, HEIGHT = 80, 60
+
+
+def cycles_render(hb, path, bounces, samples):
+    """The scene as it is (Lambertian materials, the add-on's lights) in Cycles:
+    black world, diffuse bounces only, no clamping, linear 32-bit EXR."""
+    scene = bpy.context.scene
+    world = bpy.data.worlds.new("black")
+    world.use_nodes = False
+    world.color = (0.0, 0.0, 0.0)
+    scene.world = world
+    columns, lens = hb.units.camera(*CAMERA)
+    data = bpy.data.cameras.new("hilight camera")
+    data.sensor_fit, data.sensor_height, data.lens = "VERTICAL", 24.0, lens
+    data.clip_start = 1e-3
+    camera = bpy.data.objects.new("hilight camera", data)
+    m = Matrix.Identity(4)
+    for c, v in enumerate(columns):
+        for r in range(3):
+            m[r][c] = v[r]
+    camera.matrix_world = m
+    scene.collection.objects.link(camera)
+    scene.camera = camera
+    render = scene.render
+    render.engine = "CYCLES"
+    render.resolution_x, render.resolution_y, render.resolution_percentage = WIDTH, HEIGHT, 100
+    render.threads_mode, render.threads = "FIXED", 2
+    render.image_settings.file_format, render.image_settings.color_depth = "OPEN_EXR", "32"
+    render.filepath, render.use_file_extension = path, False
+    c = scene.cycles
+    c.device, c.samples, c.use_adaptive_sampling, c.use_denoising, c.seed = "CPU", samples, False, False, 5
+    c.max_bounces = c.diffuse_bounces = bounces
+    c.glossy_bounces = c.transmission_bounces = c.volume_bounces = c.transparent_max_bounces = 0
+    c.caustics_reflective = c.caustics_refractive = False
+    c.sample_clamp_direct = c.sample_clamp_indirect = 0.0
+    c.light_sampling_threshold = 0.0
+    c.pixel_filter_type, c.filter_width = "BOX", 1.0
+    scene.view_settings.view_transform, scene.view_settings.exposure = "Standard", 0.0
+    started = time.time()
+    bpy.ops.render.render(write_still=True)
+    return time.time() - started
+
+
+def load_exr(path):
+    image = bpy.data.images.load(path, check_existing=False)
+    image.colorspace_settings.name = "Linear"
+    w, h = image.size
+    pixels = numpy.empty(w * h * 4, dtype=numpy.float32)
+    image.pixels.foreach_get(pixels)
+    bpy.data.images.remove(image)
+    return pixels.reshape(h, w, 4)
+
+
+def case_cycles():
+    """The add-on's lights, one of each kind Blender draws, in Cycles against
+    hilight's render of the same lights file: the image's mean radiance."""
+    build_room()
+    hb = install_addon()
+    rng = random.Random(args.seed)
+    lights = [
+        {"type": "point", "position": [rng.uniform(2.6, 3.4), rng.uniform(1.6, 2.2), rng.uniform(0.5, 1.0)],
+         "intensity": [rng.uniform(1.0, 3.0) for _ in range(3)]},
+        {"type": "spot", "position": [rng.uniform(1.0, 1.8), 2.3, rng.uniform(1.0, 1.4)],
+         "direction": [0.3, -0.9539392, 0.0], "cutoff_deg": rng.uniform(30.0, 45.0), "falloff_deg": 10.0,
+         "intensity": [rng.uniform(3.0, 6.0) for _ in range(3)]},
+        {"type": "rectangle", "position": [rng.uniform(2.5, 3.0), 2.45, rng.uniform(2.0, 2.4)], "direction": [0, -1, 0],
+         "up": [1, 0, 0], "size": [0.8, 0.4], "intensity": [rng.uniform(2.0, 4.0) for _ in range(3)]},
+    ]
+    lights_path = os.path.join(args.work, "lights.json")
+    with open(lights_path, "w") as f:
+        json.dump({"lights": lights}, f)
+    made = hb.lights.bring_in(bpy.context, lights)
+    check([o.data.type for o in made] == ["POINT", "SPOT", "AREA"], "point, spot and rectangle come in as Blender point, spot and area lights")
+    scene_path = os.path.join(args.work, "scene.obj")
+    hb.scene_io.write_scene(bpy.context, scene_path)
+    camera = ",".join("%g" % v for v in (*CAMERA[0], *CAMERA[1], CAMERA[2]))
+    # Direct light of each light alone (each conversion, little noise), then
+    # all of them with every bounce.
+    runs = [(f"{o.data.type.lower()}_0", [i], "0", 0, 16, 0.01) for i, o in enumerate(made)]
+    runs.append(("all", [0, 1, 2], "all", 128, 64, 0.03))
+    for name, chosen, bounces, cycles_bounces, samples, tolerance in runs:
+        subset = os.path.join(args.work, f"{name}.json")
+        with open(subset, "w") as f:
+            json.dump({"lights": [lights[i] for i in chosen]}, f)
+        for i, o in enumerate(made):
+            o.hide_render = i not in chosen
+        ours = os.path.join(args.work, f"hilight_{name}.exr")
+        theirs = os.path.join(args.work, f"cycles_{name}.exr")
+        run_hilight("render", scene_path, "--unit", "m", "--lights", subset, "-o", ours, "--camera", camera,
+                    "--width", str(WIDTH), "--height", str(HEIGHT), "--bounces", bounces)
+        seconds = cycles_render(hb, theirs, cycles_bounces, samples)
+        h, c = load_exr(ours), load_exr(theirs)
+        covered = h[..., 3] > 0.5
+        ratio = h[..., :3].sum(axis=2)[covered].mean() / c[..., :3].sum(axis=2)[covered].mean()
+        check(covered.mean() > 0.99 and c[..., :3].sum() > 0, f"{name}: both images cover the frame, lit")
+        check(abs(ratio - 1.0) <= tolerance,
+              f"{name} (hilight --bounces {bounces}): hilight/Cycles pixel mean {ratio:.4f} (within {tolerance:.0%}; Cycles {samples} samples, {cycles_bounces} bounces, {seconds:.1f} s)")
+    finish()
+
+
+if args.case == "cycles":
+    case_cycles()
+elif args.case == "solve":
+    case_solve()
+elif args.case == "numpy":
+    case_numpy()
