@@ -49,6 +49,10 @@ import bpy
 import numpy
 from mathutils import Matrix, Vector
 
+# The conversions (axes, powers) are the Blender add-on's: one module for both.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "frontends", "blender", "hilight_blender"))
+import units  # noqa: E402  (no bpy inside: importable on its own)
+
 # Debian 12's Blender 3.4 glTF importer still uses numpy.bool, which Debian's
 # numpy 1.24 removed; it meant the builtin bool (docs/blender.md).
 if "bool" not in numpy.__dict__:
@@ -74,7 +78,7 @@ args = parser.parse_args(sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv
 
 def to_blender(v):
     """glTF / hilight axes (+Y up) to Blender's (+Z up), as its glTF importer maps them."""
-    return Vector((v[0], -v[2], v[1]))
+    return Vector(units.to_blender(v))
 
 
 def light_frame(location, minus_z, x_axis=None):
@@ -142,16 +146,12 @@ def spot_cone(data, cos_cutoff, cos_inner):
 
 def add_light(index, light):
     kind = light.get("type", "point")
-    intensity = light["intensity"]
-    if not isinstance(intensity, list):
-        intensity = [intensity] * 3
-    peak = max(intensity)
-    colour = [c / peak for c in intensity] if peak > 0 else [1.0, 1.0, 1.0]
+    peak, colour = units.peak_and_colour(light["intensity"])
     position = to_blender(light["position"])
     name = f"hilight {index}"
     if kind == "point":
         data = bpy.data.lights.new(name, "POINT")
-        data.energy = 4.0 * math.pi * peak
+        data.energy = units.blender_watts(kind, peak)
         data.shadow_soft_size = 0.0
         matrix = Matrix.Translation(position)
     elif kind == "spot":
@@ -160,7 +160,7 @@ def add_light(index, light):
         # point light whose emission shader is hilight's cone: 1 inside
         # cutoff − falloff, 0 beyond cutoff, a smoothstep in cos α between.
         data = bpy.data.lights.new(name, "POINT")
-        data.energy = 4.0 * math.pi * peak
+        data.energy = units.blender_watts(kind, peak)
         data.shadow_soft_size = 0.0
         cutoff = math.radians(light["cutoff_deg"])
         inner = math.radians(light["cutoff_deg"] - light.get("falloff_deg", 0.0))
@@ -170,7 +170,7 @@ def add_light(index, light):
         data = bpy.data.lights.new(name, "AREA")
         data.shape = "RECTANGLE"
         data.size, data.size_y = light["size"][0], light["size"][1]
-        data.energy = 4.0 * peak
+        data.energy = units.blender_watts(kind, peak)
         matrix = light_frame(position, to_blender(light["direction"]), to_blender(light.get("up", [1.0, 0.0, 0.0])))
     else:
         raise RuntimeError(f"light {index}: type {kind} is not converted here")
