@@ -258,6 +258,27 @@ def case_solve():
     check(run.job.proc.poll() is not None, f"hilight was stopped (exit {run.job.proc.poll()})")
     check([o.name for o in hb.lights.light_objects(bpy.context)] == before, "the lights are untouched")
 
+    # Work-plane: a 1 m desk top above the block to receive 300 lux, one light.
+    mesh = bpy.data.meshes.new("desk")
+    bm = bmesh.new()
+    bmesh.ops.create_grid(bm, x_segments=8, y_segments=8, size=0.5)
+    bm.to_mesh(mesh)
+    bm.free()
+    desk = bpy.data.objects.new("desk", mesh)
+    desk.location = (1.4, -1.2, 0.81)
+    desk.data.materials.append(lambert("desk", (0.5, 0.5, 0.5)))
+    bpy.context.scene.collection.objects.link(desk)
+    settings.target_kind, settings.workplane, settings.lux, settings.count = "WORKPLANE", desk, 300.0, 1
+    run = hb.runner.Run(bpy.context, "solve")
+    check(run.argv[run.argv.index("--units"):][:4] == ["--units", "photometric", "--target-quantity", "illuminance"],
+          f"a work-plane is a lux target: {' '.join(run.argv[run.argv.index('--bounces'):])}")
+    result, _, seconds = step_until_done(run)
+    lamps = found_lights(hb)
+    check(result == {"FINISHED"} and len(lamps) == 1 and lamps[0]["position"][1] > 0.82,
+          f"the work-plane solve found 1 light above the desk ({run.message}, {seconds:.1f} s)")
+    bpy.data.objects.remove(desk, do_unlink=True)
+    settings.target_kind, settings.count = "PAINT", 0
+
     # Errors: one line, with the reason.
     prefs = bpy.context.preferences.addons["hilight_blender"].preferences
     prefs.executable = os.path.join(args.work, "no-such-hilight")
@@ -306,6 +327,9 @@ def case_numpy():
     meshes = [o for o in bpy.context.scene.objects if o.type == "MESH"]
     lamps = [o for o in bpy.context.scene.objects if o.type == "LIGHT"]
     check(len(meshes) > 0 and len(lamps) == 4, f"then hilight's glTF imports: {len(meshes)} meshes, {len(lamps)} lights")
+    addon_utils.disable("hilight_blender", default_set=True, handle_error=None)
+    check("hilight_blender" not in bpy.context.preferences.addons and not hasattr(bpy.types.Scene, "hilight"),
+          "the add-on disables cleanly (its settings and classes unregistered)")
     finish()
 
 

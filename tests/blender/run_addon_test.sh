@@ -9,6 +9,7 @@ if ! command -v blender > /dev/null; then
   exit 0
 fi
 rm -rf "$work" && mkdir -p "$work/user"
-export BLENDER_USER_SCRIPTS="$work/user" BLENDER_USER_CONFIG="$work/user/config"
+# A fresh light cache too: each run measures a cold solve, as a first Solve is.
+export BLENDER_USER_SCRIPTS="$work/user" BLENDER_USER_CONFIG="$work/user/config" XDG_CACHE_HOME="$work/cache"
 exec blender -b --factory-startup --python-exit-code 1 --python "$(dirname "$0")/addon_test.py" -- \
   --case "$case_name" --zip "$zip" --hilight "$hilight" --work "$work"
