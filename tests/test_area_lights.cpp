@@ -2,6 +2,7 @@
 // the lights file, and Embree's direct light against closed-form
 // configuration factors derived here (CIE 171 case 5.3 style), from 0.1× to
 // 10× the source's size away, shadows, and the far-field limit.
+#include "cie171_cases.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_json.hpp"
@@ -17,26 +18,7 @@ using namespace hilight;
 
 namespace {
 
-/// The configuration factor from a point on the floor (normal up) to the
-/// parallel rectangle [0, x] × [0, y] a height c above it, one corner over the
-/// point: integrating cos²/(π r²) over the rectangle in closed form gives
-/// 1/2π [X/√(1+X²) atan(Y/√(1+X²)) + Y/√(1+Y²) atan(X/√(1+Y²))], X = x/c, Y = y/c.
-/// Signed by the quadrant, so rectangles anywhere add up by inclusion-exclusion.
-double corner_factor(double x, double y, double c) {
-  const double X = std::abs(x) / c, Y = std::abs(y) / c;
-  const double ax = std::sqrt(1 + X * X), ay = std::sqrt(1 + Y * Y);
-  const double f = (X / ax * std::atan(Y / ax) + Y / ay * std::atan(X / ay)) / (2 * kPi);
-  return (x < 0) != (y < 0) ? -f : f;
-}
-
-/// Irradiance on the floor at (px, pz) from a Lambertian rectangle [x0,x1] ×
-/// [z0,z1] at height c facing down, intensity I0 along its normal: E = π L F
-/// with radiance L = I0 / area.
-double rectangle_irradiance(double px, double pz, double x0, double x1, double z0, double z1, double c, double i0) {
-  const double F = corner_factor(x1 - px, z1 - pz, c) - corner_factor(x0 - px, z1 - pz, c) -
-                   corner_factor(x1 - px, z0 - pz, c) + corner_factor(x0 - px, z0 - pz, c);
-  return kPi * i0 / ((x1 - x0) * (z1 - z0)) * F;
-}
+using cie171::rectangle_irradiance;  // CIE 171 case 5.3's closed form (tests/cie171_cases.hpp)
 
 /// Irradiance from a Lambertian disk of radius R facing down at height h, on
 /// a floor point a off its axis: the factor to a parallel disk,
@@ -249,10 +231,11 @@ TEST_CASE("an area source's size is a length in the scene's unit, like its posit
   mm.scale = 0.001;
   mm.unit = "mm";
   const Lighting in = {Light::area(LightType::Rectangle, {1000.f, 2500.f, 0.f}, {0.f, -1.f, 0.f}, {1.f, 0.f, 0.f}, {600.f, 300.f}, Rgb(1.f))};
-  const Lighting local = lights_to_local(in, mm);
+  const Lighting local = parse_lights_json(lights_to_json(in, "mm"), "mm.json", &mm);
   CHECK(local[0].size[0] == Approx(0.6f));
   CHECK(local[0].size[1] == Approx(0.3f));
-  const Lighting back = lights_to_world(local, mm);
+  CHECK(local[0].position.y == Approx(2.5f));
+  const Lighting back = parse_lights_json(lights_to_json(local, "mm", &mm), "back.json");
   CHECK(back[0].size[0] == Approx(600.f));
   CHECK(back[0].position.y == Approx(2500.f));
 }

@@ -299,3 +299,31 @@ TEST_CASE("oracle: the loop itself gives the analytic answer on a plane, and mos
   for (const auto& o : c.oracle) lit += luminance(o) > 0;
   CHECK(lit > 0.5 * double(c.oracle.size()));
 }
+
+TEST_CASE("oracle: POV-Ray and Embree give one answer at the curved models' terminators (issue 32)", "[oracle][povray][cross]") {
+  if (test::skip_without_renderer("povray")) return;
+  // Issue 32 measured D̄ 8.8% between them, 294 of 5,297 lit vertices more
+  // than 20% apart, at the terminators and shadow edges. A vertex is lit when
+  // either renderer gives it more than 0.1% of the mean. Measured now (the
+  // oracle's three lights): D̄ 2.1%, 60 of 5,504 apart, nearly all smooth
+  // vertices where POV-Ray loses a light that Embree and the oracle keep
+  // (docs/rendering-model.md, "The oracle").
+  const OracleCase& c = curved_case();
+  const SurfacePoints points = SurfacePoints::from_vertices(*c.scene);
+  const auto embree = test::make_renderer("embree", c.scene, {"bounces=0"})->illuminate(points, c.lights);
+  const auto pov = test::make_renderer("povray", c.scene, {"bounces=0"})->illuminate(points, c.lights);
+  double mean = 0;
+  for (const auto& e : embree) mean += luminance(e) / double(embree.size());
+  size_t lit = 0, apart = 0;
+  for (size_t i = 0; i < embree.size(); ++i) {
+    const double a = luminance(embree[i]), b = luminance(pov[i]);
+    if (std::max(a, b) <= 1e-3 * mean) continue;
+    ++lit;
+    apart += std::abs(a - b) > 0.2 * std::max(a, b);
+  }
+  const double d = test::dbar(pov, embree);
+  std::printf("curved models, direct light: POV-Ray against Embree D-bar %.3f%%, %zu of %zu lit vertices > 20%% apart\n", 100 * d,
+              apart, lit);
+  CHECK(d < 0.025);
+  CHECK(double(apart) < 0.015 * double(lit));
+}

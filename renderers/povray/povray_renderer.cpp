@@ -92,7 +92,8 @@ std::vector<Rgb> PovrayRenderer::bake(const SurfacePoints& world_points, std::sp
     // The bounce: POV-Ray's radiosity on the mesh itself (receivers would
     // gather it at a surface that is not in the scene), as the difference of
     // a run with and one without it, so it carries no direct light.
-    std::vector<Rgb> with = bake_on_mesh(points, lights, 1), without = bake_on_mesh(points, lights, 0);
+    // `bounces` reflections (radiosity recursion_limit; all = 20).
+    std::vector<Rgb> with = bake_on_mesh(points, lights, bounces), without = bake_on_mesh(points, lights, 0);
     for (size_t i = 0; i < out.size(); ++i) out[i] += with[i] - without[i];
   }
   return out;
@@ -238,7 +239,7 @@ std::vector<Rgb> PovrayRenderer::unit_responses(const SurfacePoints& points, std
     if (transport == Transport::DirectOnly || m_settings.pov.bounces == 0) {
       r = transport == Transport::IndirectOnly ? std::vector<Rgb>(m, Rgb(0.f)) : bake(points, std::span<const Light>(&unit, 1), 0);
     } else {
-      r = bake(points, std::span<const Light>(&unit, 1), 1);
+      r = bake(points, std::span<const Light>(&unit, 1), m_settings.pov.bounces);
       if (transport == Transport::IndirectOnly) {
         std::vector<Rgb> direct = bake(points, std::span<const Light>(&unit, 1), 0);
         for (size_t i = 0; i < m; ++i) r[i] -= direct[i];
