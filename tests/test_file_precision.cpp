@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 using namespace hilight;
 namespace fs = std::filesystem;
@@ -38,13 +39,16 @@ void write_scene(const fs::path& path, const Scene& scene, const glm::dvec3& by)
     else out << "f " << t[0] + 1 << "//" << t[0] + 1 << ' ' << t[1] + 1 << "//" << t[1] + 1 << ' ' << t[2] + 1 << "//" << t[2] + 1 << "\n";
 }
 
-/// Two lights moved by `by`; their coordinates are multiples of 1/4, exact
-/// in float even at 10⁶ (the lights file is not what is tested here).
+/// Two lights at home, to be moved by `by`: millimetres that a float at 10⁶
+/// (spacing 6 cm) cannot hold.
+const std::vector<glm::dvec3> kLightsAtHome = {{1.2345, 2.5015, 0.7528}, {-1.0073, 1.7462, 1.5091}};
+
 void write_lights(const fs::path& path, const glm::dvec3& by) {
   std::ofstream out(path);
-  out << std::setprecision(17) << R"({"lights": [{"type": "point", "position": [)" << 1.25 + by.x << ", " << 2.5 + by.y << ", "
-      << 0.75 + by.z << R"(], "intensity": [2, 2, 2]}, {"type": "point", "position": [)" << -1.0 + by.x << ", " << 1.75 + by.y
-      << ", " << 1.5 + by.z << R"(], "intensity": [1, 0.8, 0.6]}]})";
+  const glm::dvec3 a = kLightsAtHome[0] + by, b = kLightsAtHome[1] + by;
+  out << std::setprecision(17) << R"({"lights": [{"type": "point", "position": [)" << a.x << ", " << a.y << ", " << a.z
+      << R"(], "intensity": [2, 2, 2]}, {"type": "point", "position": [)" << b.x << ", " << b.y << ", " << b.z
+      << R"(], "intensity": [1, 0.8, 0.6]}]})";
 }
 
 std::vector<Rgb> render(const fs::path& scene, const fs::path& lights, const fs::path& out, std::string& err) {
@@ -81,6 +85,35 @@ TEST_CASE("a scene 10^4 to 10^6 m away, written in full, renders within 1% of it
       CHECK(test::dbar(moved, home) < 0.01);
       CHECK(err.find("warning") == std::string::npos);  // nothing was rounded: nothing to say
     }
+  }
+}
+
+TEST_CASE("lights 10^6 m away keep their millimetres through a solve: read and written in double", "[far][lights][precision]") {
+  if (!fs::exists(builders::testmodels_dir())) {
+    std::cout << "SKIPPED: assimp-testmodels is not installed" << std::endl;
+    return;
+  }
+  const fs::path dir = test::output_dir("file_precision_lights");
+  const glm::dvec3 far(1000000.0, 0.0, -1048576.0);
+  write_scene(dir / "far.obj", builders::curved_models_on_floor(), far);
+  write_lights(dir / "far.json", far);
+  std::string err;
+  REQUIRE(!render(dir / "far.obj", dir / "far.json", dir / "target.ply", err).empty());
+  // The lights that made the target are the solve's fixed point; what it
+  // writes must be where they were, to the millimetre (a float rounds to 3 cm).
+  const auto solve = test::run_hilight({"solve", (dir / "far.obj").string(), "--target", (dir / "target.ply").string(), "--initial",
+                                        (dir / "far.json").string(), "--mode", "fine-tune", "-o", (dir / "found.json").string(),
+                                        "--cache-dir", (dir / "cache").string(), "-q"});
+  INFO(solve.err);
+  REQUIRE(solve.exit_code == 0);
+  std::ifstream in(dir / "found.json");
+  const auto found = nlohmann::json::parse(in)["lights"];
+  REQUIRE(found.size() == kLightsAtHome.size());
+  for (size_t j = 0; j < found.size(); ++j) {
+    const auto& p = found[j]["position"];
+    const glm::dvec3 written(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+    CAPTURE(j, written.x, written.y, written.z);
+    CHECK(glm::length(written - (kLightsAtHome[j] + far)) < 1e-3);
   }
 }
 

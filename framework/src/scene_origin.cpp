@@ -1,5 +1,6 @@
 // Where a scene sits (scene_origin.hpp).
 #include "hilight/scene_origin.hpp"
+#include "hilight/io/lights_file.hpp"
 
 #include "hilight/error.hpp"
 
@@ -31,24 +32,9 @@ double metres_per_unit(const std::string& unit) {
   throw InputError("--unit " + unit + ": mm, cm, m, in or ft");
 }
 
-Lighting lights_to_local(Lighting lights, const SceneFrame& frame) {
-  for (auto& l : lights) {
-    l.position = to_local(l.position, frame);
-    l.size *= float(frame.scale);  // an area source's size is a length in the file's unit
-  }
-  return lights;
-}
-
-Lighting lights_to_world(Lighting lights, const SceneFrame& frame) {
-  for (auto& l : lights) {
-    l.position = Vec3(to_world(l.position, frame));
-    l.size /= float(frame.scale);
-  }
-  return lights;
-}
-
-Lighting lights_from_file(Lighting lights, const Scene& scene, const std::string& file) {
-  lights = lights_to_local(std::move(lights), scene.frame);
+Lighting lights_from_file(const std::filesystem::path& path, Units units, const Scene& scene) {
+  const std::string file = path.string();
+  Lighting lights = read_lights_file(path, units, &scene.frame);
   const glm::dvec3 centre = 0.5 * (glm::dvec3(scene.bounds.lo) + glm::dvec3(scene.bounds.hi));
   const double reach = 1e6 * std::max(double(scene.diagonal()), 1.0);  // metres (local)
   for (size_t j = 0; j < lights.size(); ++j) {

@@ -46,13 +46,14 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   if (!gltf && ext != ".pov") throw InputError(output, "the output must end in .pov, .gltf or .glb");
   if (vertex_colours && !gltf) throw InputError("--vertex-colours needs a .gltf or .glb output, not " + output);
   check_writable(output);
-  Lighting lights = read_lights_file(lights_path, parse_units(units_name));
+  const Units units = parse_units(units_name);
+  read_lights_file(lights_path, units);  // fails before the scene loads
   std::optional<Camera> camera;
   if (!camera_text.empty()) camera = Camera::parse(camera_text);
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, scene_options));
   // In the scene's coordinates (scene_origin.hpp): the glTF puts them back in the world; a
   // .pov file stays in the scene's own, camera and lights with it.
-  lights = lights_to_local(std::move(lights), scene->frame);
+  const Lighting lights = lights_from_file(lights_path, units, *scene);
   if (camera) {
     camera->eye = to_local(camera->eye, scene->frame);
     camera->target = to_local(camera->target, scene->frame);

@@ -95,7 +95,7 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   auto start = std::chrono::steady_clock::now();
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, scene_options));
   // Where the scene was moved, and within the renderers' reach (scene_origin.hpp).
-  lights = lights_from_file(std::move(lights), *scene, lights_path.empty() ? scene_path : lights_path);
+  lights = lights_from_file(lights_path.empty() ? scene_path : lights_path, units, *scene);
   if (camera) {
     camera->eye = to_local(camera->eye, scene->frame);
     camera->target = to_local(camera->target, scene->frame);

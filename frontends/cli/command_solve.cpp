@@ -240,14 +240,17 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   const TargetQuantity quantity = parse_target_quantity(quantity_name);
   if (quantity == TargetQuantity::Illuminance && units != Units::Photometric)
     throw InputError("--target-quantity illuminance is in lux: it needs --units photometric");
-  Lighting initial = initial_path.empty() ? Lighting{} : read_lights_file(initial_path, units);
-  if (!hints_path.empty()) {
-    s.spot_hints = read_lights_file(hints_path, units);
-    for (auto& h : s.spot_hints) {
+  // Read now to fail before the scene loads, and again once its frame is known.
+  auto read_hints = [&](const SceneFrame* frame) {
+    Lighting hints = read_lights_file(hints_path, units, frame);
+    for (auto& h : hints) {
       if (h.type != LightType::Spot) throw InputError(hints_path, "spot hints must be spotlights");
       h.intensity = Rgb(1.f);
     }
-  }
+    return hints;
+  };
+  Lighting initial = initial_path.empty() ? Lighting{} : read_lights_file(initial_path, units);
+  if (!hints_path.empty()) s.spot_hints = read_hints(nullptr);
   if (no_cache) spec.cache = PluginDefaults::no_cache;
   spec.renderer = ropts.name;
   spec.renderer_settings = ropts.assignments(&registry);
@@ -258,8 +261,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, scene_options));
   auto rays = RayScene::shared(scene);
   // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).
-  initial = lights_from_file(std::move(initial), *scene, initial_path);
-  s.spot_hints = lights_to_local(std::move(s.spot_hints), scene->frame);
+  if (!initial_path.empty()) initial = lights_from_file(initial_path, units, *scene);
+  if (!hints_path.empty()) s.spot_hints = read_hints(&scene->frame);
   s.placement = rules_to_local(std::move(s.placement), scene->frame);
   // --area-light's size is in the scene's unit (a file's opening is in metres already).
   if (s.luminaire && is_area(s.luminaire->type) && !s.luminaire->profile) s.luminaire->size *= float(scene->frame.scale);
@@ -304,7 +307,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     }
     write_gltf(output, gltf);
   } else {
-    write_lights_file(output, lights_to_world(lights, scene->frame), units, scene->frame.unit);
+    write_lights_file(output, lights, units, scene->frame);
   }
   if (!report_path.empty()) {
     nlohmann::json j = report_json(report, spec.renderer, spec.optimizer, spec.sampler, mode);

@@ -96,7 +96,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
     gltf.figures = {{"lights", double(lights.size())}, {"total_luminous_flux_lm", report.flux_lm}};
     write_gltf(a.output, gltf);
   } else {
-    write_lights_file(a.output, lights_to_world(lights, scene->frame), units, scene->frame.unit);
+    write_lights_file(a.output, lights, units, scene->frame);
   }
   CriteriaSolve with_rules = a;
   with_rules.placement = rules;

@@ -14,6 +14,9 @@
 #include "hilight/lighting.hpp"
 #include "hilight/math.hpp"
 #include "hilight/scene.hpp"
+#include "hilight/units.hpp"
+
+#include <filesystem>
 
 #include <string>
 
@@ -26,22 +29,19 @@ glm::dvec3 recentring_origin(const Bounds& bounds);
 /// Metres per unit: "mm", "cm", "m", "in", "ft"; InputError otherwise.
 double metres_per_unit(const std::string& unit);
 
-inline Vec3 to_local(const Vec3& world, const SceneFrame& f) { return Vec3((glm::dvec3(world) - f.origin) * f.scale); }
+inline Vec3 to_local(const glm::dvec3& world, const SceneFrame& f) { return Vec3((world - f.origin) * f.scale); }
+inline Vec3 to_local(const Vec3& world, const SceneFrame& f) { return to_local(glm::dvec3(world), f); }
 inline glm::dvec3 to_world(const Vec3& local, const SceneFrame& f) { return glm::dvec3(local) / f.scale + f.origin; }
 /// A length (an offset, an edge) in the file's unit, in hilight's.
 inline float length_to_local(double length, const SceneFrame& f) { return float(length * f.scale); }
 
-/// Light positions moved in (read from a file) or out (to be written).
-Lighting lights_to_local(Lighting lights, const SceneFrame& frame);
-Lighting lights_to_world(Lighting lights, const SceneFrame& frame);
-
-/// Lights read from `file` for `scene`, moved in, each checked to lie within
+/// Lights read from `file` for `scene`, moved in (in double precision), each checked to lie within
 /// reach: no farther from the scene than a million times its size (a light
 /// at 10¹⁹ aborted Embree; beyond that reach a light adds nothing a float
 /// can hold). InputError naming the file and the light otherwise. Every
 /// command that reads lights for a scene calls this (render, solve
 /// --initial); the solve then holds them to its own light space.
-Lighting lights_from_file(Lighting lights, const Scene& scene, const std::string& file);
+Lighting lights_from_file(const std::filesystem::path& file, Units units, const Scene& scene);
 
 /// Placement rules given in the file's coordinates (boxes, heights, the
 /// ceiling offset) in hilight's.

@@ -4,6 +4,7 @@
 // InputError naming it, never a crash.
 #include "hilight/error.hpp"
 #include "hilight/io/gltf.hpp"
+#include "hilight/scene_origin.hpp"
 #include "confined_path.hpp"
 
 #include <cmath>
@@ -224,7 +225,7 @@ Light area_from_extras(const tinygltf::Value& shape, const Vec3& position, const
 
 } // namespace
 
-Lighting read_gltf_lights(const fs::path& path) {
+Lighting read_gltf_lights(const fs::path& path, const SceneFrame* frame) {
   const tinygltf::Model model = load(path);
   Lighting lights;
   for_each_node(model, path, [&](const tinygltf::Node& node, const glm::dmat4& world) {
@@ -247,11 +248,14 @@ Lighting read_gltf_lights(const fs::path& path) {
     if (!std::isfinite(intensity.r) || !std::isfinite(intensity.g) || !std::isfinite(intensity.b) || intensity.r < 0 ||
         intensity.g < 0 || intensity.b < 0)
       throw InputError(path.string(), name + ": colour and intensity must be finite and not negative");
-    const glm::dvec3 position(world[3]);
-    if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z))
+    const glm::dvec3 world_position(world[3]);
+    if (!std::isfinite(world_position.x) || !std::isfinite(world_position.y) || !std::isfinite(world_position.z))
       throw InputError(path.string(), name + ": its node's transform is not finite");
+    // Into the scene's frame in double precision (scene_origin.hpp); a light the
+    // move puts beyond float is the caller's to refuse (lights_from_file).
+    const Vec3 position = frame ? to_local(world_position, *frame) : Vec3(world_position);
     if (g.type == "point") {
-      lights.push_back(Light::point(Vec3(position), intensity));
+      lights.push_back(Light::point(position, intensity));
       return;
     }
     const glm::dvec3 axis = glm::dmat3(world) * glm::dvec3(0, 0, -1);
@@ -259,10 +263,11 @@ Lighting read_gltf_lights(const fs::path& path) {
     if (glm::length(axis) <= 0 || !(outer > 0 && outer <= 90) || !(inner >= 0 && inner <= outer))
       throw InputError(path.string(), name + ": a spot needs 0 <= innerConeAngle <= outerConeAngle <= pi/2 and an axis");
     if (g.extras.IsObject() && g.extras.Has("hilight")) {  // an area or line source written by hilight (docs/interchange.md)
-      lights.push_back(area_from_extras(g.extras.Get("hilight"), Vec3(position), Vec3(glm::normalize(axis)), intensity, path, name));
+      lights.push_back(area_from_extras(g.extras.Get("hilight"), position, Vec3(glm::normalize(axis)), intensity, path, name));
+      if (frame) lights.back().size *= float(frame->scale);
       return;
     }
-    lights.push_back(Light::spot(Vec3(position), Vec3(glm::normalize(axis)), float(outer), intensity, float(outer - inner)));
+    lights.push_back(Light::spot(position, Vec3(glm::normalize(axis)), float(outer), intensity, float(outer - inner)));
   });
   if (lights.empty()) throw InputError(path.string(), "no KHR_lights_punctual light in its default scene");
   return lights;

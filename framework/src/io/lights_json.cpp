@@ -5,6 +5,7 @@
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/gltf.hpp"
 #include "hilight/io/photometry_io.hpp"
+#include "hilight/scene_origin.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -20,16 +21,30 @@ using nlohmann::json;
 
 namespace {
 
-Vec3 read_vec3(const json& obj, const char* key, const std::string& where) {
+glm::dvec3 read_dvec3(const json& obj, const char* key, const std::string& where) {
   if (!obj.contains(key)) throw InputError(where + ": missing \"" + key + "\"");
   const json& v = obj.at(key);
   if (!v.is_array() || v.size() != 3) throw InputError(where + ": \"" + key + "\" must be an array of 3 numbers");
-  Vec3 out;
+  glm::dvec3 out;
   for (int i = 0; i < 3; ++i) {
     if (!v[i].is_number()) throw InputError(where + ": \"" + key + "\" must be an array of 3 numbers");
-    out[i] = v[i].get<float>();
-    if (!std::isfinite(out[i])) throw InputError(where + ": \"" + key + "\" is not finite");
+    out[i] = v[i].get<double>();
   }
+  return out;
+}
+
+Vec3 read_vec3(const json& obj, const char* key, const std::string& where) {
+  const Vec3 out(read_dvec3(obj, key, where));
+  if (!is_finite(out)) throw InputError(where + ": \"" + key + "\" is not finite");
+  return out;
+}
+
+/// A position, moved into the scene's frame in double precision (a float
+/// at 10⁶ m rounds to 6 cm; scene_origin.hpp).
+Vec3 read_position(const json& obj, const std::string& where, const SceneFrame* frame) {
+  const glm::dvec3 world = read_dvec3(obj, "position", where);
+  const Vec3 out = frame ? to_local(world, *frame) : Vec3(world);
+  if (!is_finite(out)) throw InputError(where + ": \"position\" is not finite");
   return out;
 }
 
@@ -116,7 +131,8 @@ Light read_area(const json& obj, Light light, const std::string& where, const st
   return light;
 }
 
-Light read_light(const json& obj, const std::string& where, const std::filesystem::path& base, ProfileCache& profiles) {
+Light read_light(const json& obj, const std::string& where, const std::filesystem::path& base, ProfileCache& profiles,
+                 const SceneFrame* frame) {
   if (!obj.is_object()) throw InputError(where + ": must be an object");
   static const char* kKnown[] = {"type", "position", "intensity", "direction", "cutoff_deg", "falloff_deg", "name",
                                  "profile", "spin_deg", "dimming", "up", "size"};
@@ -126,7 +142,7 @@ Light read_light(const json& obj, const std::string& where, const std::filesyste
   if (obj.contains("type") && !obj.at("type").is_string()) throw InputError(where + ": \"type\" must be a string");
   std::string type = obj.value("type", std::string("point"));
   Light light;
-  light.position = read_vec3(obj, "position", where);
+  light.position = read_position(obj, where, frame);
   if (type == "luminaire") return read_luminaire(obj, std::move(light), where, base, profiles);
   if (LightType t; light_type_from_string(type, t) && is_area(t)) {
     light.type = t;
@@ -161,7 +177,7 @@ Light read_light(const json& obj, const std::string& where, const std::filesyste
 
 } // namespace
 
-Lighting parse_lights_json(const std::string& text, const std::string& source) {
+Lighting parse_lights_json(const std::string& text, const std::string& source, const SceneFrame* frame) {
   json doc;
   try {
     doc = json::parse(text);
@@ -175,18 +191,21 @@ Lighting parse_lights_json(const std::string& text, const std::string& source) {
   ProfileCache profiles;
   const std::filesystem::path base = std::filesystem::path(source).parent_path();
   try {
-    for (size_t i = 0; i < arr.size(); ++i) lights.push_back(read_light(arr[i], source + ": light " + std::to_string(i), base, profiles));
+    for (size_t i = 0; i < arr.size(); ++i) {
+      lights.push_back(read_light(arr[i], source + ": light " + std::to_string(i), base, profiles, frame));
+      if (frame) lights.back().size *= float(frame->scale);  // a length in the file's unit
+    }
   } catch (const json::exception& e) {  // a value of an unexpected JSON type
     throw InputError(source, std::string("malformed light: ") + e.what());
   }
   return lights;
 }
 
-Lighting read_lights_json(const std::filesystem::path& path) {
-  return parse_lights_json(read_text_file(path, "lights"), path.string());
+Lighting read_lights_json(const std::filesystem::path& path, const SceneFrame* frame) {
+  return parse_lights_json(read_text_file(path, "lights"), path.string(), frame);
 }
 
-std::string lights_to_json(const Lighting& lights, const std::string& length_unit) {
+std::string lights_to_json(const Lighting& lights, const std::string& length_unit, const SceneFrame* frame) {
   json arr = json::array();
   for (size_t j = 0; j < lights.size(); ++j) {
     const Light& l = lights[j];
@@ -197,7 +216,9 @@ std::string lights_to_json(const Lighting& lights, const std::string& length_uni
       throw std::logic_error("light " + std::to_string(j) + " to be written has a NaN or infinite value");
     json o;
     o["type"] = to_string(l.type);
-    o["position"] = {l.position.x, l.position.y, l.position.z};
+    // In the world's frame, moved out in double (float would round a far position).
+    const glm::dvec3 position = frame ? to_world(l.position, *frame) : glm::dvec3(l.position);
+    o["position"] = {position.x, position.y, position.z};
     if (l.type == LightType::Spot) {
       o["direction"] = {l.direction.x, l.direction.y, l.direction.z};
       o["cutoff_deg"] = l.cutoff_deg;
@@ -211,7 +232,8 @@ std::string lights_to_json(const Lighting& lights, const std::string& length_uni
     if (is_area(l.type)) {
       o["direction"] = {l.direction.x, l.direction.y, l.direction.z};
       o["up"] = {l.up.x, l.up.y, l.up.z};
-      o["size"] = l.type == LightType::Rectangle ? json{l.size[0], l.size[1]} : json{l.size[0]};
+      const double per_unit = frame ? 1.0 / frame->scale : 1.0;  // sizes in the file's unit
+      o["size"] = l.type == LightType::Rectangle ? json{l.size[0] * per_unit, l.size[1] * per_unit} : json{l.size[0] * per_unit};
       if (l.profile) {
         o["profile"] = l.profile_path;
         o["spin_deg"] = l.spin_deg;
@@ -223,8 +245,9 @@ std::string lights_to_json(const Lighting& lights, const std::string& length_uni
   return json{{"length_unit", length_unit}, {"lights", arr}}.dump(2) + "\n";
 }
 
-void write_lights_json(const std::filesystem::path& path, const Lighting& lights, const std::string& length_unit) {
-  std::string text = lights_to_json(lights, length_unit);
+void write_lights_json(const std::filesystem::path& path, const Lighting& lights, const std::string& length_unit,
+                       const SceneFrame* frame) {
+  std::string text = lights_to_json(lights, length_unit, frame);
   write_atomically(path, text);
 }
 

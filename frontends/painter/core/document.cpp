@@ -188,11 +188,11 @@ void Document::save_lights(const std::filesystem::path& path) const {
     write_gltf(path, gltf);
     return;
   }
-  write_lights_json(path, lights_to_world(m_state.lights, m_scene->frame), m_scene->frame.unit);  // the world's coordinates in files
+  write_lights_json(path, m_state.lights, m_scene->frame.unit, &m_scene->frame);  // the world's coordinates in files
 }
 
 void Document::load_lights(const std::filesystem::path& path) {
-  Lighting lights = lights_to_local(read_lights_file(path), m_scene->frame);
+  Lighting lights = read_lights_file(path, Units::Radiometric, &m_scene->frame);
   set_lights(lights, "load lights " + path.filename().string());
 }
 

@@ -41,8 +41,9 @@ void write_gltf(const std::filesystem::path& path, const GltfExport& contents);
 
 /// The KHR_lights_punctual lights of the file's default scene, in world
 /// space (node transforms applied). InputError naming the file for what is
-/// not a light hilight has (directional lights) or a broken file.
-Lighting read_gltf_lights(const std::filesystem::path& path);
+/// not a light hilight has (directional lights) or a broken file. With
+/// `frame`, moved into that scene's frame in double precision (scene_origin.hpp).
+Lighting read_gltf_lights(const std::filesystem::path& path, const SceneFrame* frame = nullptr);
 
 /// Points with colours from a glTF: every vertex of every mesh primitive with
 /// COLOR_0 (or `attribute`), in world space.
