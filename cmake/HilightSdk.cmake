@@ -4,7 +4,7 @@
 
 # The SDK's headers: the plugin interfaces and everything they include,
 # followed through `#include "hilight/..."`, so the installed set is closed.
-set(HILIGHT_SDK_ROOT_HEADERS hilight/plugin.hpp hilight/registry.hpp hilight/error.hpp hilight/threads.hpp)
+set(HILIGHT_SDK_ROOT_HEADERS hilight/plugin.hpp hilight/registry.hpp hilight/error.hpp hilight/threads.hpp hilight/progress.hpp)
 function(hilight_header_closure out)
   set(dir ${PROJECT_SOURCE_DIR}/framework/include)
   set(pending ${ARGN})

@@ -5,10 +5,13 @@
 #include "hilight/registry.hpp"
 #include "hilight/version.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -17,6 +20,27 @@ void print_usage(hilight::Registry& registry) {
   for (const auto& c : registry.all_commands()) std::printf("  %-10s %s\n", c.name.c_str(), c.summary.c_str());
   if (registry.all_commands().empty())
     std::cout << "  (no frontend module found; is lib/hilight/ beside bin/, or HILIGHT_PLUGIN_PATH set?)\n";
+}
+
+/// "; did you mean 'solve'?" for a slip of a key or two ("slove"), else "".
+std::string nearest_command(hilight::Registry& registry, const std::string& given) {
+  std::string best;
+  size_t best_distance = 3;
+  for (const auto& c : registry.all_commands()) {
+    // Edits (insert, delete, replace, swap two neighbours) from given to c.name.
+    const std::string& a = given;
+    const std::string& b = c.name;
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (size_t i = 1; i <= a.size(); ++i)
+      for (size_t j = 1; j <= b.size(); ++j) {
+        d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+        if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
+    if (d[a.size()][b.size()] < best_distance) best_distance = d[a.size()][b.size()], best = c.name;
+  }
+  return best.empty() || best_distance * 3 > std::max<size_t>(3, given.size()) ? "" : "; did you mean '" + best + "'?";
 }
 
 } // namespace
@@ -41,7 +65,7 @@ int main(int argc, char** argv) {
   try {
     hilight::Frontend* frontend = registry.frontend_for(command);
     if (!frontend) {
-      std::cerr << "hilight: unknown command '" << command << "' (hilight --help lists them)\n";
+      std::cerr << "hilight: unknown command '" << command << "'" << nearest_command(registry, command) << " (hilight --help lists them)\n";
       return hilight::kExitInputError;
     }
     std::vector<std::string> args(argv + 2, argv + argc);

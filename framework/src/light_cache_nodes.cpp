@@ -1,4 +1,5 @@
 #include "hilight/light_cache_nodes.hpp"
+#include "hilight/progress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -136,6 +137,8 @@ void NodeResponses::trace(const Scene& scene, Renderer& renderer, const std::vec
   // renderer's bounce gathers over one block are made once and dropped after
   // it. A few nodes a call keep the float responses small.
   constexpr size_t kBatch = 16;
+  const size_t batches = (positions.size() + kBatch - 1) / kBatch;
+  ProgressStage progress("building the light cache", double(blocks() * batches));
   for (size_t block = 0; block < blocks(); ++block) {
     const size_t lo = block * kBlock, n = std::min(kBlock, m_vertex_count - lo);
     const SurfacePoints points = vertex_range(all, lo, lo + n);
@@ -153,6 +156,7 @@ void NodeResponses::trace(const Scene& scene, Renderer& renderer, const std::vec
           for (int c = 0; c < 3; ++c) h[3 * v + c] = uint16_t(glm::packHalf1x16(std::max(0.f, node[v][c]) * inverse));
         m_nodes[first + begin + k][block] = pack_block(scale, h.data(), n);
       });
+      progress.advance();
     }
     // With one block its gathers serve the next call too (the adaptive
     // cache traces in rounds); with several they would only pile up.

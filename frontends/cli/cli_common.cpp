@@ -4,6 +4,8 @@
 #include "hilight/error.hpp"
 #include "hilight/threads.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -22,16 +24,26 @@ const CLI::Validator FiniteNonNegative(
 
 const CLI::Validator BounceCount = bounce_count_validator();
 
-void RendererOptions::add_to(CLI::App& app) {
-  app.add_option("--renderer", name, "renderer plugin (hilight plugins lists them)")->capture_default_str();
+std::string exit_codes_help(bool with_unmet) {
+  std::string out = "Exit codes: 0 done; 2 bad input (one line on stderr says what, and no output is written)";
+  if (with_unmet) out += "; 3 the result misses what was asked (--max-dbar, criteria not met; its files are still written)";
+  return out + "; 130 interrupted (Ctrl-C: no half-written file is left); 1 an internal error (a bug: please report it).";
+}
+
+void RendererOptions::add_to(CLI::App& app, const std::string& tuning_group) {
   app.add_option("--bounces", bounces,
-                 "diffuse bounces: all (every bounce, to convergence), 0 (direct light only), 1 (the first bounce), or a count up to 1000")
+                 "how many times light bounces off surfaces: all (as in reality, the default), 0 (direct light only), "
+                 "1 (the first bounce), or a count up to 1000")
       ->check(BounceCount)
       ->capture_default_str();
-  app.add_option("--bounce-samples", bounce_samples, "gather rays per point for the bounce (renderer default if 0)")
-      ->check(CLI::Range(0, 4096));
-  app.add_option("--set", settings, "renderer setting key=value (repeatable)");
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  app.add_option("--renderer", name, "renderer plugin: embree, povray (the reference), ism-vulkan (hilight plugins lists them)")
+      ->capture_default_str();
+  auto* samples = app.add_option("--bounce-samples", bounce_samples, "gather rays per point for the bounce (renderer default if 0)")
+                      ->check(CLI::Range(0, 4096));
+  auto* set = app.add_option("--set", settings, "renderer setting key=value (repeatable)");
+  if (!tuning_group.empty())
+    for (CLI::Option* o : {samples, set}) o->group(tuning_group);
 }
 
 std::string RendererOptions::bounces_for(const Registry& registry) const {
@@ -69,16 +81,25 @@ std::unique_ptr<Renderer> RendererOptions::create(const Registry& registry, std:
 }
 
 
-void add_scene_options(CLI::App& app, SceneLoadOptions& options) {
-  app.add_option("--max-edge", options.max_edge, "longest edge after tessellation, in the file's unit (default: diagonal/40)")
-      ->check(FiniteNonNegative);
-  app.add_option("--max-vertices", options.max_vertices, "the most vertices the tessellation may make")
-      ->check(CLI::Range(size_t(1), size_t(2000000000)))
-      ->capture_default_str();
+void check_output_type(const std::string& path, const std::vector<std::string>& known, const std::string& advice) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext.empty() || std::find(known.begin(), known.end(), ext) != known.end()) return;
+  throw InputError(path, "unknown output type '" + ext + "' (" + advice + ")");
+}
+
+void add_scene_options(CLI::App& app, SceneLoadOptions& options, const std::string& tuning_group) {
   app.add_option("--unit", options.unit,
                  "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); "
                  "positions in files and options are in it")
       ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
+  auto* edge = app.add_option("--max-edge", options.max_edge, "longest edge after tessellation, in the file's unit (default: diagonal/40)")
+                   ->check(FiniteNonNegative);
+  auto* vertices = app.add_option("--max-vertices", options.max_vertices, "the most vertices the tessellation may make")
+                       ->check(CLI::Range(size_t(1), size_t(2000000000)))
+                       ->capture_default_str();
+  if (!tuning_group.empty())
+    for (CLI::Option* o : {edge, vertices}) o->group(tuning_group);
 }
 
 } // namespace hilight::cli

@@ -18,6 +18,16 @@ namespace hilight::cli {
 
 using hilight::parse_arguments;
 
+/// The help group of what few users need: the paper's parameters, plugins
+/// and their tuning (listed after the options a user needs).
+inline constexpr const char* kAdvanced = "Advanced (tuning, plugins)";
+/// The same for solve: the paper's parameters are there too.
+inline constexpr const char* kSolveAdvanced = "Advanced (the paper's parameters, plugins and tuning; docs/solve.md)";
+
+/// The exit codes, for the end of a command's --help (`with_unmet`: 3 is
+/// one of them).
+std::string exit_codes_help(bool with_unmet = false);
+
 /// Renderer choice and its settings, as every rendering command takes them.
 struct RendererOptions {
   std::string name = PluginDefaults::renderer;
@@ -26,7 +36,9 @@ struct RendererOptions {
   std::vector<std::string> settings;  ///< --set key=value, passed through
   int threads = 0;
 
-  void add_to(CLI::App& app);
+  /// `tuning_group`: the help group of --bounce-samples and --set; empty:
+  /// the command's main options.
+  void add_to(CLI::App& app, const std::string& tuning_group = "");
   /// --bounces as a count, or kAllBounces.
   int bounce_count() const { return parse_bounces(bounces, "--bounces"); }
   /// --set's settings with --bounces and --bounce-samples (which win); with
@@ -41,8 +53,14 @@ struct RendererOptions {
   std::unique_ptr<Renderer> create(const Registry& registry, std::shared_ptr<const Scene> scene) const;
 };
 
-/// --max-edge, --max-vertices and --unit: how a command loads its scene.
-void add_scene_options(CLI::App& app, SceneLoadOptions& options);
+/// An output's type is its extension: one not in `known` (".json", ...) is
+/// an InputError naming the file and what is understood (`advice`). A name
+/// without one (a device, `/dev/stdout`, a pipe) is let through.
+void check_output_type(const std::string& path, const std::vector<std::string>& known, const std::string& advice);
+
+/// --unit, --max-edge and --max-vertices: how a command loads its scene
+/// (the last two in `tuning_group` when one is given).
+void add_scene_options(CLI::App& app, SceneLoadOptions& options, const std::string& tuning_group = "");
 
 /// CLI11 validator: a finite number ≥ 0 (NonNegativeNumber lets NaN through).
 extern const CLI::Validator FiniteNonNegative;

@@ -8,6 +8,7 @@
 #include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_file.hpp"
 #include "hilight/io/ply.hpp"
+#include "progress_display.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -41,7 +42,11 @@ std::vector<fs::path> expand_outputs(const std::vector<std::string>& outputs) {
 } // namespace
 
 int run_render(const std::vector<std::string>& args, Registry& registry) {
-  CLI::App app("Illuminate a scene with lights: per-vertex PLY, and/or a PNG/EXR image", "render");
+  CommandProgress progress;  // first: the summary's time is the whole command's
+  CLI::App app("Light a scene with lights: a picture (.png, .exr) and/or the light at every vertex (.ply).\n"
+               "  hilight render SCENE --lights lights.json -o out        (out.ply and out.png)",
+               "render");
+  app.footer(exit_codes_help());
   std::string scene_path, lights_path, camera_text;
   std::vector<std::string> outputs;
   float exposure = 0.f;
@@ -50,12 +55,12 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   // one scene would no longer add up vertex by vertex (superposition).
   std::string refine_text = "0";
   RendererOptions ropts;
-  app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
-  app.add_option("--lights", lights_path, "lights: hilight JSON, or a glTF's KHR_lights_punctual (.gltf/.glb); default: a glTF scene's own lights");
-  app.add_option("-o,--output", outputs, "output: OUT.ply, OUT.png, OUT.exr, or OUT for .ply + .png (repeatable)")->required();
+  app.add_option("scene", scene_path, "the scene: any format assimp reads (OBJ, glTF, FBX, IFC, ...)")->required();
+  app.add_option("--lights", lights_path, "the lights: hilight's .json, or a .gltf/.glb's lights; default: a glTF scene's own lights");
+  app.add_option("-o,--output", outputs, "what to write: OUT.png, OUT.exr, OUT.ply, or OUT for OUT.ply and OUT.png (repeatable)")->required();
   SceneLoadOptions scene_options;
-  add_scene_options(app, scene_options);
-  app.add_option("--camera", camera_text, "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (default frames the scene)");
+  add_scene_options(app, scene_options, kAdvanced);
+  app.add_option("--camera", camera_text, "where the picture is taken from: eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg");
   app.add_option("--width", width, "image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--refine-shadows", refine_text,
@@ -72,13 +77,17 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
         }
         return n >= 0 && n <= 50000000 ? "" : "must be auto or a vertex count from 0 to 50000000";
       })
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kAdvanced);
   std::string units_name = "radiometric";
-  app.add_option("--units", units_name, "radiometric: lights JSON in W/sr, PLY/EXR in W/(sr m2); photometric: candela and cd/m2 (x683)")
+  app.add_option("--units", units_name,
+                 "radiometric: W/sr, and W/(sr m2) in .ply/.exr; photometric: candela and cd/m2 (x683). A lights file that "
+                 "states its intensity_unit is read in it")
       ->check(CLI::IsMember({"radiometric", "photometric"}))
       ->capture_default_str();
   app.add_option("--exposure", exposure, "PNG exposure multiplier (default: automatic)")->check(FiniteNonNegative);
-  ropts.add_to(app);
+  ropts.add_to(app, kAdvanced);
+  progress.add_to(app);
   if (auto code = parse_arguments(app, args)) return *code;
 
   // Everything that can be checked cheaply is checked before any work.
@@ -92,8 +101,11 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   if (!camera_text.empty()) camera = Camera::parse(camera_text);
   registry.renderer_unavailable_reason(ropts.name);  // unknown renderer fails here, before loading
 
-  auto start = std::chrono::steady_clock::now();
+  progress.start();
+  std::optional<ProgressStage> stage;
+  stage.emplace("loading the scene");
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, scene_options));
+  stage.reset();
   // Where the scene was moved, and within the renderers' reach (scene_origin.hpp).
   lights = lights_from_file(lights_path.empty() ? scene_path : lights_path, units, *scene);
   if (camera) {
@@ -103,6 +115,7 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   const bool any_ply = std::any_of(paths.begin(), paths.end(), [](const fs::path& p) { return p.extension() == ".ply"; });
   const long long refine_budget = refine_text == "auto" ? 4 * (long long)scene->positions.size() : std::stoll(refine_text);
   if (any_ply && refine_budget > (long long)scene->positions.size()) {
+    stage.emplace("refining shadow edges");
     // The direct light alone decides where shadow and spot edges run.
     RendererOptions direct = ropts;
     direct.bounces = "0";
@@ -113,12 +126,16 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
       return direct.create(registry, s)->illuminate(SurfacePoints::from_vertices(*s), lights);
     }, refine);
     scene = refined.scene;
+    stage.reset();
     std::fprintf(stderr, "refined shadow edges: %zu -> %zu vertices in %d passes\n", before, scene->positions.size(),
                  refined.passes);
   }
+  stage.emplace("preparing the renderer");
   auto renderer = ropts.create(registry, scene);
+  stage.reset();
 
   for (const auto& path : paths) {
+    stage.emplace("rendering " + path.filename().string());
     if (path.extension() == ".ply") {
       std::vector<Rgb> radiance = renderer->illuminate(SurfacePoints::from_vertices(*scene), lights);
       write_illuminated_ply(path, *scene, radiance_to_units(std::move(radiance), units));
@@ -128,11 +145,11 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
       if (path.extension() == ".exr") image.pixels = radiance_to_units(std::move(image.pixels), units);  // PNG: exposed for display
       write_image(path, image, exposure);
     }
+    stage.reset();  // the bar's line is cleared before the line below
     std::fprintf(stderr, "wrote %s\n", path.c_str());
   }
-  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::fprintf(stderr, "rendered %zu vertices, %zu lights with %s (bounces %s) in %.2f s\n", scene->positions.size(),
-               lights.size(), ropts.name.c_str(), ropts.bounces.c_str(), seconds);
+  std::fprintf(stderr, "rendered %zu vertices, %zu lights with %s (bounces %s) in %s\n", scene->positions.size(),
+               lights.size(), ropts.name.c_str(), ropts.bounces.c_str(), progress.time_summary().c_str());
   return 0;
 }
 

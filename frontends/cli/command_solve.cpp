@@ -14,6 +14,7 @@
 #include "hilight/scene_origin.hpp"
 #include "hilight/pipeline/solve_session.hpp"
 #include "hilight/threads.hpp"
+#include "progress_display.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -94,7 +95,12 @@ Light area_light_template(const std::string& spec) {
 } // namespace
 
 int run_solve(const std::vector<std::string>& args, Registry& registry) {
-  CLI::App app("Find the lights that produce a target illumination", "solve");
+  CommandProgress progress;  // first: the summary's time is the whole command's
+  CLI::App app("Find the lights that produce a target: how many, where, how bright.\n"
+               "  hilight solve SCENE --target painted.ply -o lights.json\n"
+               "  hilight solve SCENE --target desks.json --luminaire panel.ies -o lights.json   (lux criteria)",
+               "solve");
+  app.footer(exit_codes_help(true));
   std::string scene_path, target_path, output, report_path, initial_path, mode = "solve", hints_path, cache_dir;
   std::vector<std::string> place_rules;
   SolveSpec spec;
@@ -103,92 +109,121 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   unsigned long long seed = 1;
   SolveSettings& s = spec.settings;
   RendererOptions ropts;
-  app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
-  app.add_option("--target", target_path,
-                 "target PLY (x y z red green blue [weight]), glTF with vertex colours (COLOR_0), or illuminance criteria "
-                 "(.json, from hilight target workplane; needs --luminaire)")
-      ->required();
   CriteriaSolve criteria;
+  std::string mount;
+  float mount_offset = -1.f;
+  bool vertex_colours = false;
+  std::string html_path;
+  std::string luminaire_path;
+  float luminaire_spin = 0.f;
+  std::string luminaire_size, area_light;
+  std::string units_name = "radiometric", quantity_name = "luminance";
+  SceneLoadOptions scene_options;
+  // What a user needs, in the order they need it; the rest under kSolveAdvanced.
+  app.add_option("scene", scene_path, "the scene: any format assimp reads (OBJ, glTF, FBX, IFC, ...)")->required();
+  app.add_option("--target", target_path,
+                 "the light wanted: painted colours (.ply, or .gltf/.glb with vertex colours), or lux criteria "
+                 "(.json from hilight target workplane; needs --luminaire)")
+      ->required();
+  app.add_option("-o,--output", output, "where to write the lights: .json (hilight's lights file) or .gltf/.glb (scene and lights, for Blender)")
+      ->required();
+  app.add_option("--lights", s.fixed_count, "how many lights (default: the solve decides)")->check(CLI::Range(1, 10000));
+  app.add_option("--place", place_rules,
+                 "where lights may go (repeatable): ceiling[:OFFSET] (hanging OFFSET below the ceiling, default 0.2), "
+                 "height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1 (inside one of the boxes), exclude:X0,Y0,Z0,X1,Y1,Z1, "
+                 "region:K (in room K, as hilight info numbers them), not-region:K, count:MIN:MAX (how many lights)");
+  app.add_option("--luminaire", luminaire_path,
+                 "every light is this luminaire (an .ies or .ldt file), aimed down: the solve finds how many, where, and their dimming");
+  app.add_option("--area-light", area_light,
+                 "every light is a flat panel or tube aimed down: rectangle:WxH, disk:D or line:L (in the scene's unit)");
+  app.add_option("--mount", mount, "ceiling: every light hangs --offset below the ceiling (the same as --place ceiling:OFFSET)")
+      ->check(CLI::IsMember({"ceiling"}));
+  app.add_option("--offset", mount_offset, "with --mount ceiling: how far below the ceiling")->check(CLI::Range(1e-6, 1e6));
+  app.add_option("--units", units_name,
+                 "radiometric: intensities in W/sr, painted values in W/(sr m2); photometric: candela, and cd/m2 or lux "
+                 "(--target-quantity)")
+      ->check(CLI::IsMember({"radiometric", "photometric"}))
+      ->capture_default_str();
+  app.add_option("--target-quantity", quantity_name, "what the painted values are: luminance, or illuminance (lux on the surface; photometric)")
+      ->check(CLI::IsMember({"luminance", "radiance", "illuminance"}))
+      ->capture_default_str();
+  app.add_option("--report-html", html_path,
+                 "write a page to look at: target, result and difference from three views, a plan of each storey, the lights, timings");
+  app.add_option("--report", report_path, "write the figures as JSON (D̄, light count, flux, timings)");
+  app.add_option("--mode", mode, "solve; fine-tune (move and dim the lights of --initial); add (lights for what --initial misses)")
+      ->check(CLI::IsMember({"solve", "fine-tune", "add"}))
+      ->capture_default_str();
+  app.add_option("--initial", initial_path, "the lights to start from, with --mode fine-tune or add");
+  app.add_option("--max-dbar", max_dbar, "fail (exit 3, lights still written) when the fit's error D̄ is above this, e.g. 0.015")
+      ->check(CLI::Range(0.0, 1e9));
+  add_scene_options(app, scene_options, kSolveAdvanced);
+  ropts.add_to(app, kSolveAdvanced);
+  app.add_flag("-q,--quiet", quiet, "no progress or summary on stderr (warnings stay)");
+  progress.add_to(app);
+
+  // Advanced: the paper's parameters, the plugins and their tuning.
+  app.add_option("--spot-hints", hints_path, "lights JSON of spotlights wanted (position, direction, cutoff; intensity ignored)")->group(kSolveAdvanced);
+  app.add_flag("--propose-spots,!--no-propose-spots", s.propose_spots,
+               "when point lights leave D̄ above 5%, look for spotlights without --spot-hints (default: on)")
+      ->group(kSolveAdvanced);
+  app.add_option("--luminaire-spin", luminaire_spin, "turn the luminaire's C0 plane about its aim, degrees")
+      ->check(CLI::Range(-360.0, 360.0))
+      ->group(kSolveAdvanced);
+  app.add_option("--luminaire-size", luminaire_size, "auto: the luminaire is its file's luminous opening (a rectangle, disk or line), integrated over it")
+      ->check(CLI::IsMember({"auto"}))
+      ->group(kSolveAdvanced);
+  app.add_flag("--vertex-colours", vertex_colours, "with a .gltf/.glb output: the result as COLOR_0 and the target as COLOR_1 (alpha: weight) per vertex")
+      ->group(kSolveAdvanced);
   app.add_option("--energy-tolerance", criteria.design.energy_tolerance,
                  "with criteria: the fewest luminaires whose total flux is within this share of the least possible")
       ->check(CLI::Range(0.0, 10.0))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kSolveAdvanced);
   app.add_option("--candidate-spacing", criteria.design.candidate_spacing,
                  "with criteria: the lattice of places tried (default: a third of the finest grid's spacing)")
-      ->check(CLI::Range(1e-4, 1e6));
-  std::string mount;
-  float mount_offset = -1.f;
-  app.add_option("--mount", mount, "ceiling: every light hangs --offset below the ceiling (the same as --place ceiling:OFFSET)")
-      ->check(CLI::IsMember({"ceiling"}));
-  app.add_option("--offset", mount_offset, "with --mount ceiling: the distance below the ceiling")->check(CLI::Range(1e-6, 1e6));
-  app.add_option("-o,--output", output, "lights to write: .json (hilight's), or .gltf/.glb (the scene's meshes and the lights as KHR_lights_punctual)")->required();
-  bool vertex_colours = false;
-  std::string html_path;
-  app.add_option("--report-html", html_path, "write a page for a person: target, result and difference from three views, D̄ against the light count, the lights, timings");
-  std::string luminaire_path;
-  float luminaire_spin = 0.f;
-  app.add_option("--luminaire", luminaire_path,
-                 "every light is this luminaire (IES LM-63 or EULUMDAT), aimed straight down: the solve finds how many, where, and their dimming");
-  app.add_option("--luminaire-spin", luminaire_spin, "turn the luminaire's C0 plane about its aim, degrees")->check(CLI::Range(-360.0, 360.0));
-  std::string luminaire_size, area_light;
-  app.add_option("--luminaire-size", luminaire_size, "auto: the luminaire is its file's luminous opening (a rectangle, disk or line), integrated over it")
-      ->check(CLI::IsMember({"auto"}));
-  app.add_option("--area-light", area_light,
-                 "every light is this Lambertian source, aimed straight down: rectangle:WxH, disk:D or line:L (scene units; W and a line along +X)");
-  std::string units_name = "radiometric", quantity_name = "luminance";
-  app.add_option("--units", units_name,
-                 "radiometric: lights JSON in W/sr, targets in W/(sr m2); photometric: candela, and targets in cd/m2 or lux (--target-quantity)")
-      ->check(CLI::IsMember({"radiometric", "photometric"}))
-      ->capture_default_str();
-  app.add_option("--target-quantity", quantity_name, "what the target's values are: luminance (radiance) or illuminance (lux on the surface, photometric)")
-      ->check(CLI::IsMember({"luminance", "radiance", "illuminance"}))
-      ->capture_default_str();
-  app.add_flag("--vertex-colours", vertex_colours, "with a .gltf/.glb output: the result as COLOR_0 and the target as COLOR_1 (alpha: weight) per vertex");
-  app.add_option("--report", report_path, "write a JSON report (D̄, cuts, timings) here");
-  app.add_option("--optimizer", spec.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
-  app.add_option("--sampler", spec.sampler, "surface sampling plugin (importance, uniform)")->capture_default_str();
-  app.add_option("--opt", spec.optimizer_settings, "optimizer setting key=value (repeatable)");
-  app.add_option("--lights", s.fixed_count, "fix the number of point lights (default: automatic)")->check(CLI::Range(1, 10000));
-  app.add_option("--initial", initial_path, "lights to start from (with --mode)");
-  app.add_option("--mode", mode, "solve | fine-tune (re-optimize --initial) | add (append lights for what --initial misses)")
-      ->check(CLI::IsMember({"solve", "fine-tune", "add"}))
-      ->capture_default_str();
-  app.add_option("--spot-hints", hints_path, "lights JSON of spotlights wanted (position, direction, cutoff; intensity ignored)");
-  app.add_option("--seed", seed, "seed of sampling and of the renderer's sample streams")->capture_default_str();
-  SceneLoadOptions scene_options;
-  add_scene_options(app, scene_options);
-  app.add_option("--evaluation-points", s.evaluation_points, "D̄ is measured on every target point up to this many, else on this many evenly spaced ones (an estimate; 0: every point)")
-      ->capture_default_str();
-  app.add_flag("--no-residual-samples", [&](int64_t) { s.residual_samples = false; },
-               "no second polish with the worst-explained target points added as samples");
+      ->check(CLI::Range(1e-4, 1e6))
+      ->group(kSolveAdvanced);
+  app.add_option("--evaluation-points", s.evaluation_points,
+                 "D̄ is measured on every target point up to this many, else on this many evenly spaced ones (an estimate; 0: every point)")
+      ->capture_default_str()
+      ->group(kSolveAdvanced);
   app.add_option("--samples", s.samples, "surface samples used by the solve (default: target points / 14, within 3000-10000)")
-      ->check(CLI::Range(10, 10000000));
-  app.add_option("--n-cut", s.n_cut, "N_cut: cuts refined")->check(CLI::Range(1, 1000))->capture_default_str();
-  app.add_option("--eps-opt", s.eps_opt, "ε_opt: refine only cuts with D̄ below")->check(CLI::Range(0.0, 10.0))->capture_default_str();
-  app.add_option("--eps-impro", s.eps_impro, "ε_impro: improvement ratio that justifies one more light")->check(CLI::Range(1.0, 1000.0))->capture_default_str();
-  app.add_option("--weak-threshold", s.seeding.weak_threshold, "ε_w: weak-light deletion threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
-  app.add_option("--seed-cells", s.seeding.coarse_cells, "seeding cells along the longest axis")->check(CLI::Range(1, 16))->capture_default_str();
-  app.add_option("--seed-iterations", s.seeding.iterations, "seeding levels")->check(CLI::Range(1, 6))->capture_default_str();
-  app.add_option("--place", place_rules,
-                 "where lights may stand (repeatable): ceiling[:OFFSET] (mounted OFFSET below the ceiling, default 0.2), "
-                 "height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1 (inside one of the boxes), exclude:X0,Y0,Z0,X1,Y1,Z1");
-  app.add_option("--max-dbar", max_dbar, "fail (exit 3, lights still written) when D̄ is above this, e.g. 0.015")
-      ->check(CLI::Range(0.0, 1e9));
+      ->check(CLI::Range(10, 10000000))
+      ->group(kSolveAdvanced);
+  app.add_flag("--no-residual-samples", [&](int64_t) { s.residual_samples = false; },
+               "no second polish with the worst-explained target points added as samples")
+      ->group(kSolveAdvanced);
+  app.add_option("--n-cut", s.n_cut, "N_cut: cuts refined")->check(CLI::Range(1, 1000))->capture_default_str()->group(kSolveAdvanced);
+  app.add_option("--eps-opt", s.eps_opt, "ε_opt: refine only cuts with D̄ below")->check(CLI::Range(0.0, 10.0))->capture_default_str()->group(kSolveAdvanced);
+  app.add_option("--eps-impro", s.eps_impro, "ε_impro: improvement ratio that justifies one more light")
+      ->check(CLI::Range(1.0, 1000.0))
+      ->capture_default_str()
+      ->group(kSolveAdvanced);
+  app.add_option("--weak-threshold", s.seeding.weak_threshold, "ε_w: weak-light deletion threshold")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str()
+      ->group(kSolveAdvanced);
+  app.add_option("--seed-cells", s.seeding.coarse_cells, "seeding cells along the longest axis")->check(CLI::Range(1, 16))->capture_default_str()->group(kSolveAdvanced);
+  app.add_option("--seed-iterations", s.seeding.iterations, "seeding levels")->check(CLI::Range(1, 6))->capture_default_str()->group(kSolveAdvanced);
   app.add_option("--open-space-dbar", s.open_space_dbar,
                  "when lights inside the scene's bounds leave D̄ above this, look again beyond its open sides (0: never)")
       ->check(CLI::Range(0.0, 1e9))
-      ->capture_default_str();
-  app.add_flag("--propose-spots,!--no-propose-spots", s.propose_spots,
-               "when point lights leave D̄ above 5%, look for spotlights without --spot-hints (default: on)");
+      ->capture_default_str()
+      ->group(kSolveAdvanced);
+  app.add_option("--optimizer", spec.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str()->group(kSolveAdvanced);
+  app.add_option("--opt", spec.optimizer_settings, "optimizer setting key=value (repeatable)")->group(kSolveAdvanced);
+  app.add_option("--sampler", spec.sampler, "surface sampling plugin (importance, uniform)")->capture_default_str()->group(kSolveAdvanced);
+  app.add_option("--seed", seed, "seed of sampling and of the renderer's sample streams")->capture_default_str()->group(kSolveAdvanced);
   app.add_option("--cache", spec.cache, "light cache plugin (grid, adaptive) or none: every response from the renderer")
-      ->capture_default_str();
-  app.add_option("--cache-setting", spec.cache_settings, "light cache setting key=value (repeatable; grid: cells, adaptive: cells depth tolerance nodes)");
+      ->capture_default_str()
+      ->group(kSolveAdvanced);
+  app.add_option("--cache-setting", spec.cache_settings, "light cache setting key=value (repeatable; grid: cells, adaptive: cells depth tolerance nodes)")
+      ->group(kSolveAdvanced);
   app.add_option_function<int>("--cache-cells", [&](int cells) { spec.cache_settings.push_back("cells=" + std::to_string(cells)); },
-                               "the same as --cache-setting cells=N");
-  app.add_flag("--no-cache", no_cache, "the same as --cache none");
-  app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
-  app.add_flag("-q,--quiet", quiet, "no progress or summary on stderr");
-  ropts.add_to(app);
+                               "the same as --cache-setting cells=N")
+      ->group(kSolveAdvanced);
+  app.add_flag("--no-cache", no_cache, "the same as --cache none")->group(kSolveAdvanced);
+  app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)")->group(kSolveAdvanced);
   if (auto code = parse_arguments(app, args)) return *code;
 
   for (const auto& rule : place_rules) s.placement.add(rule);
@@ -196,6 +231,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   if (!mount.empty()) s.placement.add(mount_offset >= 0.f ? "ceiling:" + std::to_string(mount_offset) : "ceiling");
   if (mode != "solve" && initial_path.empty()) throw InputError("--mode " + mode + " needs --initial LIGHTS.json");
   if (mode == "solve" && !initial_path.empty()) throw InputError("--initial needs --mode fine-tune or add");
+  check_output_type(output, {".json", ".gltf", ".glb"}, "use .json for hilight's lights file, .gltf or .glb for the scene and its lights");
   check_writable(output);
   if (!report_path.empty()) check_writable(report_path);
   if (!html_path.empty()) check_writable(html_path);
@@ -223,6 +259,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   }
   if (is_criteria_target(target_path)) {
     if (mode != "solve") throw InputError("--mode " + mode + " works on painted targets, not on criteria (" + target_path + ")");
+    progress.start(quiet);
     criteria.scene_path = scene_path;
     criteria.target_path = target_path;
     criteria.output = output;
@@ -256,8 +293,9 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   spec.renderer_settings = ropts.assignments(&registry);
   SolveSession::check_names(registry, spec);  // unknown plugins fail before the scene loads
 
-  const bool progress = !quiet && ::isatty(2);
+  progress.start(quiet);
   set_thread_limit(ropts.threads);
+  std::optional<ProgressStage> stage(std::in_place, "loading the scene");
   auto scene = std::make_shared<const Scene>(load_scene(scene_path, scene_options));
   auto rays = RayScene::shared(scene);
   // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).
@@ -266,6 +304,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   s.placement = rules_to_local(std::move(s.placement), scene->frame);
   // --area-light's size is in the scene's unit (a file's opening is in metres already).
   if (s.luminaire && is_area(s.luminaire->type) && !s.luminaire->profile) s.luminaire->size *= float(scene->frame.scale);
+  stage.emplace("reading the target");
   Target target = read_target(target_path, *scene, *rays);
   target_from_units(target, units, quantity);
   s.seed = seed;
@@ -277,18 +316,26 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   s.cache_dir = spec.cache == PluginDefaults::no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
   s.cache_cap_bytes = default_cache_cap_bytes();
 
+  stage.emplace("preparing the renderers");
   SolveSession session(registry, spec, scene, rays);
+  stage.reset();
   ropts.note_bounces(registry);
-  const auto solver_owned = session.make_solver([&](const std::string& stage) {
-    if (progress) std::fprintf(stderr, "hilight: %s...\n", stage.c_str());
+  // The solver's stages are parts of one "solving" stage.
+  std::optional<ProgressStage> solver_stage;
+  const auto solver_owned = session.make_solver([&](const std::string& name) {
+    solver_stage.reset();
+    solver_stage.emplace(name);
   });
   Solver& solver = *solver_owned;
   SolveReport report;
   Lighting lights;
   try {
+    stage.emplace(mode == "solve" ? "solving" : mode == "add" ? "adding lights" : "fine-tuning");
     lights = mode == "fine-tune" ? solver.fine_tune(target, initial, report)
              : mode == "add"     ? solver.add_lights(target, initial, report)
                                  : solver.solve(target, report);
+    solver_stage.reset();
+    stage.reset();
   } catch (const InputError& e) {
     // The solver names the lights ("lights to fine-tune: light 0 ..."); the user needs the file.
     const std::string what = e.what();
@@ -296,6 +343,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     if (what.rfind("spot hints", 0) == 0) throw InputError(hints_path, what);
     throw;
   }
+  stage.emplace("writing " + std::filesystem::path(output).filename().string());
   if (is_gltf_path(output)) {
     GltfExport gltf;
     gltf.scene = scene.get();
@@ -342,6 +390,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     write_atomically(report_path, text);
   }
   if (!html_path.empty()) {
+    stage.emplace("writing the HTML report");
     HtmlReport page;
     page.scene = scene.get();
     page.rays = rays.get();
@@ -353,6 +402,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     page.units = units_name;
     write_html_report(html_path, page);
   }
+  stage.reset();
+  progress.stop();  // the bar's line is cleared before the summary
   if (!quiet) {
     const std::string over = report.dbar_points == report.target_points
                                  ? "all " + std::to_string(report.target_points) + " target points"
@@ -362,9 +413,9 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
                                 : s.luminaire ? std::string(" (") + to_string(s.luminaire->type) + ")"
                                 : spots     ? " (" + std::to_string(spots) + (spots == 1 ? " spot)" : " spots)")
                                             : "";
-    std::fprintf(stderr, "hilight: %zu light%s%s, D̄ %.2f%% over %s (%zu samples), %.2f s -> %s\n", report.chosen,
+    std::fprintf(stderr, "hilight: %zu light%s%s, D̄ %.2f%% over %s (%zu samples), %s -> %s\n", report.chosen,
                  report.chosen == 1 ? "" : "s", of_them.c_str(), 100.0 * report.dbar, over.c_str(), report.samples,
-                 report.seconds["total"], output.c_str());
+                 progress.time_summary().c_str(), output.c_str());
     if (report.open_space)
       std::fprintf(stderr, "hilight: lit from outside: lights beyond the scene's bounds (inside them D̄ was %.1f%%)\n",
                    100.0 * report.dbar_closed);

@@ -7,6 +7,7 @@
 #include "hilight/io/html_report.hpp"
 #include "hilight/io/lights_file.hpp"
 #include "hilight/threads.hpp"
+#include "progress_display.hpp"
 #include "hilight/units.hpp"
 #include "hilight/scene_origin.hpp"
 
@@ -69,6 +70,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   if (!a.luminaire) throw InputError(a.target_path + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
   IlluminanceCriteria criteria = read_criteria(a.target_path);
   set_thread_limit(a.renderer.threads);
+  std::optional<ProgressStage> stage(std::in_place, "loading the scene");
   auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, a.scene_options));
   auto rays = RayScene::shared(scene);
   const auto reference = a.renderer.create(registry, scene);
@@ -86,8 +88,10 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   settings.max_count = rules.max_count;
   const LightSpace space(*rays, rules);
   DesignReport report;
+  stage.emplace("placing the luminaires");
   const Lighting lights = design_for_illuminance(*reference, space, *a.luminaire, criteria, settings, report);
 
+  stage.emplace("writing " + std::filesystem::path(a.output).filename().string());
   const Units units = parse_units(a.units_name);
   if (is_gltf_path(a.output)) {
     GltfExport gltf;
@@ -105,6 +109,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
     write_atomically(a.report_path, text);
   }
   if (!a.html_path.empty()) {
+    stage.emplace("writing the HTML report");
     HtmlReport page;
     page.scene = scene.get();
     page.rays = rays.get();
@@ -117,6 +122,8 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
     page.design = report;
     write_html_report(a.html_path, page);
   }
+  stage.reset();
+  stop_command_progress();  // the bar's line is cleared before the summary
   const std::string name = std::filesystem::path(a.luminaire->profile_path).filename().string();
   if (!a.quiet) {
     for (size_t g = 0; g < criteria.grids.size(); ++g) {
@@ -126,9 +133,9 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
                    f.u0, c.lux, c.u0, f.met ? "" : "  NOT MET");
     }
     std::string power = a.luminaire->profile->input_watts > 0 ? ", " + std::to_string(int(std::lround(report.power_w))) + " W" : "";
-    std::fprintf(stderr, "hilight: %zu luminaire%s (%s, %s), %.0f lm%s (least possible %.0f lm), %.2f s -> %s\n", lights.size(),
+    std::fprintf(stderr, "hilight: %zu luminaire%s (%s, %s), %.0f lm%s (least possible %.0f lm), %s -> %s\n", lights.size(),
                  lights.size() == 1 ? "" : "s", name.c_str(), rules.describe().c_str(), report.flux_lm, power.c_str(),
-                 report.least_flux_lm, report.seconds["total"], a.output.c_str());
+                 report.least_flux_lm, command_time_summary(report.seconds["total"]).c_str(), a.output.c_str());
   }
   if (!report.met && report.shortfall_lux <= 0) {  // the program met them; the measurement did not
     std::fprintf(stderr, "hilight: %s: the criteria are not met when the lights found are measured (lights written to %s)\n",

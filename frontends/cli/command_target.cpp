@@ -68,6 +68,7 @@ int run_target(const std::vector<std::string>& args) {
   add_scene_options(app, scene_options);
   if (auto code = parse_arguments(app, args)) return *code;
   if (region >= 0 && !box_text.empty()) throw InputError("--region and --box: give one area");
+  check_output_type(output, {".json"}, "criteria are written as .json");
   check_writable(output);
   IlluminanceCriteria criteria;
   if (append && std::filesystem::exists(output)) criteria = read_criteria(output);

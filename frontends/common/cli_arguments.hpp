@@ -5,12 +5,56 @@
 #include "hilight/error.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
 #include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace hilight {
+
+/// Edits (insert, delete, replace, swap two neighbours) from `a` to `b`.
+inline size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i)
+    for (size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+/// The option of `app` nearest to `given` ("--lihgts" -> "--lights"), or ""
+/// when none is near enough to be what was meant.
+inline std::string nearest_option(const CLI::App& app, const std::string& given) {
+  std::string best;
+  size_t best_distance = std::string::npos;
+  const std::string bare = given.substr(given.find_first_not_of('-'));
+  for (const CLI::Option* opt : app.get_options()) {
+    for (const auto& name : opt->get_lnames()) {
+      const size_t d = edit_distance(bare, name);
+      if (d < best_distance) best_distance = d, best = "--" + name;
+    }
+  }
+  // Near: a slip of a key or two, fewer the shorter the name.
+  const size_t allowed = std::max<size_t>(1, std::min<size_t>(3, bare.size() / 3));
+  return best_distance <= allowed ? best : std::string();
+}
+
+/// The first argument CLI11 could not place that looks like an option
+/// ("--lihgts", "-x"; not a negative number), or "".
+inline std::string unknown_option(const CLI::App& app) {
+  for (const auto& arg : app.remaining()) {
+    const std::string name = arg.substr(0, arg.find('='));
+    const bool long_form = name.size() > 2 && name.compare(0, 2, "--") == 0;
+    const bool short_form = name.size() == 2 && name[0] == '-' && std::isalpha(static_cast<unsigned char>(name[1]));
+    if (long_form || short_form) return name;
+  }
+  return "";
+}
 
 /// Parses `args` into `app`. Returns an exit code when the command should
 /// stop here (--help printed: 0), nullopt to go on; bad arguments throw
@@ -23,6 +67,13 @@ inline std::optional<int> parse_arguments(CLI::App& app, const std::vector<std::
     std::cout << app.help();
     return 0;
   } catch (const CLI::ParseError& e) {
+    // An option misspelled is said first (before "--target is required",
+    // which it may be the cause of), with the one that was probably meant.
+    if (const std::string unknown = unknown_option(app); !unknown.empty()) {
+      const std::string meant = nearest_option(app, unknown);
+      throw InputError(app.get_name() + ": unknown option " + unknown +
+                       (meant.empty() ? " (" + app.get_name() + " --help lists the options)" : "; did you mean " + meant + "?"));
+    }
     throw InputError(app.get_name() + ": " + e.what());
   }
   return std::nullopt;

@@ -27,10 +27,34 @@ void EmbreeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
                     [&](size_t v) { m_vertex_shading[v] = shading_point(*m_embree, s.positions[v], s.normals[v]); });
 }
 
-std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoints& points) {
+namespace {
+/// A ray cast's cost against one hit read in the vertex transport's steps (for progress only).
+constexpr double kReadsPerRay = 20.0;
+} // namespace
+
+double EmbreeRenderer::gather_rays(const SurfacePoints& points, bool bounce) {
+  if (!bounce) return 0.0;
+  const double rays = double(points.size()) * m_settings.bounce_samples;
+  // Only a call that may be long pays for the key (a hash of the points).
+  return rays < CallProgress::kReported / 4 || m_gathers.contains(points.content_key()) ? 0.0 : rays;
+}
+
+double EmbreeRenderer::further_rays(size_t lights, bool bounce) const {
+  if (!bounce || !m_settings.further_bounces()) return 0.0;
+  const double v = double(m_scene->positions.size());
+  const double build = m_multi_built.load() ? 0.0 : v * m_settings.transport_samples;
+  const int steps = m_multi_built.load() ? m_multi->expected_steps()
+                                          : (m_settings.bounces == kAllBounces ? 8 : m_settings.bounces - 1);
+  return build + 2.0 * v * double(lights) + double(steps) * double(lights) * 2.0 * v * m_settings.transport_samples / kReadsPerRay;
+}
+
+std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoints& points, CallProgress* progress) {
   auto origins = shading_points(points);
   return m_gathers.get(points.content_key(), [&] {
-    auto gather = std::make_shared<const BounceGather>(*m_embree, points, *origins, m_settings.bounce_samples, m_settings.seed);
+    CallProgress::Phase phase(progress, "gathering the first bounce", double(points.size()),
+                              double(points.size()) * m_settings.bounce_samples);
+    auto gather = std::make_shared<const BounceGather>(*m_embree, points, *origins, m_settings.bounce_samples, m_settings.seed,
+                                                       phase.stage());
     m_rays += gather->rays_cast();
     return gather;
   });
@@ -45,26 +69,35 @@ std::shared_ptr<const std::vector<ShadingPoint>> EmbreeRenderer::shading_points(
   });
 }
 
-const MultiBounce* EmbreeRenderer::multi_bounce() {
+const MultiBounce* EmbreeRenderer::multi_bounce(CallProgress* progress) {
   if (!m_settings.further_bounces()) return nullptr;
   std::call_once(m_multi_once, [&] {
+    const double vertices = double(m_scene->positions.size());
+    CallProgress::Phase phase(progress, "tracing paths between surfaces", vertices, vertices * m_settings.transport_samples);
     m_multi = std::make_unique<MultiBounce>(*m_embree, m_vertex_shading, m_settings.transport_samples, m_settings.seed,
-                                            m_settings.bounces);
+                                            m_settings.bounces, phase.stage());
     m_rays += m_multi->rays_cast();
+    m_multi_built.store(true);
   });
   return m_multi.get();
 }
 
 std::vector<Rgb> EmbreeRenderer::bounced_fields(std::span<const PreparedLight> lights, const std::vector<uint32_t>& also_direct,
-                                                std::vector<float>& direct) {
-  const MultiBounce* multi = multi_bounce();
+                                                std::vector<float>& direct, CallProgress* progress) {
+  const MultiBounce* multi = multi_bounce(progress);
   if (!multi) return {};
   std::vector<uint32_t> entries;
   entries.reserve(multi->vertex_sides_read().size() + also_direct.size());
   std::set_union(multi->vertex_sides_read().begin(), multi->vertex_sides_read().end(), also_direct.begin(), also_direct.end(),
                  std::back_inserter(entries));
-  direct = vertex_direct_irradiance(lights, entries);
-  return multi->bounced_field(direct, lights.size());
+  // Its estimate counted every side of every vertex.
+  const double v = double(m_scene->positions.size()), l = double(lights.size());
+  if (progress && progress->stage()) progress->stage()->advance(std::max(0.0, 2.0 * v - double(entries.size())) * l);
+  direct = vertex_direct_irradiance(lights, entries, progress);
+  const int steps = multi->expected_steps();
+  CallProgress::Phase phase(progress, "bouncing the light on", steps,
+                            double(steps) * l * 2.0 * v * m_settings.transport_samples / kReadsPerRay);
+  return multi->bounced_field(direct, lights.size(), phase.stage());
 }
 
 std::string EmbreeRenderer::settings_key() const {
@@ -77,13 +110,15 @@ std::string EmbreeRenderer::settings_key() const {
 }
 
 std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const PreparedLight> lights,
-                                                           const std::vector<uint32_t>& vertex_sides) {
+                                                           const std::vector<uint32_t>& vertex_sides, CallProgress* progress) {
   // Two values per vertex and light: the side its normal points to, the
   // other; only those the gather reads are computed (the rest stay 0).
   const Scene& scene = *m_scene;
   const size_t v_count = scene.positions.size();
   std::vector<float> out(2 * v_count * lights.size());
   tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
+  CallProgress::Phase phase(progress, "direct light at the vertices", double(vertex_sides.size()),
+                            double(vertex_sides.size()) * double(lights.size()));
   tbb::parallel_for(tbb::blocked_range<size_t>(0, vertex_sides.size(), 128), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t j = 0; j < lights.size(); ++j)
       for (size_t k = r.begin(); k != r.end(); ++k) {
@@ -92,6 +127,7 @@ std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const Prep
         const Vec3& n = scene.normals[v];
         out[j * 2 * v_count + entry] = unit_direct_irradiance_on_side(*m_embree, p, n, entry & 1 ? -n : n, lights[j], rays.local());
       }
+    phase.advance(double(r.size()));
   });
   m_rays += rays.combine(std::plus<uint64_t>());
   return out;
@@ -116,24 +152,36 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
   size_t group = lights.size();
   if (m_settings.further_bounces() && transport != Transport::DirectOnly)
     group = std::max<size_t>(1, size_t(512e6 / (80.0 * double(std::max<size_t>(1, m_scene->positions.size())))));
+  // The call's ray casts, for its progress: the gather (unless kept), the
+  // further bounces' transport for each group, the points' own rays.
+  const bool bounce = m_settings.bounces != 0 && transport != Transport::DirectOnly;
+  double rays = gather_rays(points, bounce) + double(points.size()) * double(lights.size()) * point_rays(transport);
+  for (size_t j0 = 0; j0 < lights.size(); j0 += group) rays += further_rays(std::min(group, lights.size() - j0), bounce);
+  CallProgress progress(rays);
   for (size_t j0 = 0; j0 < lights.size(); j0 += group)
     for_each_response_group(points, lights.subspan(j0, std::min(group, lights.size() - j0)), transport,
-                            [&](size_t i, size_t j, const Rgb& r) { visit(i, j0 + j, r); });
+                            [&](size_t i, size_t j, const Rgb& r) { visit(i, j0 + j, r); }, &progress);
+}
+
+double EmbreeRenderer::point_rays(Transport transport) const {
+  const bool direct = transport != Transport::IndirectOnly, bounce = m_settings.bounces != 0 && transport != Transport::DirectOnly;
+  // Each gather hit's shadow ray toward the light, unless read from the vertices.
+  return (direct ? 1.0 : 0.0) + (bounce ? (m_settings.vertex_interpolated_bounce ? 1.0 : double(m_settings.bounce_samples)) : 0.0);
 }
 
 template <class Visit>
 void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::span<const Light> lights, Transport transport,
-                                             Visit&& visit) {
+                                             Visit&& visit, CallProgress* progress) {
   std::vector<PreparedLight> prepared(lights.begin(), lights.end());
   const bool want_direct = transport != Transport::IndirectOnly;
   std::shared_ptr<const BounceGather> gather_owner;
-  if (m_settings.bounces != 0 && transport != Transport::DirectOnly) gather_owner = gather_for(points);
+  if (m_settings.bounces != 0 && transport != Transport::DirectOnly) gather_owner = gather_for(points, progress);
   const BounceGather* gather = gather_owner.get();
   std::vector<float> vertex_direct;
   std::vector<Rgb> bounced;  // the light bounced once or more, at the vertices (more than one bounce)
   if (gather) {
     const std::vector<uint32_t> none, &direct_read = m_settings.vertex_interpolated_bounce ? gather->vertex_sides_read() : none;
-    bounced = bounced_fields(prepared, direct_read, vertex_direct);
+    bounced = bounced_fields(prepared, direct_read, vertex_direct, progress);
     if (bounced.empty() && m_settings.vertex_interpolated_bounce) vertex_direct = vertex_direct_irradiance(prepared, direct_read);
   }
   const size_t v_count = m_scene->positions.size();
@@ -146,6 +194,8 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
   // staple) get few, large chunks: task scheduling would cost more than rays.
   const size_t work = points.size() * std::max<size_t>(1, lights.size());
   const size_t grain = work < 200000 ? std::max<size_t>(32, points.size() / 8) : 32;
+  CallProgress::Phase phase(progress, "lighting the points", double(points.size()),
+                            double(points.size()) * double(prepared.size()) * point_rays(transport));
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), grain), [&](const tbb::blocked_range<size_t>& range) {
     uint64_t& local_rays = rays.local();
     for (size_t j = 0; j < prepared.size(); ++j) {
@@ -168,6 +218,7 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
         visit(i, j, points.albedo[i] * float(1.0 / kPi) * e);
       }
     }
+    phase.advance(double(range.size()));
   });
   m_rays += rays.combine(std::plus<uint64_t>());
 }
@@ -197,15 +248,21 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
   // direct light is exact per pixel so shadow edges stay sharp.
   const std::vector<PreparedLight> prepared(lights.begin(), lights.end());
   std::vector<Rgb> vertex_indirect;
-  if (m_settings.bounces != 0) {
-    SurfacePoints vertices = SurfacePoints::from_vertices(scene);
-    auto gather_owner = gather_for(vertices);
+  const bool bounce = m_settings.bounces != 0;
+  const SurfacePoints vertices = bounce ? SurfacePoints::from_vertices(scene) : SurfacePoints();
+  const double light_count = double(prepared.size()), pixel_rays = double(width) * height * (1.0 + light_count),
+               vertex_rays = bounce ? double(vertices.size()) * light_count * m_settings.bounce_samples : 0.0;
+  CallProgress progress(
+                        gather_rays(vertices, bounce) + further_rays(prepared.size(), bounce) + vertex_rays + pixel_rays);
+  if (bounce) {
+    auto gather_owner = gather_for(vertices, &progress);
     const BounceGather& gather = *gather_owner;
     const std::vector<HotSpots> hot = hot_spots_of(prepared);
     std::vector<float> unused;
-    const std::vector<Rgb> bounced = bounced_fields(prepared, {}, unused);
+    const std::vector<Rgb> bounced = bounced_fields(prepared, {}, unused, &progress);
     vertex_indirect.assign(vertices.size(), Rgb(0.f));
     tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
+    CallProgress::Phase phase(&progress, "bounce light at the vertices", double(vertices.size()), vertex_rays);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, vertices.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i != r.end(); ++i)
         for (size_t j = 0; j < prepared.size(); ++j) {
@@ -216,6 +273,7 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
           if (!bounced.empty()) e += gather.field_irradiance(i, BounceGather::kBothSides, &bounced[j * 2 * vertices.size()]);
           vertex_indirect[i] += prepared[j].intensity * e;
         }
+      phase.advance(double(r.size()));
     });
     m_rays += rays.combine(std::plus<uint64_t>());
   }
@@ -223,6 +281,7 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
   const Camera::Basis b = camera.basis();
   const float aspect = float(width) / float(height);
   tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
+  CallProgress::Phase phase(&progress, "shading the pixels", double(height), pixel_rays);
   tbb::parallel_for(tbb::blocked_range<int>(0, height, 4), [&](const tbb::blocked_range<int>& rows) {
     uint64_t& local_rays = rays.local();
     for (int y = rows.begin(); y != rows.end(); ++y)
@@ -249,6 +308,7 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
         image.at(x, y) = scene.triangle_albedo(hit.triangle) * float(1.0 / kPi) * e;
         image.covered[size_t(y) * width + x] = 1;
       }
+    phase.advance(double(rows.size()));
   });
   m_rays += rays.combine(std::plus<uint64_t>());
   return image;

@@ -35,7 +35,7 @@ std::array<uint32_t, 6> point_key(const OwnFrame& frame, float size, const Vec3&
 } // namespace
 
 BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<ShadingPoint>& origins, int samples,
-                           uint64_t seed)
+                           uint64_t seed, ProgressStage* progress)
     : m_es(es), m_samples(samples), m_hits(points.size() * size_t(samples)) {
   if (es.scene().triangles.size() >= GatherHit::kNone)
     throw InputError("the first bounce handles at most " + std::to_string(GatherHit::kNone - 1) + " triangles (the scene has " +
@@ -77,6 +77,7 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
         }
       }
     }
+    if (progress) progress->advance(double(range.size()));
   });
   m_rays = uint64_t(points.size()) * uint64_t(samples);
   const auto& triangles = es.scene().triangles;

@@ -15,6 +15,7 @@
 /// Unbiased for any N; the error falls as N grows (tests show it).
 #include "direct_light.hpp"
 #include "hot_spots.hpp"
+#include "hilight/progress.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/surface_points.hpp"
 
@@ -30,8 +31,9 @@ public:
   /// `origins`: where each point is shaded (hilight::shading_point), so rays
   /// from a point on a crease do not start on the neighbouring face's plane
   /// and rays from a smooth point skip its own facets.
+  /// `progress`: advanced by one per point gathered (hilight/progress.hpp).
   BounceGather(const RayScene& es, const SurfacePoints& points, const std::vector<ShadingPoint>& origins, int samples,
-               uint64_t seed);
+               uint64_t seed, ProgressStage* progress = nullptr);
 
   int samples() const { return m_samples; }
   /// The (vertex, side) values interpolated_indirect_irradiance reads, as

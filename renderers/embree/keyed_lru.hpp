@@ -35,6 +35,11 @@ public:
     m_items.emplace(m_items.begin(), key, std::move(made));
     return m_items.front().second;
   }
+  /// Whether `key` has an entry now (another thread may change that at once).
+  bool contains(uint64_t key) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return std::any_of(m_items.begin(), m_items.end(), [&](const auto& e) { return e.first == key; });
+  }
   void clear() {
     std::lock_guard<std::mutex> lock(m_mutex);
     m_items.clear();

@@ -23,13 +23,13 @@ std::array<double, 3> channel_sums(const Rgb* field, size_t n) {
 } // namespace
 
 MultiBounce::MultiBounce(const RayScene& es, const std::vector<ShadingPoint>& vertex_shading, int samples, uint64_t seed,
-                         int bounces)
+                         int bounces, ProgressStage* progress)
     // Another stream than the points' gathers, so the two estimates are independent.
-    : m_es(es), m_gather(es, vertices_of(es.scene()), vertex_shading, samples, seed ^ 0x6d756c7469626f75ull), m_bounces(bounces) {
+    : m_es(es), m_gather(es, vertices_of(es.scene()), vertex_shading, samples, seed ^ 0x6d756c7469626f75ull, progress), m_bounces(bounces) {
   if (bounces != kAllBounces && bounces < 2) throw std::logic_error("MultiBounce: fewer than two bounces need no vertex transport");
 }
 
-std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, size_t light_count) const {
+std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, size_t light_count, ProgressStage* progress) const {
   const size_t v_count = m_es.scene().positions.size(), n = 2 * v_count;
   const float scale = 2.f / float(m_gather.samples());
   // One step for every light: out_j(v, s) = (2/N) Σ ρ(y) in_j(y) over v's hemisphere s.
@@ -56,6 +56,7 @@ std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, si
          return Rgb(w[0] * d[e[0]] + w[1] * d[e[1]] + w[2] * d[e[2]]);
        },
        current, active);
+  if (progress) progress->advance();
   const int last = m_bounces == kAllBounces ? kMaxSteps : m_bounces - 1;  // d₁ … d_last
   std::vector<std::array<double, 3>> previous_ratio(light_count, {-1.0, -1.0, -1.0}), previous_size(light_count);
   int steps = 1;
@@ -94,6 +95,7 @@ std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, si
            return w[0] * d[e[0]] + w[1] * d[e[1]] + w[2] * d[e[2]];
          },
          next, active);
+    if (progress) progress->advance();
     std::swap(current, next);
   }
   return sum;

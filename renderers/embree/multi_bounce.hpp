@@ -15,6 +15,7 @@
 /// geometric rest d_k·r/(1−r) per channel (bright rooms converge as ρ^k:
 /// ρ = 0.95 would take ~180 steps to 10⁻⁴ without it).
 #include "first_bounce.hpp"
+#include "hilight/bounces.hpp"
 
 #include <vector>
 
@@ -24,7 +25,9 @@ class MultiBounce {
 public:
   /// `bounces`: the total count (≥ 2), or kAllBounces; `vertex_shading`:
   /// where each scene vertex is shaded (shading_point).
-  MultiBounce(const RayScene& es, const std::vector<ShadingPoint>& vertex_shading, int samples, uint64_t seed, int bounces);
+  /// `progress`: advanced by one per vertex gathered.
+  MultiBounce(const RayScene& es, const std::vector<ShadingPoint>& vertex_shading, int samples, uint64_t seed, int bounces,
+              ProgressStage* progress = nullptr);
 
   /// The (vertex, side) entries whose direct light the operator reads
   /// (as BounceGather::vertex_sides_read).
@@ -34,7 +37,11 @@ public:
   /// f for each light: `direct` holds e₀ per light (2 values a vertex, light-
   /// major, as EmbreeRenderer::vertex_direct_irradiance lays them out); the
   /// result holds, per light, 2 RGB values a vertex.
-  std::vector<Rgb> bounced_field(const std::vector<float>& direct, size_t light_count) const;
+  /// `progress`: advanced by one per step (expected_steps() of them, about).
+  std::vector<Rgb> bounced_field(const std::vector<float>& direct, size_t light_count, ProgressStage* progress = nullptr) const;
+  /// About how many steps bounced_field takes (for progress; "all" usually
+  /// ends within this many by the geometric rest).
+  int expected_steps() const { return m_bounces == kAllBounces ? 8 : m_bounces - 1; }
 
   static constexpr int kMaxSteps = 200;
   static constexpr double kNegligible = 1e-5;  ///< a step this small of the sum ends the series
