@@ -40,7 +40,7 @@ TEST_CASE("render and solve give the same light in photometric units as in radio
   const auto dir = test::output_dir("units");
   const Lighting truth = {Light::point({1.5f, 2.5f, 1.1f}, Rgb(2.f)), Light::point({4.6f, 2.4f, 1.4f}, Rgb(2.f, 1.9f, 1.7f))};
   write_lights_json(dir / "w.json", truth);
-  write_lights_json(dir / "cd.json", lights_to_units(truth, Units::Photometric));
+  write_lights_json(dir / "cd.json", lights_to_units(truth, Units::Photometric), "m", nullptr, "cd");
   REQUIRE(test::run_hilight({"render", kRoom, "--lights", (dir / "w.json").string(), "-o", (dir / "w.ply").string()}).exit_code == 0);
   REQUIRE(test::run_hilight({"render", kRoom, "--lights", (dir / "cd.json").string(), "-o", (dir / "cd.ply").string(), "--units",
                              "photometric"}).exit_code == 0);

@@ -172,4 +172,9 @@ ProgressStage::~ProgressStage() {
 
 ProgressStage* ProgressStage::current() { return t_innermost; }
 
+void ProgressStage::rename(std::string name) {
+  std::lock_guard lock(ProgressHub::get().state);  // also inactive: two threads may rename at once
+  m_name = std::move(name);
+}
+
 } // namespace hilight

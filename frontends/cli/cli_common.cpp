@@ -24,12 +24,6 @@ const CLI::Validator FiniteNonNegative(
 
 const CLI::Validator BounceCount = bounce_count_validator();
 
-std::string exit_codes_help(bool with_unmet) {
-  std::string out = "Exit codes: 0 done; 2 bad input (one line on stderr says what, and no output is written)";
-  if (with_unmet) out += "; 3 the result misses what was asked (--max-dbar, criteria not met; its files are still written)";
-  return out + "; 130 interrupted (Ctrl-C: no half-written file is left); 1 an internal error (a bug: please report it).";
-}
-
 void RendererOptions::add_to(CLI::App& app, const std::string& tuning_group) {
   app.add_option("--bounces", bounces,
                  "how many times light bounces off surfaces: all (as in reality, the default), 0 (direct light only), "

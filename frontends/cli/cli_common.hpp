@@ -24,10 +24,6 @@ inline constexpr const char* kAdvanced = "Advanced (tuning, plugins)";
 /// The same for solve: the paper's parameters are there too.
 inline constexpr const char* kSolveAdvanced = "Advanced (the paper's parameters, plugins and tuning; docs/solve.md)";
 
-/// The exit codes, for the end of a command's --help (`with_unmet`: 3 is
-/// one of them).
-std::string exit_codes_help(bool with_unmet = false);
-
 /// Renderer choice and its settings, as every rendering command takes them.
 struct RendererOptions {
   std::string name = PluginDefaults::renderer;

@@ -4,6 +4,7 @@
 #include "hilight/light_bounds.hpp"
 #include "hilight/regions.hpp"
 #include "hilight/scene_origin.hpp"
+#include "progress_display.hpp"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -11,16 +12,21 @@
 namespace hilight::cli {
 
 int run_info(const std::vector<std::string>& args) {
-  CLI::App app("Print a scene's triangles, vertices (before/after tessellation), bounds and diagonal", "info");
+  CommandProgress progress;
+  CLI::App app("Print a scene's size, bounds, tessellation and rooms (the regions --place region:K names)", "info");
   std::string scene_path;
   bool as_json = false;
   app.add_option("scene", scene_path, "scene file (any format assimp reads)")->required();
   SceneLoadOptions scene_options;
-  add_scene_options(app, scene_options);
+  add_scene_options(app, scene_options, kAdvanced);
   app.add_flag("--json", as_json, "print JSON instead of text");
+  progress.add_to(app);
   if (auto code = parse_arguments(app, args)) return *code;
+  progress.start();
 
+  std::optional<ProgressStage> stage(std::in_place, "loading the scene");
   Scene scene = load_scene(scene_path, scene_options);
+  stage.reset();  // the bar's line is cleared before the lines below
   // Positions said in the world's coordinates (the scene may have been moved home: scene_origin.hpp).
   const auto world = [&](const Vec3& v) { return to_world(v, scene.frame); };
   const Bounds& b = scene.bounds;
@@ -63,8 +69,10 @@ int run_info(const std::vector<std::string>& args) {
   print_box("open space ", open_light_bounds(scene), " (lit from outside)\n");
   std::printf("max edge   %g\n", scene.max_edge);
   // The connected parts of free space: what --place region:K / not-region:K name.
+  stage.emplace("finding the rooms");
   const RayScene rays(scene);
   const Regions regions(rays);
+  stage.reset();
   std::printf("regions    %zu (connected free space; --place region:K, not-region:K)\n", regions.list().size());
   for (const auto& r : regions.list()) {
     if (r.id >= 20) {

@@ -131,7 +131,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--place", place_rules,
                  "where lights may go (repeatable): ceiling[:OFFSET] (hanging OFFSET below the ceiling, default 0.2), "
                  "height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1 (inside one of the boxes), exclude:X0,Y0,Z0,X1,Y1,Z1, "
-                 "region:K (in room K, as hilight info numbers them), not-region:K, count:MIN:MAX (how many lights)");
+                 "region:K (in room K, as hilight info numbers them), not-region:K, count:MIN:MAX or count:N (how many lights)");
   app.add_option("--luminaire", luminaire_path,
                  "every light is this luminaire (an .ies or .ldt file), aimed down: the solve finds how many, where, and their dimming");
   app.add_option("--area-light", area_light,
@@ -320,17 +320,18 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   SolveSession session(registry, spec, scene, rays);
   stage.reset();
   ropts.note_bounces(registry);
-  // The solver's stages are parts of one "solving" stage.
+  // The Solver's stages name one part of "solving"; it says them from
+  // whichever thread reaches them (cuts are refined two at a time).
   std::optional<ProgressStage> solver_stage;
   const auto solver_owned = session.make_solver([&](const std::string& name) {
-    solver_stage.reset();
-    solver_stage.emplace(name);
+    if (solver_stage) solver_stage->rename(name);
   });
   Solver& solver = *solver_owned;
   SolveReport report;
   Lighting lights;
   try {
     stage.emplace(mode == "solve" ? "solving" : mode == "add" ? "adding lights" : "fine-tuning");
+    solver_stage.emplace("");
     lights = mode == "fine-tune" ? solver.fine_tune(target, initial, report)
              : mode == "add"     ? solver.add_lights(target, initial, report)
                                  : solver.solve(target, report);

@@ -6,6 +6,7 @@
 #include "hilight/io/criteria_file.hpp"
 #include "hilight/regions.hpp"
 #include "hilight/scene_origin.hpp"
+#include "progress_display.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -39,7 +40,12 @@ Bounds parse_box(const std::string& text) {
 } // namespace
 
 int run_target(const std::vector<std::string>& args) {
-  CLI::App app("Make illuminance criteria to solve for (hilight solve SCENE --target C.json --luminaire L.ies)", "target");
+  CommandProgress progress;  // first: its clock is the command's
+  CLI::App app("Make lux criteria to solve for: a work plane (EN 12464-1 grid) with the lux and uniformity wanted, "
+               "optionally walls and ceiling.\n"
+               "  hilight target workplane SCENE --region 3 --lux 500 -o desks.json\n"
+               "  hilight solve SCENE --target desks.json --luminaire panel.ies -o lights.json",
+               "target");
   std::string kind, scene_path, output, box_text;
   float height = 0.75f, border = 0.5f;
   double lux = 500, u0 = 0.6, walls = 0, ceiling = 0, surface_u0 = 0.1, spacing = 0;
@@ -65,7 +71,8 @@ int run_target(const std::vector<std::string>& args) {
   app.add_option("--border", border, "no work-plane point within this of a wall (EN 12464-1: 0.5)")->check(FiniteNonNegative)->capture_default_str();
   app.add_flag("--append", append, "add these grids to the criteria already in the output file");
   SceneLoadOptions scene_options;
-  add_scene_options(app, scene_options);
+  add_scene_options(app, scene_options, kAdvanced);
+  progress.add_to(app);
   if (auto code = parse_arguments(app, args)) return *code;
   if (region >= 0 && !box_text.empty()) throw InputError("--region and --box: give one area");
   check_output_type(output, {".json"}, "criteria are written as .json");
@@ -77,10 +84,14 @@ int run_target(const std::vector<std::string>& args) {
       throw InputError(output, "its points are in " + criteria.length_unit + ", the scene in " + unit + " (--unit)");
   };
 
+  progress.start();
+  std::optional<ProgressStage> stage(std::in_place, "loading the scene");
   const Scene scene = load_scene(scene_path, scene_options);
   same_unit(scene.frame.unit);
   const RayScene rays(scene);
+  stage.emplace("finding the rooms");
   const Regions regions(rays);
+  stage.emplace("laying out the grids");
   // Positions in the scene's coordinates here, the world's in the file (scene_origin.hpp).
   for (auto& g : criteria.grids)
     for (auto& p : g.points) p = to_local(p, scene.frame);
@@ -105,6 +116,7 @@ int run_target(const std::vector<std::string>& args) {
   for (auto& g : world.grids)
     for (auto& p : g.points) p = Vec3(to_world(p, scene.frame));
   write_criteria(output, world);
+  stage.reset();  // the bar's line is cleared before the lines below
   for (const auto& g : criteria.grids)
     std::fprintf(stderr, "hilight: %s: %zu points, spacing %.2f, Ē ≥ %g lx, U0 ≥ %g\n", g.name.c_str(), g.points.size(), g.spacing,
                  g.lux, g.u0);

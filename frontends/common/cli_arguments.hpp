@@ -56,10 +56,20 @@ inline std::string unknown_option(const CLI::App& app) {
   return "";
 }
 
+/// The exit codes, for the end of a command's --help (`with_unmet`: 3 is
+/// one of them). parse_arguments puts the plain list under a help that has
+/// no footer of its own.
+inline std::string exit_codes_help(bool with_unmet = false) {
+  std::string out = "Exit codes: 0 done; 2 bad input (one line on stderr says what; no output is written)";
+  if (with_unmet) out += "; 3 the result misses what was asked (--max-dbar, criteria not met; its files are still written)";
+  return out + "; 130 interrupted (Ctrl-C; no half-written file is left); 1 an internal error (a bug: please report it).";
+}
+
 /// Parses `args` into `app`. Returns an exit code when the command should
 /// stop here (--help printed: 0), nullopt to go on; bad arguments throw
 /// InputError prefixed with the command's name.
 inline std::optional<int> parse_arguments(CLI::App& app, const std::vector<std::string>& args) {
+  if (app.get_footer().empty()) app.footer(exit_codes_help());
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them back to front
   try {
     app.parse(reversed);

@@ -84,6 +84,9 @@ public:
   void set_total(double total) {
     if (m_active) m_total.store(total, std::memory_order_relaxed);
   }
+  /// What it is doing now, for a stage whose steps are not stages of their
+  /// own (a Solver's, said from whichever thread reaches them; any thread).
+  void rename(std::string name);
   /// The innermost stage open on this thread (nullptr: none, or no
   /// reporter): what code that was not handed a stage advances. Capture it
   /// before a parallel loop: worker threads have their own.

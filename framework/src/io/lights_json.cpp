@@ -177,7 +177,7 @@ Light read_light(const json& obj, const std::string& where, const std::filesyste
 
 } // namespace
 
-Lighting parse_lights_json(const std::string& text, const std::string& source, const SceneFrame* frame) {
+Lighting parse_lights_json(const std::string& text, const std::string& source, const SceneFrame* frame, std::string* intensity_unit) {
   json doc;
   try {
     doc = json::parse(text);
@@ -186,6 +186,14 @@ Lighting parse_lights_json(const std::string& text, const std::string& source, c
   }
   if (!doc.is_object() || !doc.contains("lights") || !doc["lights"].is_array())
     throw InputError(source, "expected an object with a \"lights\" array");
+  std::string unit;
+  if (doc.contains("intensity_unit")) {
+    const json& u = doc["intensity_unit"];
+    if (!u.is_string() || (u.get<std::string>() != "W/sr" && u.get<std::string>() != "cd"))
+      throw InputError(source, "\"intensity_unit\" must be \"W/sr\" or \"cd\" (got " + u.dump() + ")");
+    unit = u.get<std::string>();
+  }
+  if (intensity_unit) *intensity_unit = unit;
   Lighting lights;
   const json& arr = doc["lights"];
   ProfileCache profiles;
@@ -201,11 +209,12 @@ Lighting parse_lights_json(const std::string& text, const std::string& source, c
   return lights;
 }
 
-Lighting read_lights_json(const std::filesystem::path& path, const SceneFrame* frame) {
-  return parse_lights_json(read_text_file(path, "lights"), path.string(), frame);
+Lighting read_lights_json(const std::filesystem::path& path, const SceneFrame* frame, std::string* intensity_unit) {
+  return parse_lights_json(read_text_file(path, "lights"), path.string(), frame, intensity_unit);
 }
 
-std::string lights_to_json(const Lighting& lights, const std::string& length_unit, const SceneFrame* frame) {
+std::string lights_to_json(const Lighting& lights, const std::string& length_unit, const SceneFrame* frame,
+                           const std::string& intensity_unit) {
   json arr = json::array();
   for (size_t j = 0; j < lights.size(); ++j) {
     const Light& l = lights[j];
@@ -242,12 +251,12 @@ std::string lights_to_json(const Lighting& lights, const std::string& length_uni
     o["intensity"] = {l.intensity.r, l.intensity.g, l.intensity.b};
     arr.push_back(o);
   }
-  return json{{"length_unit", length_unit}, {"lights", arr}}.dump(2) + "\n";
+  return json{{"length_unit", length_unit}, {"intensity_unit", intensity_unit}, {"lights", arr}}.dump(2) + "\n";
 }
 
 void write_lights_json(const std::filesystem::path& path, const Lighting& lights, const std::string& length_unit,
-                       const SceneFrame* frame) {
-  std::string text = lights_to_json(lights, length_unit, frame);
+                       const SceneFrame* frame, const std::string& intensity_unit) {
+  std::string text = lights_to_json(lights, length_unit, frame, intensity_unit);
   write_atomically(path, text);
 }
 
