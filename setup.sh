@@ -15,6 +15,7 @@ PACKAGES=(
   libembree-dev libassimp-dev libglm-dev libopenexr-dev libpng-dev libtbb-dev
   nlohmann-json3-dev libcli11-dev catch2 libeigen3-dev libstb-dev libtinygltf-dev
   coinor-libclp-dev   # linear programs: illuminance criteria at least flux (pipeline/illuminance_design)
+  libifcplusplus-dev libboost-dev  # IFC out: luminaires as IfcLightFixture in a copy of the input IFC (its headers need boost's)
   assimp-testmodels   # real broken and valid models the tests load
   blender python3-numpy  # the glTF round trip through Blender's own importer and exporter (tests)
   chromium            # the solve's HTML report opened in a real headless browser (tests)

@@ -122,6 +122,12 @@ for obj in bpy.context.scene.objects:
     if light.type == "SPOT":
         entry["spot_size"] = light.spot_size
         entry["spot_blend"] = light.spot_blend
+    # The glTF light's extras, as the importer keeps them (custom properties).
+    extras = {}
+    for key in light.keys():
+        value = light[key]
+        extras[key] = value.to_dict() if hasattr(value, "to_dict") else value if isinstance(value, (int, float, str)) else str(value)
+    entry["extras"] = extras
     lights.append(entry)
 
 with open(report, "w") as f:

@@ -169,8 +169,9 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--luminaire-spin", luminaire_spin, "turn the luminaire's C0 plane about its aim, degrees")
       ->check(CLI::Range(-360.0, 360.0))
       ->group(kSolveAdvanced);
-  app.add_option("--luminaire-size", luminaire_size, "auto: the luminaire is its file's luminous opening (a rectangle, disk or line), integrated over it")
-      ->check(CLI::IsMember({"auto"}))
+  app.add_option("--luminaire-size", luminaire_size,
+                 "auto: the luminaire is its file's luminous opening (a rectangle, disk or line), integrated over it; W,L: a "
+                 "rectangle W across and L along its C0 plane, metres")
       ->group(kSolveAdvanced);
   app.add_flag("--vertex-colours", vertex_colours, "with a .gltf/.glb output: the result as COLOR_0 and the target as COLOR_1 (alpha: weight) per vertex")
       ->group(kSolveAdvanced);
@@ -183,6 +184,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
                  "with criteria: the lattice of places tried (default: a third of the finest grid's spacing)")
       ->check(CLI::Range(1e-4, 1e6))
       ->group(kSolveAdvanced);
+  add_criteria_options(app, criteria, "Lux criteria (a .json target)");
   app.add_option("--evaluation-points", s.evaluation_points,
                  "D̄ is measured on every target point up to this many, else on this many evenly spaced ones (an estimate; 0: every point)")
       ->capture_default_str()
@@ -231,8 +233,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   if (!mount.empty()) s.placement.add(mount_offset >= 0.f ? "ceiling:" + std::to_string(mount_offset) : "ceiling");
   if (mode != "solve" && initial_path.empty()) throw InputError("--mode " + mode + " needs --initial LIGHTS.json");
   if (mode == "solve" && !initial_path.empty()) throw InputError("--initial needs --mode fine-tune or add");
-  check_output_type(output, {".json", ".gltf", ".glb"}, "use .json for hilight's lights file, .gltf or .glb for the scene and its lights");
+  check_output_type(output, {".json", ".gltf", ".glb", ".ifc"},
+                    "use .json for hilight's lights file, .gltf or .glb for the scene and its lights, .ifc for luminaires "
+                    "found for criteria");
   check_writable(output);
+  if (is_ifc_path(output) && !is_criteria_target(target_path))
+    throw InputError("-o " + output + ": IFC output is for a luminaire result (a solve for illuminance criteria, a .json target)");
   if (!report_path.empty()) check_writable(report_path);
   if (!html_path.empty()) check_writable(html_path);
   if (vertex_colours && !is_gltf_path(output)) throw InputError("--vertex-colours needs a .gltf or .glb output, not " + output);
@@ -248,8 +254,21 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   } else if (luminaire_spin != 0.f) {
     throw InputError("--luminaire-spin needs --luminaire");
   }
+  check_criteria_options(app, is_criteria_target(target_path));
   if (!luminaire_size.empty()) {
     if (!s.luminaire) throw InputError("--luminaire-size needs --luminaire");
+    if (luminaire_size != "auto") {  // W,L: the file's opening replaced
+      const size_t comma = luminaire_size.find(',');
+      char* end = nullptr;
+      const double w = std::strtod(luminaire_size.c_str(), &end);
+      const bool first = comma != std::string::npos && end == luminaire_size.c_str() + comma;
+      const double l = first ? std::strtod(luminaire_size.c_str() + comma + 1, &end) : 0.0;
+      if (!first || *end != '\0' || !(w > 0 && w <= 100) || !(l > 0 && l <= 100))
+        throw InputError("--luminaire-size " + luminaire_size + ": give auto, or W,L in metres (each in (0, 100]), e.g. 0.6,0.6");
+      Photometry sized = *s.luminaire->profile;
+      sized.opening_width = w, sized.opening_length = l, sized.opening_round = false;
+      s.luminaire->profile = std::make_shared<const Photometry>(std::move(sized));
+    }
     if (!with_luminous_opening(*s.luminaire))
       throw InputError(luminaire_path, "gives no luminous opening (its width and length are 0): --luminaire-size auto needs one");
   }
@@ -270,6 +289,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     criteria.quiet = quiet;
     criteria.luminaire = s.luminaire;
     criteria.placement = s.placement;
+    criteria.design.fixed_count = s.fixed_count;
     criteria.renderer = ropts;
     return solve_for_criteria(criteria, registry);
   }

@@ -1,6 +1,8 @@
 // hilight solve with illuminance criteria (command_solve_criteria.hpp).
 #include "command_solve_criteria.hpp"
 
+#include "ifc_luminaires.hpp"
+
 #include "hilight/error.hpp"
 #include "hilight/io/criteria_file.hpp"
 #include "hilight/io/gltf.hpp"
@@ -11,11 +13,19 @@
 #include "hilight/units.hpp"
 #include "hilight/scene_origin.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 namespace hilight::cli {
+
+bool is_ifc_path(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".ifc";
+}
 
 bool is_criteria_target(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -25,49 +35,274 @@ bool is_criteria_target(const std::string& path) {
 
 namespace {
 
-nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& criteria, const DesignReport& r, const Lighting& lights) {
+/// The options add_criteria_options adds, for check_criteria_options.
+const char* const kCriteriaOptions[] = {"--maintenance-factor", "--margin", "--layout", "--ceiling-grid", "--ceiling-grid-origin",
+                                        "--min-spacing", "--max-spacing-ratio", "--ugr-max", "--schedule", "--operating-hours",
+                                        "--leni-factors", "--parasitic-power"};
+
+/// "a,b[,c]": exactly `count` finite numbers, or InputError naming the option.
+std::vector<double> numbers(const std::string& text, size_t count, const std::string& option, const std::string& example) {
+  std::vector<double> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(v)) break;
+    out.push_back(v);
+  }
+  if (out.size() != count || std::count(text.begin(), text.end(), ',') != long(count - 1))
+    throw InputError(option + " " + text + ": give " + std::to_string(count) + " numbers separated by commas, e.g. " + example);
+  return out;
+}
+
+std::string product_of(const Light& luminaire) {
+  if (luminaire.profile && !luminaire.profile->product.empty()) return luminaire.profile->product;
+  return std::filesystem::path(luminaire.profile_path).filename().string();
+}
+
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json summary_json(const LayoutSummary& s) {
+  if (!s.found) return {{"tried", s.tried}, {"found", false}};
+  nlohmann::json j = {{"tried", s.tried},       {"found", true},          {"met", s.met},
+                      {"luminaires", s.count},  {"luminous_flux_lm", s.flux_lm}, {"power_w", s.power_w},
+                      {"shortfall_lux", s.shortfall_lux}, {"ugr", finite_or_null(s.ugr)}};
+  if (!s.shape.empty()) j["shape"] = s.shape;
+  return j;
+}
+
+/// Energy per EN 15193-1 (LENI) from the design's power and floor.
+struct Energy {
+  double area = 0, power = 0, installed = 0, density = 0, installed_density = 0, leni = 0;
+};
+Energy energy_of(const CriteriaSolve& a, const DesignReport& r, size_t count) {
+  Energy e;
+  e.area = r.room.floor_area;
+  e.power = r.power_w;
+  e.installed = double(count) * a.luminaire->profile->input_watts;
+  if (e.area > 0) {
+    e.density = e.power / e.area;
+    e.installed_density = e.installed / e.area;
+    const EnergyInputs& in = a.energy;
+    const double lighting = e.power * in.fc * (in.day_hours * in.fo * in.fd + in.night_hours * in.fo) / 1000.0;
+    const double parasitic = in.parasitic_w * std::max(0.0, 8760.0 - in.day_hours - in.night_hours) / 1000.0;
+    e.leni = (lighting + parasitic) / e.area;
+  }
+  return e;
+}
+
+nlohmann::json luminaires_json(const CriteriaSolve& a, const DesignReport& r, const Lighting& lights, const SceneFrame& frame) {
+  nlohmann::json out = nlohmann::json::array();
+  const Photometry& p = *a.luminaire->profile;
+  for (size_t j = 0; j < lights.size(); ++j) {
+    const glm::dvec3 w = to_world(lights[j].position, frame);
+    const double d = j < r.dimming.size() ? r.dimming[j] : luminaire_dimming(lights[j]);
+    out.push_back({{"index", j + 1},
+                   {"product", product_of(*a.luminaire)},
+                   {"file", a.luminaire->profile_path},
+                   {"position", {w.x, w.y, w.z}},
+                   {"aim", {lights[j].direction.x, lights[j].direction.y, lights[j].direction.z}},
+                   {"spin_deg", lights[j].spin_deg},
+                   {"dimming_percent", 100.0 * d},
+                   {"luminous_flux_lm", d * p.flux()},
+                   {"power_w", p.input_watts > 0 ? nlohmann::json(d * p.input_watts) : nlohmann::json(nullptr)}});
+  }
+  return out;
+}
+
+nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& criteria, const DesignReport& r, const Lighting& lights,
+                           const SceneFrame& frame) {
   nlohmann::json grids = nlohmann::json::array();
   for (size_t g = 0; g < criteria.grids.size(); ++g) {
     const auto& c = criteria.grids[g];
     const auto& f = r.figures[g];
     grids.push_back({{"name", c.name}, {"kind", to_string(c.kind)}, {"points", c.points.size()}, {"lux_wanted", c.lux},
-                     {"u0_wanted", c.u0}, {"mean_lux", f.mean}, {"min_lux", f.min}, {"max_lux", f.max}, {"u0", f.u0}, {"met", f.met}});
+                     {"u0_wanted", c.u0}, {"mean_lux", f.mean}, {"min_lux", f.min}, {"max_lux", f.max}, {"u0", f.u0},
+                     {"min_lux_whole_grid", r.min_whole[g]}, {"u0_whole_grid", r.u0_whole[g]}, {"met", f.met}});
   }
   nlohmann::json dimming = nlohmann::json::array(), spins = nlohmann::json::array();
-  for (const auto& l : lights) {
-    dimming.push_back(luminaire_dimming(l));
-    spins.push_back(l.spin_deg);
+  for (size_t j = 0; j < lights.size(); ++j) {
+    dimming.push_back(j < r.dimming.size() ? r.dimming[j] : luminaire_dimming(lights[j]));
+    spins.push_back(lights[j].spin_deg);
   }
   nlohmann::json walk = nlohmann::json::array();
   for (const auto& [count, flux] : r.walk) walk.push_back({{"lights", count}, {"flux_lm", flux}});
+  nlohmann::json observers = nlohmann::json::array();
+  for (const auto& o : r.glare) {
+    const glm::dvec3 eye = to_world(o.observer.eye, frame);
+    observers.push_back({{"name", o.observer.name}, {"eye", {eye.x, eye.y, eye.z}},
+                         {"view", {o.observer.view.x, o.observer.view.y, o.observer.view.z}}, {"ugr", finite_or_null(o.ugr)}});
+  }
+  const Energy e = energy_of(a, r, lights.size());
+  const bool watts = a.luminaire->profile->input_watts > 0;
   return {{"mode", "illuminance criteria"},
           {"criteria", a.target_path},
           {"met", r.met},
+          {"unmet", r.unmet.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.unmet)},
           {"lights", lights.size()},
+          {"lights_asked", a.design.fixed_count ? nlohmann::json(a.design.fixed_count) : nlohmann::json(nullptr)},
           {"luminaire", a.luminaire->profile_path},
+          {"product", product_of(*a.luminaire)},
+          {"luminaire_size_m", {r.luminaire_size[0], r.luminaire_size[1]}},
+          {"maintenance_factor", r.maintenance_factor},
+          {"margin", r.margin},
           {"dimming", dimming},
           {"spin_deg", spins},
+          {"luminaires", luminaires_json(a, r, lights, frame)},
           {"grids", grids},
+          {"layout", {{"asked", to_string(a.design.layout)}, {"chosen", r.chosen}, {"why", r.why},
+                      {"array", summary_json(r.array)}, {"free", summary_json(r.free)},
+                      {"ceiling_grid_m", a.design.ceiling_grid > 0 ? nlohmann::json(a.design.ceiling_grid) : nlohmann::json(nullptr)},
+                      {"min_spacing_m", a.design.spacing.min_spacing},
+                      {"max_spacing_ratio", a.design.spacing.max_spacing_ratio > 0 ? nlohmann::json(a.design.spacing.max_spacing_ratio)
+                                                                                    : nlohmann::json(nullptr)},
+                      {"fewest_free_meeting", r.fewest_free ? nlohmann::json(r.fewest_free) : nlohmann::json(nullptr)}}},
+          {"room", {{"length_m", r.room.length()}, {"width_m", r.room.width()}, {"axis", {r.room.u.x, r.room.u.z}},
+                    {"floor_area_m2", r.room.floor_area}}},
+          {"ugr", {{"max", finite_or_null(r.ugr)}, {"limit", a.design.ugr_max > 0 ? nlohmann::json(a.design.ugr_max) : nlohmann::json(nullptr)},
+                   {"luminous_area_m2", r.luminous_area}, {"observers", observers}}},
+          {"energy", {{"floor_area_m2", e.area}, {"power_w", watts ? nlohmann::json(e.power) : nlohmann::json(nullptr)},
+                      {"installed_power_w", watts ? nlohmann::json(e.installed) : nlohmann::json(nullptr)},
+                      {"power_density_w_m2", watts && e.area > 0 ? nlohmann::json(e.density) : nlohmann::json(nullptr)},
+                      {"installed_power_density_w_m2", watts && e.area > 0 ? nlohmann::json(e.installed_density) : nlohmann::json(nullptr)},
+                      {"leni_kwh_m2_a", watts && e.area > 0 ? nlohmann::json(e.leni) : nlohmann::json(nullptr)},
+                      {"hours_day", a.energy.day_hours}, {"hours_night", a.energy.night_hours}, {"fc", a.energy.fc},
+                      {"fo", a.energy.fo}, {"fd", a.energy.fd}, {"parasitic_w", a.energy.parasitic_w}}},
           {"total_luminous_flux_lm", r.flux_lm},
           {"least_luminous_flux_lm", r.least_flux_lm},
           {"energy_tolerance", a.design.energy_tolerance},
-          {"electrical_power_w", a.luminaire->profile->input_watts > 0 ? nlohmann::json(r.power_w) : nlohmann::json(nullptr)},
+          {"electrical_power_w", watts ? nlohmann::json(r.power_w) : nlohmann::json(nullptr)},
           {"candidates", r.candidates},
           {"shortfall_lux", r.shortfall_lux},
           {"count_walk", walk},
           {"placement", a.placement.describe()},
           {"seconds", r.seconds},
-          {"length_unit", a.scene_options.unit.empty() ? "m" : a.scene_options.unit},
+          {"length_unit", frame.unit},
           {"units", a.units_name},
           {"renderer", a.renderer.name},
           {"bounces", a.renderer.bounces},
           {"bounce_model", bounce_model(a.renderer.bounce_count())}};
 }
 
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+/// The luminaire schedule: one row per luminaire, positions in the scene file's unit.
+std::string schedule_csv(const CriteriaSolve& a, const DesignReport& r, const Lighting& lights, const SceneFrame& frame) {
+  std::ostringstream out;
+  out.precision(10);
+  const Photometry& p = *a.luminaire->profile;
+  out << "index,product,file,x_" << frame.unit << ",y_" << frame.unit << ",z_" << frame.unit
+      << ",aim_x,aim_y,aim_z,spin_deg,dimming_percent,luminous_flux_lm,power_w\r\n";
+  for (size_t j = 0; j < lights.size(); ++j) {
+    const glm::dvec3 w = to_world(lights[j].position, frame);
+    const double d = j < r.dimming.size() ? r.dimming[j] : luminaire_dimming(lights[j]);
+    char numbers[256];
+    std::snprintf(numbers, sizeof(numbers), "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.2f,%.2f,%.1f,", w.x, w.y, w.z, double(lights[j].direction.x),
+                  double(lights[j].direction.y), double(lights[j].direction.z), double(lights[j].spin_deg), 100.0 * d, d * p.flux());
+    out << j + 1 << ',' << csv_field(product_of(*a.luminaire)) << ',' << csv_field(a.luminaire->profile_path) << ',' << numbers;
+    if (p.input_watts > 0) {
+      char w_text[32];
+      std::snprintf(w_text, sizeof(w_text), "%.2f", d * p.input_watts);
+      out << w_text;
+    }
+    out << "\r\n";
+  }
+  return out.str();
+}
+
 } // namespace
+
+void add_criteria_options(CLI::App& app, CriteriaSolve& c, const std::string& group) {
+  struct Grouped {  // every option added here in `group` (when given)
+    CLI::App& app;
+    const std::string& group;
+    ~Grouped() {
+      if (group.empty()) return;
+      for (const char* name : kCriteriaOptions)
+        if (CLI::Option* o = app.get_option_no_throw(name)) o->group(group);
+    }
+  } grouped{app, group};
+  app.add_option("--maintenance-factor", c.design.maintenance_factor,
+                 "with criteria: maintained illuminance = MF × new (EN 12464-1's Ēm; in (0, 1])")
+      ->capture_default_str();
+  app.add_option("--margin", c.design.margin,
+                 "with criteria: keep every criterion this share clear of its limit (0.05: Ē and U0 5% above, Emin also between "
+                 "the grid's points, UGR 5% below)")
+      ->capture_default_str();
+  app.add_option_function<std::string>(
+         "--layout",
+         [&c](const std::string& v) {
+           c.design.layout = v == "array" ? LayoutChoice::Array : v == "free" ? LayoutChoice::Free : LayoutChoice::Auto;
+         },
+         "with criteria: array (rows × columns aligned with the room, or on --ceiling-grid), free (anywhere on the lattice), "
+         "auto (both; the array where it costs nothing; default)")
+      ->check(CLI::IsMember({"auto", "array", "free"}));
+  app.add_option("--ceiling-grid", c.design.ceiling_grid, "with criteria: arrays on a ceiling grid of this tile, metres (0.6, 0.625)")
+      ->check(CLI::Range(1e-3, 1e3));
+  app.add_option_function<std::string>(
+      "--ceiling-grid-origin",
+      [&c](const std::string& v) {
+        const auto n = numbers(v, 2, "--ceiling-grid-origin", "0,0");
+        c.grid_origin_world = glm::dvec2(n[0], n[1]);
+      },
+      "X,Z of a tile corner of --ceiling-grid, in the scene file's coordinates (default: the room's corner)");
+  app.add_option("--min-spacing", c.design.spacing.min_spacing,
+                 "with criteria: luminaires' centres at least this far apart, metres (outlines never overlap in any case)")
+      ->check(FiniteNonNegative);
+  app.add_option("--max-spacing-ratio", c.design.spacing.max_spacing_ratio,
+                 "with criteria: spacing at most this × the mounting height over the work plane (SHR; 0: none)")
+      ->check(FiniteNonNegative);
+  app.add_option("--ugr-max", c.design.ugr_max, "with criteria: UGR (CIE 117, standard observers) at most this, e.g. 19")
+      ->check(CLI::Range(1.0, 40.0));
+  app.add_option("--schedule", c.schedule_path, "with criteria: write the luminaire schedule here (CSV: product, position, aim, dimming, lm, W)");
+  app.add_option_function<std::string>(
+      "--operating-hours",
+      [&c](const std::string& v) {
+        const auto n = numbers(v, 2, "--operating-hours", "2250,250");
+        if (n[0] < 0 || n[1] < 0 || n[0] + n[1] > 8760) throw InputError("--operating-hours " + v + ": day and night hours within one year (8760)");
+        c.energy.day_hours = n[0], c.energy.night_hours = n[1];
+      },
+      "with criteria: LENI's hours of use a year by day and by night, tD,tN (EN 15193-1; default 2250,250)");
+  app.add_option_function<std::string>(
+      "--leni-factors",
+      [&c](const std::string& v) {
+        const auto n = numbers(v, 3, "--leni-factors", "1,1,1");
+        for (double f : n)
+          if (!(f >= 0 && f <= 1)) throw InputError("--leni-factors " + v + ": FC, FO and FD are each in [0, 1]");
+        c.energy.fc = n[0], c.energy.fo = n[1], c.energy.fd = n[2];
+      },
+      "with criteria: EN 15193-1's constant illuminance, occupancy and daylight factors FC,FO,FD (default 1,1,1)");
+  app.add_option("--parasitic-power", c.energy.parasitic_w,
+                 "with criteria: W of controls and emergency lighting on standby the rest of the year (LENI's parasitic energy)")
+      ->check(FiniteNonNegative);
+}
+
+void check_criteria_options(const CLI::App& app, bool criteria_target) {
+  if (criteria_target) return;
+  for (const char* name : kCriteriaOptions)
+    if (app.count(name)) throw InputError(std::string(name) + " works with illuminance criteria (a .json target), not with a painted target");
+}
 
 int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   if (!a.luminaire) throw InputError(a.target_path + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
+  if (!(a.design.maintenance_factor > 0 && a.design.maintenance_factor <= 1))
+    throw InputError("--maintenance-factor " + std::to_string(a.design.maintenance_factor) +
+                     ": must be in (0, 1] (maintained = MF × new; 0.8 is a clean office's)");
+  if (!(a.design.margin >= 0 && a.design.margin < 1)) throw InputError("--margin " + std::to_string(a.design.margin) + ": must be in [0, 1)");
+  if (!a.schedule_path.empty()) check_writable(a.schedule_path);
+  if (is_ifc_path(a.output)) {  // the luminaires into a copy of the input IFC
+    if (!is_ifc_path(a.scene_path))
+      throw InputError("-o " + a.output + ": IFC output is a copy of the input IFC with the luminaires added; the scene " + a.scene_path +
+                       " is not an .ifc file (write .json or .glb)");
+    if (!ifc_output_available())
+      throw InputError(a.output, "IFC output needs IfcPlusPlus, which this build lacks (apt install libifcplusplus-dev libboost-dev, then cmake again)");
+  }
   IlluminanceCriteria criteria = read_criteria(a.target_path);
   set_thread_limit(a.renderer.threads);
   std::optional<ProgressStage> stage(std::in_place, "loading the scene");
@@ -86,6 +321,10 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   DesignSettings settings = a.design;
   settings.min_count = rules.min_count;
   settings.max_count = rules.max_count;
+  if (a.grid_origin_world) {
+    const Vec3 o = to_local(glm::dvec3(a.grid_origin_world->x, 0.0, a.grid_origin_world->y), scene->frame);
+    settings.grid_origin = glm::dvec2(o.x, o.z);
+  }
   const LightSpace space(*rays, rules);
   DesignReport report;
   stage.emplace("placing the luminaires");
@@ -93,11 +332,31 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
 
   stage.emplace("writing " + std::filesystem::path(a.output).filename().string());
   const Units units = parse_units(a.units_name);
-  if (is_gltf_path(a.output)) {
+  IfcWritten ifc;
+  if (is_ifc_path(a.output)) {
+    std::vector<IfcLuminaire> fixtures;
+    const Photometry& p = *a.luminaire->profile;
+    for (size_t j = 0; j < lights.size(); ++j) {
+      IfcLuminaire f;
+      f.position = to_world(lights[j].position, scene->frame) * scene->frame.scale;  // metres
+      f.aim = glm::dvec3(lights[j].direction);
+      const Vec3 axis = length_axis(lights[j]);
+      f.spin_deg = std::atan2(-double(axis.z), double(axis.x)) * 180.0 / kPi;
+      f.size = glm::dvec2(luminaire_size(lights[j]));
+      f.product = product_of(*a.luminaire);
+      f.profile = a.luminaire->profile_path;
+      f.dimming = j < report.dimming.size() ? report.dimming[j] : luminaire_dimming(lights[j]);
+      f.flux_lm = f.dimming * p.flux();
+      f.power_w = f.dimming * p.input_watts;
+      fixtures.push_back(f);
+    }
+    ifc = write_ifc_luminaires(a.scene_path, a.output, fixtures);
+  } else if (is_gltf_path(a.output)) {
     GltfExport gltf;
     gltf.scene = scene.get();
     gltf.lights = lights;
-    gltf.figures = {{"lights", double(lights.size())}, {"total_luminous_flux_lm", report.flux_lm}};
+    gltf.figures = {{"lights", double(lights.size())}, {"total_luminous_flux_lm", report.flux_lm}, {"maintenance_factor", report.maintenance_factor}};
+    if (a.luminaire->profile->input_watts > 0) gltf.figures["electrical_power_w"] = report.power_w;
     write_gltf(a.output, gltf);
   } else {
     write_lights_file(a.output, lights, units, scene->frame);
@@ -105,9 +364,10 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   CriteriaSolve with_rules = a;
   with_rules.placement = rules;
   if (!a.report_path.empty()) {
-    const std::string text = report_json(with_rules, criteria, report, lights).dump(2) + "\n";
+    const std::string text = report_json(with_rules, criteria, report, lights, scene->frame).dump(2) + "\n";
     write_atomically(a.report_path, text);
   }
+  if (!a.schedule_path.empty()) write_atomically(a.schedule_path, schedule_csv(a, report, lights, scene->frame));
   if (!a.html_path.empty()) {
     stage.emplace("writing the HTML report");
     HtmlReport page;
@@ -125,21 +385,69 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   stage.reset();
   stop_command_progress();  // the bar's line is cleared before the summary
   const std::string name = std::filesystem::path(a.luminaire->profile_path).filename().string();
+  const Energy energy = energy_of(a, report, lights.size());
   if (!a.quiet) {
     for (size_t g = 0; g < criteria.grids.size(); ++g) {
       const auto& c = criteria.grids[g];
       const auto& f = report.figures[g];
-      std::fprintf(stderr, "hilight: %s: Ē %.0f lx, Emin %.0f lx, U0 %.2f (wanted Ē ≥ %g, U0 ≥ %g)%s\n", c.name.c_str(), f.mean, f.min,
-                   f.u0, c.lux, c.u0, f.met ? "" : "  NOT MET");
+      std::string between, margin;
+      if (report.margin > 0) {
+        char text[96];
+        std::snprintf(text, sizeof(text), ", U0 %.2f with the points between", report.u0_whole[g]);
+        between = text;
+        std::snprintf(text, sizeof(text), ", each %g%% clear", 100 * report.margin);
+        margin = text;
+      }
+      std::fprintf(stderr, "hilight: %s: maintained Ē %.0f lx, Emin %.0f lx, U0 %.2f%s (wanted Ē ≥ %g, U0 ≥ %g%s)%s\n", c.name.c_str(),
+                   f.mean, f.min, f.u0, between.c_str(), c.lux, c.u0, margin.c_str(), f.met ? "" : "  NOT MET");
     }
-    std::string power = a.luminaire->profile->input_watts > 0 ? ", " + std::to_string(int(std::lround(report.power_w))) + " W" : "";
-    std::fprintf(stderr, "hilight: %zu luminaire%s (%s, %s), %.0f lm%s (least possible %.0f lm), %s -> %s\n", lights.size(),
-                 lights.size() == 1 ? "" : "s", name.c_str(), rules.describe().c_str(), report.flux_lm, power.c_str(),
-                 report.least_flux_lm, command_time_summary(report.seconds["total"]).c_str(), a.output.c_str());
+    const auto layout_line = [&](const char* kind, const LayoutSummary& s) {
+      std::string text = std::string(kind) + " ";
+      if (!s.found) return text + (s.tried ? "none fits" : "not tried");
+      if (!s.shape.empty()) text += s.shape + ", ";
+      text += std::to_string(s.count) + " luminaire" + (s.count == 1 ? "" : "s");
+      if (a.luminaire->profile->input_watts > 0) text += ", " + std::to_string(int(std::lround(s.power_w))) + " W";
+      if (!s.met) text += " (not met)";
+      return text;
+    };
+    std::fprintf(stderr, "hilight: layouts: %s; %s; kept: %s (%s)\n", layout_line("array", report.array).c_str(),
+                 layout_line("free", report.free).c_str(), report.chosen.c_str(), report.why.c_str());
+    if (report.luminous_area > 0) {
+      char text[160];
+      if (std::isfinite(report.ugr)) std::snprintf(text, sizeof(text), "UGR %.1f at the standard observers", report.ugr);
+      else std::snprintf(text, sizeof(text), "UGR below 10 at the standard observers (no luminaire in view)");
+      std::string limit;
+      if (a.design.ugr_max > 0) {
+        char l[64];
+        std::snprintf(l, sizeof(l), " (limit %g)", a.design.ugr_max);
+        limit = l;
+      }
+      std::fprintf(stderr, "hilight: %s%s\n", text, limit.c_str());
+    }
+    if (is_ifc_path(a.output)) {
+      std::string where;
+      for (const auto& space : ifc.spaces)
+        if (where.find("'" + space + "'") == std::string::npos) where += (where.empty() ? "'" : ", '") + space + "'";
+      std::fprintf(stderr, "hilight: %s: a copy of %s with %zu IfcLightFixture (%zu in IfcSpaces, %zu in storeys: %s), IFC4\n",
+                   a.output.c_str(), a.scene_path.c_str(), lights.size(), ifc.in_spaces, ifc.in_storeys, where.c_str());
+    }
+    std::string power;
+    if (a.luminaire->profile->input_watts > 0) {
+      char text[160];
+      if (energy.area > 0)
+        std::snprintf(text, sizeof(text), ", %.0f W, %.2f W/m², LENI %.1f kWh/(m²·a)", energy.power, energy.density, energy.leni);
+      else
+        std::snprintf(text, sizeof(text), ", %.0f W", energy.power);
+      power = text;
+    }
+    std::fprintf(stderr, "hilight: %zu luminaire%s (%s, %s, MF %.2f), %.0f lm%s (least possible %.0f lm), %s -> %s\n", lights.size(),
+                 lights.size() == 1 ? "" : "s", name.c_str(), rules.describe().c_str(), report.maintenance_factor, report.flux_lm,
+                 power.c_str(), report.least_flux_lm, command_time_summary(report.seconds["total"]).c_str(), a.output.c_str());
   }
-  if (!report.met && report.shortfall_lux <= 0) {  // the program met them; the measurement did not
-    std::fprintf(stderr, "hilight: %s: the criteria are not met when the lights found are measured (lights written to %s)\n",
-                 a.target_path.c_str(), a.output.c_str());
+  if (!report.met && report.shortfall_lux <= 0) {  // the program met them; the layout or the measurement did not
+    std::fprintf(stderr, "hilight: %s: %s (lights written to %s)\n", a.target_path.c_str(),
+                 report.unmet.empty() ? "the criteria are not met when the lights found are measured" : report.unmet.c_str(),
+                 a.output.c_str());
     return 3;
   }
   if (!report.met) {

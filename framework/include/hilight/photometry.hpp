@@ -29,6 +29,10 @@ struct Photometry {
   /// C90–C270; 0 × 0 for a point source.
   double opening_length = 0, opening_width = 0;
   bool opening_round = false;
+  /// What the file names the luminaire (IES [MANUFAC] [LUMINAIRE]
+  /// [LUMCAT]; EULUMDAT's company, name and number), printable text only,
+  /// for schedules; empty when it names none.
+  std::string product;
 
   /// Candela towards (C, γ) in degrees (type C angles whatever the file's type):
   /// bilinear in the stored grid, 0 outside the measured range.

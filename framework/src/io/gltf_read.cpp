@@ -4,6 +4,7 @@
 // InputError naming it, never a crash.
 #include "hilight/error.hpp"
 #include "hilight/io/gltf.hpp"
+#include "hilight/io/photometry_io.hpp"
 #include "hilight/scene_origin.hpp"
 #include "confined_path.hpp"
 
@@ -223,11 +224,58 @@ Light area_from_extras(const tinygltf::Value& shape, const Vec3& position, const
   return light;
 }
 
+/// `extras.hilight` of a luminaire hilight wrote: {"type": "luminaire",
+/// "profile": file, "aim", "spin_deg", "dimming"[, "shape": an area source's]}.
+Light luminaire_from_extras(const tinygltf::Value& h, const Vec3& position, const fs::path& path, const std::string& name,
+                            std::map<std::string, std::shared_ptr<const Photometry>>& profiles) {
+  const auto bad = [&](const std::string& what) {
+    return InputError(path.string(), name + ": extras.hilight of a luminaire: " + what);
+  };
+  if (!h.Has("profile") || !h.Get("profile").IsString()) throw bad("\"profile\" must name its .ies or .ldt file");
+  const tinygltf::Value aim = h.Has("aim") ? h.Get("aim") : tinygltf::Value();
+  if (!aim.IsArray() || aim.ArrayLen() != 3) throw bad("\"aim\" must be [x, y, z]");
+  Vec3 direction(0.f);
+  for (int i = 0; i < 3; ++i) {
+    if (!aim.Get(i).IsNumber()) throw bad("\"aim\" must be [x, y, z]");
+    direction[i] = float(aim.Get(i).GetNumberAsDouble());
+  }
+  if (!is_finite(direction) || !(glm::length(direction) > 1e-6f)) throw bad("\"aim\" must be a finite direction");
+  const auto number = [&](const char* key, double fallback) {
+    if (!h.Has(key)) return fallback;
+    if (!h.Get(key).IsNumber() || !std::isfinite(h.Get(key).GetNumberAsDouble())) throw bad(std::string("\"") + key + "\" must be a number");
+    return h.Get(key).GetNumberAsDouble();
+  };
+  const double dimming = number("dimming", 1.0), spin = number("spin_deg", 0.0);
+  if (!(dimming >= 0 && dimming <= 1e6) || !(std::abs(spin) <= 360)) throw bad("\"dimming\" must be at least 0, \"spin_deg\" within ±360");
+  const fs::path named = h.Get("profile").Get<std::string>();
+  const fs::path file = named.is_absolute() ? named : path.parent_path() / named;
+  const std::string key = fs::absolute(file).lexically_normal().string();
+  auto& profile = profiles[key];
+  if (!profile) profile = std::make_shared<const Photometry>(read_photometry(file));
+  Light light;
+  light.type = LightType::Luminaire;
+  light.position = position;
+  light.direction = glm::normalize(direction);
+  light.profile = profile;
+  light.profile_path = key;
+  light.spin_deg = float(spin);
+  light.intensity = Rgb(float(dimming * profile->peak() / kCandelaPerWattPerSr));
+  if (h.Has("shape")) {
+    Light area = area_from_extras(h.Get("shape"), position, light.direction, light.intensity, path, name);
+    area.profile = light.profile;
+    area.profile_path = light.profile_path;
+    area.spin_deg = light.spin_deg;
+    return area;
+  }
+  return light;
+}
+
 } // namespace
 
 Lighting read_gltf_lights(const fs::path& path, const SceneFrame* frame) {
   const tinygltf::Model model = load(path);
   Lighting lights;
+  std::map<std::string, std::shared_ptr<const Photometry>> profiles;
   for_each_node(model, path, [&](const tinygltf::Node& node, const glm::dmat4& world) {
     const auto ext = node.extensions.find("KHR_lights_punctual");
     if (ext == node.extensions.end()) return;
@@ -254,6 +302,13 @@ Lighting read_gltf_lights(const fs::path& path, const SceneFrame* frame) {
     // Into the scene's frame in double precision (scene_origin.hpp); a light the
     // move puts beyond float is the caller's to refuse (lights_from_file).
     const Vec3 position = frame ? to_local(world_position, *frame) : Vec3(world_position);
+    if (g.extras.IsObject() && g.extras.Has("hilight") && g.extras.Get("hilight").IsObject() &&
+        g.extras.Get("hilight").Has("type") && g.extras.Get("hilight").Get("type").IsString() &&
+        g.extras.Get("hilight").Get("type").Get<std::string>() == "luminaire") {  // a luminaire hilight wrote (docs/interchange.md)
+      lights.push_back(luminaire_from_extras(g.extras.Get("hilight"), position, path, name, profiles));
+      if (frame && is_area(lights.back().type)) lights.back().size *= float(frame->scale);
+      return;
+    }
     if (g.type == "point") {
       lights.push_back(Light::point(position, intensity));
       return;

@@ -3,6 +3,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/gltf.hpp"
+#include "hilight/units.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -173,10 +174,74 @@ void add_area_extras(const Light& l, tinygltf::Light& light, tinygltf::Node& nod
   light.extras = tinygltf::Value(std::move(extras));
 }
 
+tinygltf::Value numbers(std::initializer_list<double> values) {
+  tinygltf::Value::Array a;
+  for (double v : values) a.push_back(tinygltf::Value(v));
+  return tinygltf::Value(std::move(a));
+}
+
+/// A luminaire with a measured profile as what Blender imports: a spot
+/// aimed along its nadir when its light stays in the lower hemisphere (the
+/// cone to where its C-averaged intensity falls below 1% of its largest,
+/// the soft edge from where it falls below half), of that largest C-averaged
+/// intensity; else a point of its mean intensity (flux / 4π). The profile
+/// file, aim, spin, dimming and flux (and an area source's shape) go in
+/// `extras.hilight`, from which hilight reads the luminaire back
+/// (docs/interchange.md).
+void add_luminaire(const Light& l, tinygltf::Light& light, tinygltf::Node& node) {
+  const Photometry& p = *l.profile;
+  const double dimming = luminaire_dimming(l);
+  std::vector<double> mean(181, 0.0);
+  for (int g = 0; g <= 180; ++g) {
+    for (int c = 0; c < 360; c += 5) mean[size_t(g)] += p.intensity(double(c), double(g));
+    mean[size_t(g)] /= 72.0;
+  }
+  const double largest = *std::max_element(mean.begin(), mean.end());
+  int cutoff = 0, half = 0;
+  for (int g = 0; g <= 180; ++g) {
+    if (mean[size_t(g)] >= 0.01 * largest) cutoff = g;
+    if (mean[size_t(g)] >= 0.5 * largest && half == g) half = g + 1;
+  }
+  half = std::max(0, half - 1);
+  const glm::dquat q = aim(l.direction);
+  node.rotation = {q.x, q.y, q.z, q.w};
+  if (cutoff <= 90) {
+    light.type = "spot";
+    light.spot.outerConeAngle = std::max(1, cutoff) * kPi / 180.0;
+    light.spot.innerConeAngle = std::min(half, std::max(0, cutoff - 1)) * kPi / 180.0;
+    light.intensity = dimming * largest;
+  } else {
+    light.type = "point";
+    light.intensity = dimming * p.flux() / (4.0 * kPi);
+  }
+  light.color = {1.0, 1.0, 1.0};
+  tinygltf::Value::Object extras;
+  extras["type"] = tinygltf::Value(std::string("luminaire"));
+  extras["profile"] = tinygltf::Value(l.profile_path);
+  extras["aim"] = numbers({l.direction.x, l.direction.y, l.direction.z});
+  extras["spin_deg"] = tinygltf::Value(double(l.spin_deg));
+  extras["dimming"] = tinygltf::Value(dimming);
+  extras["luminous_flux_lm"] = tinygltf::Value(dimming * p.flux());
+  if (p.input_watts > 0) extras["power_w"] = tinygltf::Value(dimming * p.input_watts);
+  if (!p.product.empty()) extras["product"] = tinygltf::Value(p.product);
+  if (is_area(l.type)) {
+    tinygltf::Value::Object shape;
+    shape["type"] = tinygltf::Value(std::string(to_string(l.type)));
+    tinygltf::Value::Array size{tinygltf::Value(double(l.size[0]))};
+    if (l.type == LightType::Rectangle) size.push_back(tinygltf::Value(double(l.size[1])));
+    shape["size"] = tinygltf::Value(std::move(size));
+    shape["up"] = numbers({l.up.x, l.up.y, l.up.z});
+    extras["shape"] = tinygltf::Value(std::move(shape));
+  }
+  tinygltf::Value::Object wrapped;
+  wrapped["hilight"] = tinygltf::Value(std::move(extras));
+  light.extras = tinygltf::Value(std::move(wrapped));
+}
+
 void add_light(tinygltf::Model& model, const Light& l, size_t index, const glm::dvec3& origin, tinygltf::Node& node,
                const fs::path& path) {
-  if (l.type == LightType::Luminaire || (is_area(l.type) && l.profile))
-    throw InputError(path.string(), "light " + std::to_string(index) + " is a luminaire with a measured profile: KHR_lights_punctual has only point and spot lights");
+  if ((l.type == LightType::Luminaire || is_area(l.type)) && l.profile && l.profile_path.empty())
+    throw InputError(path.string(), "light " + std::to_string(index) + " is a luminaire whose profile has no file to name in the glTF");
   tinygltf::Light light;
   light.name = "light " + std::to_string(index);
   light.type = l.type == LightType::Spot || is_area(l.type) ? "spot" : "point";
@@ -190,7 +255,8 @@ void add_light(tinygltf::Model& model, const Light& l, size_t index, const glm::
     const glm::dquat q = aim(l.direction);
     node.rotation = {q.x, q.y, q.z, q.w};
   }
-  if (is_area(l.type)) add_area_extras(l, light, node);
+  if (l.profile) add_luminaire(l, light, node);
+  else if (is_area(l.type)) add_area_extras(l, light, node);
   model.lights.push_back(light);
   node.name = light.name;
   const glm::dvec3 world = glm::dvec3(l.position) + origin;  // exact in the file's doubles

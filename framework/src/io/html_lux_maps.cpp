@@ -35,7 +35,7 @@ std::string grid_map(const CriterionGrid& grid, const double* lux, const Lightin
   for (size_t i = 0; i < grid.points.size(); ++i) top = std::max(top, lux[i]);
   std::ostringstream s;
   s << std::fixed << std::setprecision(1) << "<svg class=\"luxmap\" id=\"luxmap-" << index << "\" width=\"" << w + 20 << "\" height=\""
-    << h + 20 << "\" xmlns=\"http://www.w3.org/2000/svg\" font-size=\"9\"><g transform=\"translate(10,10)\">";
+    << h + 34 << "\" xmlns=\"http://www.w3.org/2000/svg\" font-size=\"9\"><g transform=\"translate(10,10)\">";
   for (size_t i = 0; i < grid.points.size(); ++i) {
     const double x = double(grid.points[i].x - box.lo.x) * scale, y = double(grid.points[i].z - box.lo.z) * scale;
     const double side = 2.0 * half * scale;
@@ -48,6 +48,15 @@ std::string grid_map(const CriterionGrid& grid, const double* lux, const Lightin
     const double x = double(l.position.x - box.lo.x) * scale, y = double(l.position.z - box.lo.z) * scale;
     s << "<circle class=\"luminaire\" cx=\"" << x << "\" cy=\"" << y << "\" r=\"4\" fill=\"white\" stroke=\"black\"/>";
   }
+  // A scale bar: the round length nearest a quarter of the map.
+  const double want = 0.25 * double(std::max(box.extent().x, box.extent().z));
+  const double magnitude = std::pow(10.0, std::floor(std::log10(std::max(want, 1e-6))));
+  double bar = magnitude;
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * magnitude <= want) bar = m * magnitude;
+  s << "<g class=\"scalebar\"><line x1=\"0\" y1=\"" << h + 6 << "\" x2=\"" << bar * scale << "\" y2=\"" << h + 6
+    << "\" stroke=\"black\" stroke-width=\"2\"/><text x=\"" << bar * scale + 4 << "\" y=\"" << h + 9 << "\">" << std::setprecision(bar < 1 ? 1 : 0)
+    << bar << " m</text></g>" << std::setprecision(1);
   s << "</g></svg>";
   // The colour scale.
   s << "<svg width=\"" << 260 << "\" height=\"30\" xmlns=\"http://www.w3.org/2000/svg\" font-size=\"10\">";
@@ -70,10 +79,33 @@ std::string lux_maps_html(const IlluminanceCriteria& criteria, const DesignRepor
          << "</td><td>≥ " << c.lux << "</td><td>" << f.min << "</td><td>" << std::setprecision(2) << f.u0 << "</td><td>≥ " << c.u0
          << "</td><td>" << (f.met ? "yes" : "<b>no</b>") << "</td></tr>\n";
   }
-  html << "</table>\n" << std::setprecision(0) << "<p>Total flux " << design.flux_lm << " lm (the least any layout of these places "
-       << "could have: " << design.least_flux_lm << " lm)";
-  if (design.power_w > 0) html << ", " << design.power_w << " W";
-  html << ".</p>\n<div class=\"views\">";
+  html << "</table>\n" << std::setprecision(0) << "<p>Maintained illuminance: the new installation × the maintenance factor "
+       << std::setprecision(2) << design.maintenance_factor << std::setprecision(0);
+  if (design.margin > 0) html << "; every criterion " << 100 * design.margin << "% clear of its limit, Emin also between the points";
+  html << ".</p><p>Total flux " << design.flux_lm << " lm (the least any layout of these places could have: " << design.least_flux_lm
+       << " lm)";
+  if (design.power_w > 0) {
+    html << ", " << design.power_w << " W";
+    if (design.room.floor_area > 0)
+      html << std::setprecision(2) << ", " << design.power_w / design.room.floor_area << " W/m² over " << std::setprecision(1)
+           << design.room.floor_area << " m²" << std::setprecision(0);
+  }
+  html << ".</p>\n<table id=\"layouts\"><tr><th>layout</th><th>luminaires</th><th>flux (lm)</th><th>W</th><th>met</th><th></th></tr>\n";
+  for (const auto& [kind, summary] : {std::pair<const char*, const LayoutSummary*>{"array", &design.array}, {"free", &design.free}}) {
+    if (!summary->found) continue;
+    html << "<tr><td>" << kind << "</td><td>" << summary->count << "</td><td>" << summary->flux_lm << "</td><td>" << summary->power_w
+         << "</td><td>" << (summary->met ? "yes" : "no") << "</td><td>" << summary->shape << (design.chosen == kind ? " (kept)" : "")
+         << "</td></tr>\n";
+  }
+  html << "</table><p>Kept: " << design.chosen << ", " << design.why << ".</p>\n";
+  if (!design.glare.empty()) {
+    html << "<table id=\"ugr\"><tr><th>UGR observer (eyes 1.2 m)</th><th>UGR</th></tr>\n" << std::fixed << std::setprecision(1);
+    for (const auto& g : design.glare)
+      if (std::isfinite(g.ugr)) html << "<tr><td>" << g.observer.name << "</td><td>" << g.ugr << "</td></tr>\n";
+      else html << "<tr><td>" << g.observer.name << "</td><td>&lt; 10</td></tr>\n";
+    html << "</table>\n" << std::setprecision(0);
+  }
+  html << "<div class=\"views\">";
   size_t first = 0;
   for (size_t g = 0; g < criteria.grids.size(); ++g) {
     const auto& c = criteria.grids[g];

@@ -167,15 +167,24 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
   }
   html << plans_html(page, width);
   const bool photometric = page.units == "photometric";
+  const bool luminaires = std::any_of(page.lights.begin(), page.lights.end(), [](const Light& l) { return bool(l.profile); });
   html << "<h2>Lights</h2><table id=\"lights\"><tr><th>#</th><th>type</th><th>x</th><th>y</th><th>z</th><th>intensity "
-       << (photometric ? "(cd)" : "(W/sr)") << "</th><th>flux (lm)</th></tr>\n";
+       << (photometric ? "(cd)" : "(W/sr)") << "</th><th>flux (lm)</th>"
+       << (luminaires ? "<th>product</th><th>aim</th><th>dimming (%)</th><th>W</th>" : "") << "</tr>\n";
   for (size_t j = 0; j < page.lights.size(); ++j) {
     const Light& l = page.lights[j];
     const Rgb shown = photometric ? l.intensity * float(kLumensPerWatt) : l.intensity;
     const glm::dvec3 at = to_world(l.position, scene.frame);  // where it stands in the file's coordinates (scene_origin.hpp)
     html << "<tr><td>" << j << "</td><td>" << to_string(l.type) << "</td><td>" << at.x << "</td><td>" << at.y
          << "</td><td>" << at.z << "</td><td>" << shown.r << ", " << shown.g << ", " << shown.b << "</td><td>"
-         << luminous_flux(l) << "</td></tr>\n";
+         << luminous_flux(l) << "</td>";
+    if (luminaires && l.profile) {
+      const double d = luminaire_dimming(l);
+      html << "<td>" << html_escape(l.profile->product.empty() ? std::filesystem::path(l.profile_path).filename().string() : l.profile->product) << "</td><td>"
+           << l.direction.x << ", " << l.direction.y << ", " << l.direction.z << "</td><td>" << 100.0 * d << "</td><td>"
+           << d * l.profile->input_watts << "</td>";
+    }
+    html << "</tr>\n";
   }
   html << "</table>\n<h2>Timings</h2><table id=\"timings\"><tr><th>stage</th><th>seconds</th></tr>\n";
   for (const auto& [stage, seconds] : page.report.seconds) html << "<tr><td>" << html_escape(stage) << "</td><td>" << seconds << "</td></tr>\n";

@@ -53,11 +53,31 @@ void check_ascending(const std::vector<double>& a, const std::string& source, co
 
 } // namespace
 
+std::string product_text(const std::vector<std::string>& parts) {
+  std::string out;
+  for (const std::string& part : parts) {
+    std::string clean;
+    for (unsigned char c : part)
+      if (c >= 0x20 && c != 0x7f) clean += char(c);  // UTF-8 kept; control characters dropped
+    const size_t first = clean.find_first_not_of(' '), last = clean.find_last_not_of(' ');
+    if (first == std::string::npos) continue;
+    if (!out.empty()) out += ' ';
+    out += clean.substr(first, last - first + 1);
+  }
+  if (out.size() > 200) {
+    out.resize(200);
+    while (!out.empty() && (static_cast<unsigned char>(out.back()) & 0xC0) == 0x80) out.pop_back();  // no half character
+    if (!out.empty() && static_cast<unsigned char>(out.back()) >= 0xC0) out.pop_back();
+  }
+  return out;
+}
+
 Photometry parse_ies(const std::string& text, const std::string& source) {
   Photometry p;
   p.source = source;
   // Keywords and the version line end at "TILT=".
   size_t tilt = std::string::npos;
+  std::string manufacturer, name, catalogue;
   for (size_t at = 0; at < text.size();) {
     size_t end = text.find('\n', at);
     if (end == std::string::npos) end = text.size();
@@ -67,8 +87,18 @@ Photometry parse_ies(const std::string& text, const std::string& source) {
       tilt = at + first;
       break;
     }
+    if (first != std::string::npos) {
+      const auto keyword = [&](const char* key, std::string& into) {
+        const size_t n = std::char_traits<char>::length(key);
+        if (line.compare(first, n, key) == 0 && into.empty()) into = line.substr(first + n);
+      };
+      keyword("[MANUFAC]", manufacturer);
+      keyword("[LUMINAIRE]", name);
+      keyword("[LUMCAT]", catalogue);
+    }
     at = end + 1;
   }
+  p.product = product_text({manufacturer, name, catalogue});
   if (tilt == std::string::npos) throw InputError(source, "no TILT= line: not an IES LM-63 file");
   const size_t tilt_end = std::min(text.find('\n', tilt), text.size());
   std::string tilt_value = text.substr(tilt + 5, tilt_end - tilt - 5);

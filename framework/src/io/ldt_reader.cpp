@@ -60,14 +60,17 @@ Photometry parse_ldt(const std::string& text, const std::string& source) {
   Lines in(text, source);
   Photometry p;
   p.source = source;
-  in.text("the company");
+  const std::string company = in.text("the company");
   in.whole("the type indicator Ityp", 0, 3);
   const size_t isym = in.whole("the symmetry Isym", 0, 4);
   const size_t mc = in.whole("the number of C planes Mc", 1, 3600);
   in.number("the distance between C planes Dc");
   const size_t ng = in.whole("the number of gamma angles Ng", 1, 3600);
   in.number("the distance between gamma angles Dg");
-  for (const char* what : {"the measurement report", "the luminaire name", "the luminaire number", "the file name", "the date/user"}) in.text(what);
+  in.text("the measurement report");
+  const std::string name = in.text("the luminaire name"), number = in.text("the luminaire number");
+  for (const char* what : {"the file name", "the date/user"}) in.text(what);
+  p.product = product_text({company, name, number});
   // Luminaire length, width, height; then the luminous area's length (or
   // diameter) and width (0: round), mm; then its heights.
   double dimension[9];

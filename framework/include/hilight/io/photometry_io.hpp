@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace hilight {
 
@@ -24,5 +25,10 @@ constexpr double kBrightestCandela = 1e10;
 Photometry read_photometry(const std::filesystem::path& path);
 Photometry parse_ies(const std::string& text, const std::string& source);
 Photometry parse_ldt(const std::string& text, const std::string& source);
+
+/// A product name from a file's fields: each trimmed, control characters
+/// and stray bytes dropped, the non-empty ones joined by blanks, at most
+/// 200 characters (Photometry::product).
+std::string product_text(const std::vector<std::string>& parts);
 
 } // namespace hilight

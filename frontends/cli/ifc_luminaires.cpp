@@ -1,0 +1,443 @@
+// The luminaires of a solve in a copy of its input IFC (ifc_luminaires.hpp).
+#include "ifc_luminaires.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/io/atomic_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#ifdef HILIGHT_HAVE_IFCPP
+#include <glm/glm.hpp>
+#include <ifcpp/IFC4/include/IfcAxis2Placement2D.h>
+#include <ifcpp/IFC4/include/IfcAxis2Placement3D.h>
+#include <ifcpp/IFC4/include/IfcArbitraryClosedProfileDef.h>
+#include <ifcpp/IFC4/include/IfcBuildingStorey.h>
+#include <ifcpp/IFC4/include/IfcCartesianPoint.h>
+#include <ifcpp/IFC4/include/IfcDirection.h>
+#include <ifcpp/IFC4/include/IfcExtrudedAreaSolid.h>
+#include <ifcpp/IFC4/include/IfcGeometricRepresentationContext.h>
+#include <ifcpp/IFC4/include/IfcGloballyUniqueId.h>
+#include <ifcpp/IFC4/include/IfcIdentifier.h>
+#include <ifcpp/IFC4/include/IfcLabel.h>
+#include <ifcpp/IFC4/include/IfcLengthMeasure.h>
+#include <ifcpp/IFC4/include/IfcLightFixture.h>
+#include <ifcpp/IFC4/include/IfcLightFixtureTypeEnum.h>
+#include <ifcpp/IFC4/include/IfcLocalPlacement.h>
+#include <ifcpp/IFC4/include/IfcLuminousFluxMeasure.h>
+#include <ifcpp/IFC4/include/IfcOwnerHistory.h>
+#include <ifcpp/IFC4/include/IfcPolyline.h>
+#include <ifcpp/IFC4/include/IfcPositiveLengthMeasure.h>
+#include <ifcpp/IFC4/include/IfcPowerMeasure.h>
+#include <ifcpp/IFC4/include/IfcProductDefinitionShape.h>
+#include <ifcpp/IFC4/include/IfcProfileTypeEnum.h>
+#include <ifcpp/IFC4/include/IfcPropertySet.h>
+#include <ifcpp/IFC4/include/IfcPropertySingleValue.h>
+#include <ifcpp/IFC4/include/IfcReal.h>
+#include <ifcpp/IFC4/include/IfcRectangleProfileDef.h>
+#include <ifcpp/IFC4/include/IfcRelContainedInSpatialStructure.h>
+#include <ifcpp/IFC4/include/IfcRelDefinesByProperties.h>
+#include <ifcpp/IFC4/include/IfcShapeRepresentation.h>
+#include <ifcpp/IFC4/include/IfcSpace.h>
+#include <ifcpp/IFC4/include/IfcText.h>
+#include <ifcpp/model/BuildingModel.h>
+#include <ifcpp/model/UnitConverter.h>
+#include <ifcpp/reader/ReaderSTEP.h>
+#include <ifcpp/writer/WriterSTEP.h>
+#endif
+
+namespace hilight::cli {
+
+#ifndef HILIGHT_HAVE_IFCPP
+
+bool ifc_output_available() { return false; }
+
+IfcWritten write_ifc_luminaires(const std::filesystem::path&, const std::filesystem::path& out, const std::vector<IfcLuminaire>&) {
+  throw InputError(out.string(), "IFC output needs IfcPlusPlus, which this build lacks (apt install libifcplusplus-dev libboost-dev, then cmake again)");
+}
+
+std::vector<IfcFixture> read_ifc_fixtures(const std::filesystem::path& file) {
+  throw InputError(file.string(), "reading IFC fixtures needs IfcPlusPlus, which this build lacks");
+}
+
+#else
+
+namespace {
+
+using Mat = glm::dmat4;
+
+std::wstring wide(const std::string& utf8) {
+  std::wstring out;
+  for (size_t i = 0; i < utf8.size();) {
+    const unsigned char c = static_cast<unsigned char>(utf8[i]);
+    const int extra = c < 0x80 ? 0 : (c >> 5) == 6 ? 1 : (c >> 4) == 14 ? 2 : (c >> 3) == 30 ? 3 : -1;
+    if (extra < 0 || i + size_t(extra) >= utf8.size() + (extra == 0 ? 1 : 0)) {
+      out += L'?';
+      ++i;
+      continue;
+    }
+    uint32_t code = extra == 0 ? c : c & (0x3F >> extra);
+    for (int k = 1; k <= extra; ++k) code = code << 6 | (static_cast<unsigned char>(utf8[i + size_t(k)]) & 0x3F);
+    out += wchar_t(code);
+    i += size_t(extra) + 1;
+  }
+  return out;
+}
+
+std::string narrow(const std::wstring& w) {
+  std::string out;
+  for (wchar_t wc : w) {
+    const uint32_t c = uint32_t(wc);
+    if (c < 0x80) out += char(c);
+    else if (c < 0x800) out += char(0xC0 | c >> 6), out += char(0x80 | (c & 0x3F));
+    else if (c < 0x10000) out += char(0xE0 | c >> 12), out += char(0x80 | (c >> 6 & 0x3F)), out += char(0x80 | (c & 0x3F));
+    else out += char(0xF0 | c >> 18), out += char(0x80 | (c >> 12 & 0x3F)), out += char(0x80 | (c >> 6 & 0x3F)), out += char(0x80 | (c & 0x3F));
+  }
+  return out;
+}
+
+/// hilight's axes (+Y up, assimp's reading of IFC) and IFC's (+Z up): IFC (x, y, z) = hilight (x, −z, y).
+glm::dvec3 to_ifc(const glm::dvec3& h) { return {h.x, -h.z, h.y}; }
+glm::dvec3 from_ifc(const glm::dvec3& i) { return {i.x, i.z, -i.y}; }
+
+std::vector<double> coordinates(const shared_ptr<IfcCartesianPoint>& p) {
+  std::vector<double> out;
+  if (p)
+    for (const auto& c : p->m_Coordinates) out.push_back(c ? c->m_value : 0.0);
+  return out;
+}
+
+glm::dvec3 direction(const shared_ptr<IfcDirection>& d, const glm::dvec3& fallback) {
+  if (!d) return fallback;
+  glm::dvec3 v(0.0);
+  for (size_t k = 0; k < d->m_DirectionRatios.size() && k < 3; ++k) v[int(k)] = d->m_DirectionRatios[k] ? d->m_DirectionRatios[k]->m_value : 0.0;
+  return glm::length(v) > 1e-12 ? glm::normalize(v) : fallback;
+}
+
+Mat axis_matrix(const shared_ptr<IfcAxis2Placement3D>& a) {
+  if (!a) return Mat(1.0);
+  const auto c = coordinates(a->m_Location);
+  const glm::dvec3 origin(c.size() > 0 ? c[0] : 0.0, c.size() > 1 ? c[1] : 0.0, c.size() > 2 ? c[2] : 0.0);
+  const glm::dvec3 z = direction(a->m_Axis, {0, 0, 1});
+  glm::dvec3 x = direction(a->m_RefDirection, {1, 0, 0});
+  x = x - glm::dot(x, z) * z;
+  if (glm::length(x) < 1e-9) x = std::abs(z.x) < 0.9 ? glm::dvec3(1, 0, 0) - z.x * z : glm::dvec3(0, 1, 0) - z.y * z;
+  x = glm::normalize(x);
+  const glm::dvec3 y = glm::cross(z, x);
+  Mat m(1.0);
+  m[0] = glm::dvec4(x, 0);
+  m[1] = glm::dvec4(y, 0);
+  m[2] = glm::dvec4(z, 0);
+  m[3] = glm::dvec4(origin, 1);
+  return m;
+}
+
+Mat placement_matrix(const shared_ptr<IfcObjectPlacement>& p, int depth = 0) {
+  const auto local = dynamic_pointer_cast<IfcLocalPlacement>(p);
+  if (!local || depth > 64) return Mat(1.0);
+  const Mat parent = local->m_PlacementRelTo ? placement_matrix(local->m_PlacementRelTo, depth + 1) : Mat(1.0);
+  return parent * axis_matrix(dynamic_pointer_cast<IfcAxis2Placement3D>(local->m_RelativePlacement));
+}
+
+/// A space's footprint: a polygon in its local x, y and the heights it spans.
+struct Footprint {
+  std::vector<glm::dvec2> polygon;
+  double z0 = 0, z1 = 0;
+  Mat world{1.0}, to_local{1.0};
+  bool contains(const glm::dvec3& p_world) const {
+    const glm::dvec3 p(to_local * glm::dvec4(p_world, 1.0));
+    if (p.z < z0 - 1e-6 || p.z > z1 + 1e-6 || polygon.size() < 3) return false;
+    bool in = false;
+    for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+      const glm::dvec2 a = polygon[i], b = polygon[j];
+      if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
+    }
+    return in;
+  }
+};
+
+/// The footprint of a space whose body is an extruded polyline or rectangle (the usual case).
+std::optional<Footprint> footprint(const shared_ptr<IfcSpace>& space) {
+  if (!space->m_Representation) return std::nullopt;
+  for (const auto& rep : space->m_Representation->m_Representations) {
+    if (!rep) continue;
+    for (const auto& item : rep->m_Items) {
+      const auto solid = dynamic_pointer_cast<IfcExtrudedAreaSolid>(item);
+      if (!solid || !solid->m_Depth) continue;
+      Footprint f;
+      const Mat body = axis_matrix(solid->m_Position);
+      f.world = placement_matrix(space->m_ObjectPlacement) * body;
+      f.to_local = glm::inverse(f.world);
+      const glm::dvec3 up = direction(solid->m_ExtrudedDirection, {0, 0, 1});
+      f.z1 = solid->m_Depth->m_value * up.z;
+      if (f.z1 < 0) std::swap(f.z0, f.z1);
+      if (const auto poly = dynamic_pointer_cast<IfcArbitraryClosedProfileDef>(solid->m_SweptArea)) {
+        if (const auto line = dynamic_pointer_cast<IfcPolyline>(poly->m_OuterCurve))
+          for (const auto& pt : line->m_Points) {
+            const auto c = coordinates(pt);
+            if (c.size() >= 2) f.polygon.push_back({c[0], c[1]});
+          }
+      } else if (const auto rect = dynamic_pointer_cast<IfcRectangleProfileDef>(solid->m_SweptArea)) {
+        if (rect->m_XDim && rect->m_YDim) {
+          const double hx = 0.5 * rect->m_XDim->m_value, hy = 0.5 * rect->m_YDim->m_value;
+          Mat at(1.0);
+          if (rect->m_Position) {
+            const auto c = coordinates(rect->m_Position->m_Location);
+            const glm::dvec3 x = direction(rect->m_Position->m_RefDirection, {1, 0, 0});
+            at[0] = glm::dvec4(x.x, x.y, 0, 0);
+            at[1] = glm::dvec4(-x.y, x.x, 0, 0);
+            at[3] = glm::dvec4(c.size() > 0 ? c[0] : 0, c.size() > 1 ? c[1] : 0, 0, 1);
+          }
+          for (const glm::dvec2 corner : {glm::dvec2(-hx, -hy), glm::dvec2(hx, -hy), glm::dvec2(hx, hy), glm::dvec2(-hx, hy)})
+            f.polygon.push_back(glm::dvec2(at * glm::dvec4(corner, 0, 1)));
+        }
+      }
+      if (f.polygon.size() >= 3) return f;
+    }
+  }
+  return std::nullopt;
+}
+
+/// An IFC GlobalId (22 characters of IFC's base 64) from a 128-bit hash of `key`: the same luminaire, the same id.
+std::wstring global_id(const std::string& key) {
+  static const char* chars = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_$";
+  uint64_t h1 = 1469598103934665603ull, h2 = 1099511628211ull * 31;
+  for (unsigned char c : key) {
+    h1 = (h1 ^ c) * 1099511628211ull;
+    h2 = (h2 ^ c) * 6364136223846793005ull + 1442695040888963407ull;
+  }
+  std::wstring out;
+  out += wchar_t(chars[(h1 >> 62) & 3]);  // the first character carries 2 bits
+  for (int k = 0; k < 21; ++k) {
+    const uint64_t word = k < 10 ? h1 >> (6 * k) : h2 >> (6 * (k - 10));
+    out += wchar_t(chars[word & 63]);
+  }
+  return out;
+}
+
+shared_ptr<IfcCartesianPoint> point(std::initializer_list<double> c) {
+  auto p = make_shared<IfcCartesianPoint>();
+  for (double v : c) p->m_Coordinates.push_back(make_shared<IfcLengthMeasure>(v));
+  return p;
+}
+
+shared_ptr<IfcDirection> dir(std::initializer_list<double> c) {
+  auto d = make_shared<IfcDirection>();
+  for (double v : c) d->m_DirectionRatios.push_back(make_shared<IfcReal>(v));
+  return d;
+}
+
+shared_ptr<IfcAxis2Placement3D> axes(const glm::dvec3& at, const glm::dvec3& z, const glm::dvec3& x) {
+  auto a = make_shared<IfcAxis2Placement3D>();
+  a->m_Location = point({at.x, at.y, at.z});
+  a->m_Axis = dir({z.x, z.y, z.z});
+  a->m_RefDirection = dir({x.x, x.y, x.z});
+  return a;
+}
+
+shared_ptr<IfcPropertySingleValue> property(const std::string& name, const shared_ptr<IfcValue>& value) {
+  auto p = make_shared<IfcPropertySingleValue>();
+  p->m_Name = make_shared<IfcIdentifier>(wide(name));
+  p->m_NominalValue = value;
+  return p;
+}
+
+shared_ptr<BuildingModel> load(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string(), "cannot open it to read");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string content = text.str();
+  if (content.find("ISO-10303-21") == std::string::npos) throw InputError(file.string(), "not an IFC file (STEP, ISO 10303-21)");
+  auto model = make_shared<BuildingModel>();
+  ReaderSTEP reader;
+  try {
+    reader.loadModelFromString(content, model);
+  } catch (const std::exception& e) {
+    throw InputError(file.string(), std::string("IfcPlusPlus cannot read it: ") + e.what());
+  }
+  if (model->getMapIfcEntities().empty()) throw InputError(file.string(), "IfcPlusPlus read no entity from it");
+  return model;
+}
+
+} // namespace
+
+bool ifc_output_available() { return true; }
+
+IfcWritten write_ifc_luminaires(const std::filesystem::path& source, const std::filesystem::path& out,
+                                const std::vector<IfcLuminaire>& luminaires) {
+  shared_ptr<BuildingModel> model = load(source);
+  const double metres = model->getUnitConverter()->getLengthInMeterFactor();
+  const double per_metre = metres > 0 ? 1.0 / metres : 1.0;
+  // What the file has: its owner history, its 3D context, its spaces and storeys.
+  shared_ptr<IfcOwnerHistory> owner;
+  std::vector<shared_ptr<IfcSpace>> spaces;
+  std::vector<std::pair<double, shared_ptr<IfcBuildingStorey>>> storeys;
+  for (const auto& [id, e] : model->getMapIfcEntities()) {
+    if (!owner) owner = dynamic_pointer_cast<IfcOwnerHistory>(e);
+    if (const auto s = dynamic_pointer_cast<IfcSpace>(e)) spaces.push_back(s);
+    if (const auto s = dynamic_pointer_cast<IfcBuildingStorey>(e))
+      storeys.push_back({glm::dvec3(placement_matrix(s->m_ObjectPlacement)[3]).z, s});
+  }
+  std::sort(storeys.begin(), storeys.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::pair<shared_ptr<IfcSpace>, Footprint>> footprints;
+  for (const auto& s : spaces)
+    if (auto f = footprint(s)) footprints.push_back({s, *f});
+  shared_ptr<IfcGeometricRepresentationContext> context = model->getIfcGeometricRepresentationContext3D();
+  if (!context)
+    for (const auto& [id, e] : model->getMapIfcEntities())
+      if (const auto c = dynamic_pointer_cast<IfcGeometricRepresentationContext>(e); c && !context) context = c;
+
+  IfcWritten written;
+  std::map<BuildingEntity*, std::pair<shared_ptr<IfcSpatialElement>, std::vector<shared_ptr<IfcProduct>>>> contained;
+  std::vector<shared_ptr<BuildingEntity>> added;
+  const std::string key = std::filesystem::absolute(out).lexically_normal().string();
+  for (size_t j = 0; j < luminaires.size(); ++j) {
+    const IfcLuminaire& l = luminaires[j];
+    const glm::dvec3 at = to_ifc(l.position) * per_metre;
+    // Where it stands: the space whose footprint holds it (a hair under the ceiling), else the storey below.
+    shared_ptr<IfcSpatialElement> where;
+    std::string where_name;
+    for (const auto& [space, f] : footprints)
+      if (f.contains(at) || f.contains(at - glm::dvec3(0, 0, 0.05 * per_metre))) {
+        where = space;
+        const auto& label = space->m_LongName ? space->m_LongName : space->m_Name;
+        where_name = label ? narrow(label->m_value) : "IfcSpace";
+        ++written.in_spaces;
+        break;
+      }
+    if (!where && !storeys.empty()) {
+      auto below = storeys.front();
+      for (const auto& s : storeys)
+        if (s.first <= at.z + 1e-6) below = s;
+      where = below.second;
+      where_name = below.second->m_Name ? narrow(below.second->m_Name->m_value) : "IfcBuildingStorey";
+      ++written.in_storeys;
+    }
+    written.spaces.push_back(where_name);
+    // Placed relative to what holds it, turned as the luminaire (its C0 along local x), aimed along local −z.
+    const Mat parent = where ? placement_matrix(where->m_ObjectPlacement) : Mat(1.0);
+    const Mat to_parent = glm::inverse(parent);
+    const double spin = l.spin_deg * 3.14159265358979323846 / 180.0;
+    const glm::dvec3 c0_world = to_ifc({std::cos(spin), 0.0, -std::sin(spin)});  // hilight's C0 turned from +X towards −Z
+    const glm::dvec3 down = glm::normalize(to_ifc(l.aim));
+    auto placement = make_shared<IfcLocalPlacement>();
+    if (where) placement->m_PlacementRelTo = where->m_ObjectPlacement;
+    placement->m_RelativePlacement = axes(glm::dvec3(to_parent * glm::dvec4(at, 1.0)), glm::dvec3(to_parent * glm::dvec4(-down, 0.0)),
+                                          glm::dvec3(to_parent * glm::dvec4(c0_world, 0.0)));
+    auto fixture = make_shared<IfcLightFixture>();
+    fixture->m_GlobalId = make_shared<IfcGloballyUniqueId>(global_id(key + "#" + std::to_string(j)));
+    fixture->m_OwnerHistory = owner;
+    fixture->m_Name = make_shared<IfcLabel>(wide("Luminaire " + std::to_string(j + 1)));
+    fixture->m_Description = make_shared<IfcText>(wide(l.product));
+    fixture->m_ObjectType = make_shared<IfcLabel>(wide(l.product));
+    fixture->m_ObjectPlacement = placement;
+    fixture->m_Tag = make_shared<IfcIdentifier>(wide(std::to_string(j + 1)));
+    fixture->m_PredefinedType = make_shared<IfcLightFixtureTypeEnum>(IfcLightFixtureTypeEnum::ENUM_DIRECTIONSOURCE);
+    // Its body: the outline (at least 5 cm) as a 5 cm box above the luminous opening.
+    if (context) {
+      const double length = std::max(l.size.x, 0.05) * per_metre, width = std::max(l.size.y, 0.05) * per_metre;
+      auto profile = make_shared<IfcRectangleProfileDef>();
+      profile->m_ProfileType = make_shared<IfcProfileTypeEnum>(IfcProfileTypeEnum::ENUM_AREA);
+      profile->m_XDim = make_shared<IfcPositiveLengthMeasure>(length);
+      profile->m_YDim = make_shared<IfcPositiveLengthMeasure>(width);
+      auto solid = make_shared<IfcExtrudedAreaSolid>();
+      solid->m_SweptArea = profile;
+      solid->m_Position = axes({0, 0, 0}, {0, 0, 1}, {1, 0, 0});
+      solid->m_ExtrudedDirection = dir({0, 0, 1});
+      solid->m_Depth = make_shared<IfcPositiveLengthMeasure>(0.05 * per_metre);
+      auto body = make_shared<IfcShapeRepresentation>();
+      body->m_ContextOfItems = context;
+      body->m_RepresentationIdentifier = make_shared<IfcLabel>(L"Body");
+      body->m_RepresentationType = make_shared<IfcLabel>(L"SweptSolid");
+      body->m_Items.push_back(solid);
+      auto shape = make_shared<IfcProductDefinitionShape>();
+      shape->m_Representations.push_back(body);
+      fixture->m_Representation = shape;
+      for (const shared_ptr<BuildingEntity>& e : std::initializer_list<shared_ptr<BuildingEntity>>{profile, solid, body, shape}) added.push_back(e);
+    }
+    // What hilight knows of it.
+    auto pset = make_shared<IfcPropertySet>();
+    pset->m_GlobalId = make_shared<IfcGloballyUniqueId>(global_id(key + "#pset" + std::to_string(j)));
+    pset->m_OwnerHistory = owner;
+    pset->m_Name = make_shared<IfcLabel>(L"hilight_Luminaire");
+    pset->m_HasProperties.push_back(property("Product", make_shared<IfcLabel>(wide(l.product))));
+    pset->m_HasProperties.push_back(property("PhotometryFile", make_shared<IfcLabel>(wide(l.profile))));
+    pset->m_HasProperties.push_back(property("DimmingPercent", make_shared<IfcReal>(100.0 * l.dimming)));
+    pset->m_HasProperties.push_back(property("LuminousFlux", make_shared<IfcLuminousFluxMeasure>(l.flux_lm)));
+    pset->m_HasProperties.push_back(property("Power", make_shared<IfcPowerMeasure>(l.power_w)));
+    auto defines = make_shared<IfcRelDefinesByProperties>();
+    defines->m_GlobalId = make_shared<IfcGloballyUniqueId>(global_id(key + "#defines" + std::to_string(j)));
+    defines->m_OwnerHistory = owner;
+    defines->m_RelatedObjects.push_back(fixture);
+    defines->m_RelatingPropertyDefinition = pset;
+    for (const shared_ptr<BuildingEntity>& e : std::initializer_list<shared_ptr<BuildingEntity>>{fixture, placement, pset, defines}) added.push_back(e);
+    for (const auto& p : pset->m_HasProperties) added.push_back(p);
+    if (where) {
+      auto& entry = contained[where.get()];
+      entry.first = where;
+      entry.second.push_back(fixture);
+    }
+  }
+  size_t k = 0;
+  for (auto& [raw, entry] : contained) {
+    auto rel = make_shared<IfcRelContainedInSpatialStructure>();
+    rel->m_GlobalId = make_shared<IfcGloballyUniqueId>(global_id(key + "#contained" + std::to_string(k++)));
+    rel->m_OwnerHistory = owner;
+    rel->m_Name = make_shared<IfcLabel>(L"hilight luminaires");
+    rel->m_RelatedElements = entry.second;
+    rel->m_RelatingStructure = entry.first;
+    added.push_back(rel);
+  }
+  // New ids after the file's, in order; the entities they point to that are new get theirs too.
+  int next = model->getMaxUsedEntityId() + 1;
+  for (const auto& e : added) {
+    std::map<BuildingEntity*, shared_ptr<BuildingEntity>> dependents;
+    BuildingModel::collectDependentEntities(e, dependents);
+    dependents[e.get()] = e;
+    for (auto& [raw, dep] : dependents)
+      if (dep && dep->m_entity_id < 0) {
+        dep->m_entity_id = next++;
+        model->insertEntity(dep);
+      }
+  }
+  model->initFileHeader(wide(out.filename().string()));
+  WriterSTEP writer;
+  std::stringstream text;
+  writer.writeModelToStream(text, model);
+  write_atomically(out, text.str());
+  return written;
+}
+
+std::vector<IfcFixture> read_ifc_fixtures(const std::filesystem::path& file) {
+  shared_ptr<BuildingModel> model = load(file);
+  const double metres = model->getUnitConverter()->getLengthInMeterFactor();
+  model->resolveInverseAttributes();
+  std::map<BuildingEntity*, std::string> container;
+  for (const auto& [id, e] : model->getMapIfcEntities())
+    if (const auto rel = dynamic_pointer_cast<IfcRelContainedInSpatialStructure>(e); rel && rel->m_RelatingStructure) {
+      const auto& s = rel->m_RelatingStructure;
+      const auto space = dynamic_pointer_cast<IfcSpatialElement>(s);
+      const auto& label = space && space->m_LongName ? space->m_LongName : s->m_Name;
+      for (const auto& p : rel->m_RelatedElements) container[p.get()] = label ? narrow(label->m_value) : "";
+    }
+  std::vector<IfcFixture> out;
+  for (const auto& [id, e] : model->getMapIfcEntities())
+    if (const auto f = dynamic_pointer_cast<IfcLightFixture>(e)) {
+      IfcFixture x;
+      x.name = f->m_Name ? narrow(f->m_Name->m_value) : "";
+      x.container = container.count(f.get()) ? container[f.get()] : "";
+      x.position = from_ifc(glm::dvec3(placement_matrix(f->m_ObjectPlacement)[3]) * (metres > 0 ? metres : 1.0));
+      out.push_back(x);
+    }
+  return out;
+}
+
+#endif
+
+} // namespace hilight::cli

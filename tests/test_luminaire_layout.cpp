@@ -1,0 +1,591 @@
+// Layouts a designer can build (issue 34): luminaires with a size that never
+// overlap, a minimum spacing and a spacing-to-height ratio; regular arrays
+// (aligned with the room, or on a ceiling grid) against free layouts; the
+// count asked for; a margin on the whole grid; the maintenance factor;
+// UGR; W/m² and LENI; the luminaire schedule (CSV) and glTF of a
+// luminaire result; and bad input.
+#include "hilight/illuminance_criteria.hpp"
+#include "hilight/io/criteria_file.hpp"
+#include "hilight/io/gltf.hpp"
+#include "hilight/io/lights_file.hpp"
+#include "hilight/io/photometry_io.hpp"
+#include "hilight/io/scene_io.hpp"
+#include "hilight/light_space.hpp"
+#include "hilight/pipeline/illuminance_design.hpp"
+#include "hilight/ray_scene.hpp"
+#include "hilight/real_model_scenes.hpp"
+#include "hilight/scene_origin.hpp"
+#include "hilight/scene_builders.hpp"
+#include "hilight/units.hpp"
+#include "photometry_files.hpp"
+#ifdef HILIGHT_HAVE_IFCPP
+#include "../frontends/cli/ifc_luminaires.hpp"
+#endif
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+using namespace hilight;
+
+namespace {
+
+const std::string kRoom = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+
+/// A 600 × 600 mm LED panel (LM-63, opening 0.6 × 0.6 m): Lambertian
+/// below, dark above, 3600 lm, 36 W.
+std::string panel_text() {
+  std::string text = test::ies_text(test::angles(0, 90, 5), {0.0}, [](double, double g) {
+    return 3600.0 / kPi * std::cos(g * kPi / 180.0);
+  }, 1, "TILT=NONE", 1, 1, 3600, 36);
+  const std::string opening = "2 0.1 0.2 0.05";
+  text.replace(text.find(opening), opening.size(), "2 0.6 0.6 0.0");
+  text.replace(text.find("[MANUFAC] hilight tests"), 23, "[MANUFAC] hilight tests\n[LUMINAIRE] Panel 600, 3600 lm\n[LUMCAT] HT-600");
+  return text;
+}
+
+std::filesystem::path panel(const std::filesystem::path& dir) {
+  const auto path = dir / "panel.ies";
+  test::write_text(path, panel_text());
+  return path;
+}
+
+/// The same panel with no opening (a point source).
+std::filesystem::path point_panel(const std::filesystem::path& dir) {
+  std::string text = panel_text();
+  text.replace(text.find("2 0.6 0.6 0.0"), 13, "2 0 0 0");
+  const auto path = dir / "point.ies";
+  test::write_text(path, text);
+  return path;
+}
+
+std::filesystem::path criteria_file(const std::filesystem::path& dir, std::vector<std::string> args = {}) {
+  const auto path = dir / "criteria.json";
+  std::vector<std::string> make = {"target", "workplane", kRoom, "-o", path.string(), "--lux", "500", "--u0", "0.6"};
+  make.insert(make.end(), args.begin(), args.end());
+  const auto r = test::run_hilight(make);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  return path;
+}
+
+struct Solved {
+  test::RunResult run;
+  Lighting lights;
+  nlohmann::json report;
+};
+
+Solved solve(const std::filesystem::path& dir, const std::filesystem::path& criteria, const std::filesystem::path& luminaire,
+             std::vector<std::string> args, const std::string& out = "lights.json") {
+  std::vector<std::string> cmd = {"solve", kRoom, "--target", criteria.string(), "--luminaire", luminaire.string(), "-o",
+                                  (dir / out).string(), "--report", (dir / "report.json").string()};
+  cmd.insert(cmd.end(), args.begin(), args.end());
+  std::filesystem::remove(dir / out);
+  std::filesystem::remove(dir / "report.json");
+  Solved s;
+  s.run = test::run_hilight(cmd);
+  if (std::filesystem::exists(dir / "report.json")) s.report = nlohmann::json::parse(test::read_file(dir / "report.json"));
+  if (std::filesystem::exists(dir / out) && out.size() > 5 && out.substr(out.size() - 5) == ".json") s.lights = read_lights_file(dir / out);
+  return s;
+}
+
+/// Every pair of luminaires (axis-aligned squares of `side`) apart.
+void check_no_overlap(const Lighting& lights, float side) {
+  for (size_t a = 0; a < lights.size(); ++a)
+    for (size_t b = a + 1; b < lights.size(); ++b) {
+      const Vec3 d = lights[a].position - lights[b].position;
+      INFO("luminaires " << a << " and " << b << " at " << d.x << ", " << d.z);
+      CHECK(std::max(std::abs(d.x), std::abs(d.z)) >= side - 1e-3f);
+    }
+}
+
+/// Positions that make a full nx × nz array of equal steps: the counts.
+std::pair<size_t, size_t> array_shape(const Lighting& lights) {
+  std::set<long> xs, zs;
+  for (const Light& l : lights) {
+    xs.insert(std::lround(l.position.x * 1000.0));
+    zs.insert(std::lround(l.position.z * 1000.0));
+  }
+  if (xs.size() * zs.size() != lights.size()) return {0, 0};
+  const auto equal_steps = [](const std::set<long>& v) {
+    std::vector<long> a(v.begin(), v.end());
+    for (size_t i = 2; i < a.size(); ++i)
+      if (std::abs((a[i] - a[i - 1]) - (a[1] - a[0])) > 2) return false;
+    return true;
+  };
+  if (!equal_steps(xs) || !equal_steps(zs)) return {0, 0};
+  return {xs.size(), zs.size()};
+}
+
+std::vector<double> measure(const std::shared_ptr<const Scene>& scene, const SurfacePoints& points, const Lighting& lights, double mf) {
+  auto renderer = test::make_renderer("embree", scene);
+  std::vector<double> lux = lux_from_radiance(renderer->illuminate(points, lights));
+  for (double& v : lux) v *= mf;
+  return lux;
+}
+
+} // namespace
+
+TEST_CASE("the position index and UGR follow CIE 117's formula", "[lux][ugr]") {
+  CHECK(guth_position_index(0, 0) == Approx(1.0));
+  CHECK(guth_position_index(0, 45) > guth_position_index(0, 20));
+  CHECK(guth_position_index(0, 30) > guth_position_index(60, 30));  // above the line of sight glares less than to the side (the brow)
+  // Luckiesh–Guth's table: a source 45° above the line of sight straight ahead has p ≈ 7.
+  CHECK(guth_position_index(0, 45) == Approx(7.0).epsilon(0.05));
+  // Dimming every luminaire to half: L² halves twice, Lb once: UGR falls by 8·log10(2).
+  CHECK(unified_glare_rating(100.0, 50.0) - unified_glare_rating(25.0, 25.0) == Approx(8.0 * std::log10(2.0)));
+  CHECK(std::isnan(unified_glare_rating(0.0, 50.0)));
+}
+
+TEST_CASE("luminaires keep their size and spacing: no two overlap, --min-spacing and the spacing-to-height ratio hold", "[lux][layout][cli]") {
+  const auto dir = test::output_dir("layout_spacing");
+  const auto criteria = criteria_file(dir);
+  const auto ies = panel(dir);
+  for (const std::string layout : {"free", "auto"}) {
+    const Solved s = solve(dir, criteria, ies, {"--layout", layout});
+    INFO(layout << ": " << s.run.err);
+    REQUIRE(s.run.exit_code == 0);
+    REQUIRE(s.lights.size() >= 2);
+    check_no_overlap(s.lights, 0.6f);
+    CHECK(s.report["luminaire_size_m"][0] == Approx(0.6));
+    CHECK(s.report["met"] == true);
+  }
+  const Solved spaced = solve(dir, criteria, ies, {"--layout", "free", "--min-spacing", "1.8"});
+  INFO(spaced.run.err);
+  REQUIRE(spaced.run.exit_code == 0);
+  for (size_t a = 0; a < spaced.lights.size(); ++a)
+    for (size_t b = a + 1; b < spaced.lights.size(); ++b) {
+      const Vec3 d = spaced.lights[a].position - spaced.lights[b].position;
+      CHECK(std::hypot(d.x, d.z) >= 1.8f - 1e-3f);
+    }
+  // The spacing-to-height ratio: the nearest neighbour within R × the height over the work plane.
+  const Solved ratio = solve(dir, criteria, ies, {"--layout", "free", "--max-spacing-ratio", "1.0", "--mount", "ceiling", "--offset", "0.1"});
+  INFO(ratio.run.err);
+  REQUIRE(ratio.run.exit_code == 0);
+  REQUIRE(ratio.lights.size() >= 2);
+  for (size_t a = 0; a < ratio.lights.size(); ++a) {
+    float nearest = 1e9f;
+    for (size_t b = 0; b < ratio.lights.size(); ++b)
+      if (a != b) nearest = std::min(nearest, std::hypot(ratio.lights[a].position.x - ratio.lights[b].position.x,
+                                                         ratio.lights[a].position.z - ratio.lights[b].position.z));
+    CHECK(nearest <= 1.0f * (ratio.lights[a].position.y - 0.75f) + 1e-3f);
+  }
+  // --luminaire-size W,L: the outline given (and the panel integrated over it).
+  const Solved sized = solve(dir, criteria, point_panel(dir), {"--luminaire-size", "1.2,0.3", "--layout", "free"});
+  INFO(sized.run.err);
+  REQUIRE(sized.run.exit_code == 0);
+  CHECK(sized.report["luminaire_size_m"][0] == Approx(0.3));  // along C0: L
+  CHECK(sized.report["luminaire_size_m"][1] == Approx(1.2));
+}
+
+TEST_CASE("--lights N with criteria is honoured: exactly N, or exit 3 with the fewest that can", "[lux][layout][cli]") {
+  const auto dir = test::output_dir("layout_count");
+  const auto criteria = criteria_file(dir);
+  const auto ies = panel(dir);
+  const Solved automatic = solve(dir, criteria, ies, {});
+  REQUIRE(automatic.run.exit_code == 0);
+  const size_t m = automatic.lights.size();
+  for (size_t n : {m + 2, m + 5}) {
+    const Solved s = solve(dir, criteria, ies, {"--lights", std::to_string(n)});
+    INFO(n << ": " << s.run.err);
+    REQUIRE(s.run.exit_code == 0);
+    CHECK(s.lights.size() == n);
+    CHECK(s.report["lights_asked"] == n);
+    CHECK(s.report["met"] == true);
+    check_no_overlap(s.lights, 0.6f);
+    for (const auto& d : s.report["dimming"]) CHECK(d.get<double>() >= 0.1 - 1e-9);  // every one lit
+  }
+  const Solved few = solve(dir, criteria, ies, {"--lights", "1"});
+  INFO(few.run.err);
+  CHECK(few.run.exit_code == 3);
+  CHECK(few.lights.size() == 1);
+  CHECK(few.run.err.find("--lights 1") != std::string::npos);
+  CHECK(few.report["lights_asked"] == 1);
+  // More than fit the room with the spacing asked for: refused, nothing written.
+  const Solved many = solve(dir, criteria, ies, {"--lights", "60", "--min-spacing", "1.5", "--layout", "free"});
+  CHECK(many.run.exit_code == 2);
+  CHECK(test::line_count(many.run.err) == 1);
+  CHECK(many.run.err.find("--lights 60") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "lights.json"));
+}
+
+TEST_CASE("--margin 0.05 keeps Ē and U0 5% clear of their limits, U0 also between the grid's points", "[lux][layout][cli]") {
+  const auto dir = test::output_dir("layout_margin");
+  const auto criteria = criteria_file(dir);
+  const Solved s = solve(dir, criteria, panel(dir), {"--margin", "0.05", "--maintenance-factor", "0.8"});
+  INFO(s.run.err);
+  REQUIRE(s.run.exit_code == 0);
+  CHECK(s.report["margin"] == Approx(0.05));
+  // Measured here: Ē at the points, Emin at the points and halfway between them and on the cells' corners.
+  auto scene = std::make_shared<const Scene>(load_scene(kRoom, {}));
+  const IlluminanceCriteria c = read_criteria(criteria);
+  const CriterionGrid& g = c.grids.front();
+  const RayScene rays(*scene);
+  // The cells: the smallest steps between the points in x and in z.
+  float cx = 1e9f, cz = 1e9f;
+  for (const Vec3& p : g.points)
+    for (const Vec3& q : g.points) {
+      if (std::abs(p.z - q.z) < 1e-4f && std::abs(p.x - q.x) > 1e-4f) cx = std::min(cx, std::abs(p.x - q.x));
+      if (std::abs(p.x - q.x) < 1e-4f && std::abs(p.z - q.z) > 1e-4f) cz = std::min(cz, std::abs(p.z - q.z));
+    }
+  SurfacePoints pts;
+  pts.positions = g.points;
+  const Vec3 lift(0.f, 1e-3f, 0.f);
+  for (const Vec3& p : g.points)
+    for (int a = -1; a <= 1; ++a)
+      for (int b = -1; b <= 1; ++b) {
+        const Vec3 q = p + Vec3(0.5f * float(a) * cx, 0.f, 0.5f * float(b) * cz);
+        const Vec3 d = q - p;
+        // Between points, in the room (not through a table's edge, not inside one).
+        if ((a || b) && !rays.occluded(p + lift, glm::normalize(d), glm::length(d)) && !rays.inside_solid(q + lift))
+          pts.positions.push_back(q);
+      }
+  pts.normals.assign(pts.positions.size(), Vec3(0.f, 1.f, 0.f));
+  pts.albedo.assign(pts.positions.size(), Rgb(1.f));
+  const std::vector<double> lux = measure(scene, pts, s.lights, 0.8);
+  double mean = 0, low = 1e30;
+  for (size_t i = 0; i < g.points.size(); ++i) mean += lux[i];
+  mean /= double(g.points.size());
+  for (double v : lux) low = std::min(low, v);
+  INFO("Ē " << mean << ", Emin over the whole grid " << low);
+  CHECK(mean >= 1.05 * 500 * (1 - 2e-3));
+  CHECK(low / mean >= 1.05 * 0.6 * (1 - 1e-2));
+  CHECK(s.report["grids"][0]["u0_whole_grid"].get<double>() >= 1.05 * 0.6 * (1 - 1e-3));
+}
+
+TEST_CASE("the maintenance factor: maintained Ē = MF × new, stated; MF 0.8 needs 1/0.8 of the flux of MF 1", "[lux][layout][cli]") {
+  const auto dir = test::output_dir("layout_mf");
+  const auto criteria = criteria_file(dir);
+  const auto ies = panel(dir);
+  const Solved one = solve(dir, criteria, ies, {"--maintenance-factor", "1", "--layout", "free"});
+  REQUIRE(one.run.exit_code == 0);
+  const Solved eight = solve(dir, criteria, ies, {"--layout", "free"});
+  INFO(eight.run.err);
+  REQUIRE(eight.run.exit_code == 0);
+  CHECK(eight.report["maintenance_factor"] == Approx(0.8));
+  CHECK(eight.run.err.find("MF 0.80") != std::string::npos);
+  CHECK(eight.run.err.find("maintained Ē") != std::string::npos);
+  // The least flux any layout needs scales as 1/MF exactly (the program is linear).
+  CHECK(eight.report["least_luminous_flux_lm"].get<double>() ==
+        Approx(one.report["least_luminous_flux_lm"].get<double>() / 0.8).epsilon(1e-4));
+  auto scene = std::make_shared<const Scene>(load_scene(kRoom, {}));
+  const IlluminanceCriteria c = read_criteria(criteria);
+  const std::vector<double> lux = measure(scene, c.points(), eight.lights, 0.8);
+  double mean = 0;
+  for (double v : lux) mean += v;
+  CHECK(mean / double(lux.size()) >= 500 * (1 - 1e-3));
+  CHECK(mean / double(lux.size()) == Approx(eight.report["grids"][0]["mean_lux"].get<double>()).epsilon(1e-4));
+}
+
+TEST_CASE("arrays: --layout array gives rows × columns aligned with the room or on a ceiling grid; auto reports both", "[lux][layout][cli]") {
+  const auto dir = test::output_dir("layout_array");
+  const auto criteria = criteria_file(dir);
+  const auto ies = panel(dir);
+  const Solved array = solve(dir, criteria, ies, {"--layout", "array"});
+  INFO(array.run.err);
+  REQUIRE(array.run.exit_code == 0);
+  const auto [nx, nz] = array_shape(array.lights);
+  CHECK(nx * nz == array.lights.size());
+  CHECK(array.report["layout"]["chosen"] == "array");
+  for (const auto& d : array.report["dimming"]) CHECK(d.get<double>() == Approx(array.report["dimming"][0].get<double>()));  // all alike
+  // On a 0.6 m ceiling grid from the origin: every centre in the middle of a tile.
+  const Solved grid = solve(dir, criteria, ies, {"--layout", "array", "--ceiling-grid", "0.6", "--ceiling-grid-origin", "0,0"});
+  INFO(grid.run.err);
+  REQUIRE(grid.run.exit_code == 0);
+  CHECK(array_shape(grid.lights).first > 0);
+  for (const Light& l : grid.lights)
+    for (float v : {l.position.x, l.position.z}) {
+      const float t = v / 0.6f - 0.5f;
+      CHECK(std::abs(t - std::round(t)) < 1e-3f);
+    }
+  // Auto: both tried, each with its count and watts, the choice said.
+  const Solved both = solve(dir, criteria, ies, {});
+  INFO(both.run.err);
+  REQUIRE(both.run.exit_code == 0);
+  for (const char* kind : {"array", "free"}) {
+    INFO(kind);
+    CHECK(both.report["layout"][kind]["found"] == true);
+    CHECK(both.report["layout"][kind]["luminaires"].get<size_t>() >= 1);
+    CHECK(both.report["layout"][kind]["power_w"].get<double>() > 0);
+  }
+  CHECK(both.run.err.find("layouts: array") != std::string::npos);
+  // The array is kept when it costs nothing: no more luminaires, flux within the tolerance.
+  const auto& a = both.report["layout"]["array"];
+  const auto& f = both.report["layout"]["free"];
+  if (both.report["layout"]["chosen"] == "array") {
+    CHECK(a["luminaires"].get<size_t>() <= f["luminaires"].get<size_t>());
+  } else {
+    CHECK((a["met"] == false || a["luminaires"].get<size_t>() > f["luminaires"].get<size_t>() ||
+           a["luminous_flux_lm"].get<double>() > f["luminous_flux_lm"].get<double>()));
+  }
+}
+
+TEST_CASE("a target made from a 3 × 4 array of panels comes back as that array", "[lux][layout]") {
+  // A 9 m × 12 m room, panels 0.1 m under its 3 m ceiling at the centres of 3 × 4 cells.
+  auto scene = test::finish(builders::box_room(Vec3(9.f, 3.f, 12.f)), 0.5f);
+  const RayScene rays(*scene);
+  const Regions regions(rays);
+  Light luminaire;
+  luminaire.type = LightType::Luminaire;
+  luminaire.profile = std::make_shared<const Photometry>(parse_ies(panel_text(), "panel.ies"));
+  luminaire.profile_path = "panel.ies";
+  Lighting made;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 4; ++k) {
+      Light l = luminaire;
+      l.position = Vec3(1.5f + 3.f * float(i), 2.9f, 1.5f + 3.f * float(k));
+      l.intensity = Rgb(float(0.8 * luminaire.profile->peak() / kLumensPerWatt));  // dimmed to 80%
+      made.push_back(l);
+    }
+  IlluminanceCriteria c;
+  c.grids.push_back(make_work_plane(rays, regions, {}, 0.75f, 1.0, 0.0));
+  auto renderer = test::make_renderer("embree", scene);
+  const std::vector<double> lux = lux_from_radiance(renderer->illuminate(c.points(), made));
+  const GridFigures f = grid_figures(c.grids.front(), lux);
+  // What that array gives, a hair below, is the target.
+  c.grids.front().lux = 0.99 * f.mean;
+  c.grids.front().u0 = 0.99 * f.u0;
+  PlacementRules rules;
+  rules.add("ceiling:0.1");
+  const LightSpace space(rays, rules);
+  for (double tile : {0.0, 0.6}) {
+    INFO("ceiling grid " << tile);
+    DesignSettings settings;
+    settings.maintenance_factor = 1;
+    settings.layout = LayoutChoice::Array;
+    settings.ceiling_grid = tile;
+    if (tile > 0) settings.grid_origin = glm::dvec2(0.0, 0.0);
+    DesignReport report;
+    const Lighting lights = design_for_illuminance(*renderer, space, luminaire, c, settings, report);
+    INFO(report.array.shape << ", U0 wanted " << c.grids.front().u0);
+    CHECK(report.met);
+    REQUIRE(lights.size() == 12);
+    for (const Light& m : made) {
+      float nearest = 1e9f;
+      for (const Light& l : lights) nearest = std::min(nearest, glm::length(l.position - m.position));
+      CHECK(nearest < 0.01f);
+    }
+    for (double d : report.dimming) CHECK(d == Approx(0.8).epsilon(0.02));
+  }
+}
+
+TEST_CASE("UGR at the standard observers: reported, and a limit with --ugr-max", "[lux][ugr][cli]") {
+  const auto dir = test::output_dir("layout_ugr");
+  const auto criteria = criteria_file(dir);
+  const auto ies = panel(dir);
+  const Solved s = solve(dir, criteria, ies, {});
+  INFO(s.run.err);
+  REQUIRE(s.run.exit_code == 0);
+  REQUIRE(s.report["ugr"]["observers"].size() == 4);
+  const double ugr = s.report["ugr"]["max"].get<double>();
+  CHECK(ugr > 5);
+  CHECK(ugr < 35);
+  CHECK(s.report["ugr"]["luminous_area_m2"] == Approx(0.36));
+  CHECK(s.run.err.find("UGR") != std::string::npos);
+  // A limit above it holds; one no layout can keep is said, exit 3.
+  const Solved limited = solve(dir, criteria, ies, {"--ugr-max", std::to_string(std::ceil(ugr) + 1)});
+  INFO(limited.run.err);
+  CHECK(limited.run.exit_code == 0);
+  CHECK(limited.report["ugr"]["max"].get<double>() <= std::ceil(ugr) + 1);
+  const Solved strict = solve(dir, criteria, ies, {"--ugr-max", "1"});
+  CHECK(strict.run.exit_code == 3);
+  CHECK(strict.run.err.find("UGR") != std::string::npos);
+}
+
+TEST_CASE("energy: W/m² and LENI (EN 15193-1) from the power, the floor and the hours", "[lux][cli]") {
+  const auto dir = test::output_dir("layout_energy");
+  const auto criteria = criteria_file(dir);
+  const Solved s = solve(dir, criteria, panel(dir), {"--operating-hours", "2000,500", "--leni-factors", "0.9,1,0.8", "--parasitic-power", "5"});
+  INFO(s.run.err);
+  REQUIRE(s.run.exit_code == 0);
+  const auto& e = s.report["energy"];
+  CHECK(e["floor_area_m2"].get<double>() == Approx(30.0).epsilon(0.05));  // the bundled room: 6 m × 5 m
+  const double p = s.report["electrical_power_w"].get<double>(), a = e["floor_area_m2"].get<double>();
+  CHECK(e["power_density_w_m2"].get<double>() == Approx(p / a));
+  CHECK(e["leni_kwh_m2_a"].get<double>() == Approx((p * 0.9 * (2000 * 1 * 0.8 + 500 * 1) + 5 * (8760 - 2500)) / 1000 / a));
+  CHECK(e["installed_power_w"].get<double>() == Approx(36.0 * double(s.lights.size())));
+  CHECK(s.run.err.find("W/m²") != std::string::npos);
+  CHECK(s.run.err.find("LENI") != std::string::npos);
+}
+
+TEST_CASE("a luminaire result leaves hilight: the schedule (CSV), the report per luminaire, glTF", "[lux][cli][gltf]") {
+  const auto dir = test::output_dir("layout_outputs");
+  const auto criteria = criteria_file(dir);
+  const auto ies = panel(dir);
+  const Solved s = solve(dir, criteria, ies, {"--schedule", (dir / "schedule.csv").string()});
+  INFO(s.run.err);
+  REQUIRE(s.run.exit_code == 0);
+  // The report: per luminaire product, position, aim, dimming %, lm, W.
+  REQUIRE(s.report["luminaires"].size() == s.lights.size());
+  for (size_t j = 0; j < s.lights.size(); ++j) {
+    const auto& l = s.report["luminaires"][j];
+    CHECK(l["product"] == "hilight tests Panel 600, 3600 lm HT-600");
+    for (int c = 0; c < 3; ++c) CHECK(l["position"][c].get<double>() == Approx(s.lights[j].position[c]).margin(1e-5));
+    CHECK(l["aim"][1].get<double>() == Approx(-1.0));
+    CHECK(l["dimming_percent"].get<double>() == Approx(100.0 * luminaire_dimming(s.lights[j])).epsilon(1e-5));
+    CHECK(l["luminous_flux_lm"].get<double>() == Approx(luminous_flux(s.lights[j])).epsilon(1e-4));
+    CHECK(l["power_w"].get<double>() == Approx(36.0 * luminaire_dimming(s.lights[j])).epsilon(1e-5));
+  }
+  // The CSV: a header and one row per luminaire.
+  std::ifstream csv(dir / "schedule.csv");
+  std::string line;
+  std::vector<std::string> rows;
+  while (std::getline(csv, line)) rows.push_back(line);
+  REQUIRE(rows.size() == s.lights.size() + 1);
+  CHECK(rows[0].rfind("index,product,file,x_m,y_m,z_m,aim_x,aim_y,aim_z,spin_deg,dimming_percent,luminous_flux_lm,power_w", 0) == 0);
+  for (size_t j = 0; j < s.lights.size(); ++j) {
+    // RFC 4180: a field with a comma is quoted.
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (char ch : rows[j + 1]) {
+      if (ch == '"') quoted = !quoted;
+      else if (ch == ',' && !quoted) cells.emplace_back();
+      else if (ch != '\r') cells.back() += ch;
+    }
+    CHECK(cells[1] == "hilight tests Panel 600, 3600 lm HT-600");
+    REQUIRE(cells.size() == 13);
+    CHECK(std::stod(cells[3]) == Approx(s.lights[j].position.x).margin(1e-5));
+    CHECK(std::stod(cells[5]) == Approx(s.lights[j].position.z).margin(1e-5));
+    CHECK(std::stod(cells[10]) == Approx(100.0 * luminaire_dimming(s.lights[j])).margin(0.01));
+  }
+  // glTF: each luminaire a spot, the IES file and dimming in its extras; hilight reads the luminaires back.
+  const Solved g = solve(dir, criteria, ies, {}, "lights.glb");
+  INFO(g.run.err);
+  REQUIRE(g.run.exit_code == 0);
+  const Lighting back = read_gltf_lights(dir / "lights.glb");
+  REQUIRE(back.size() == s.lights.size());
+  for (size_t j = 0; j < back.size(); ++j) {
+    CHECK(back[j].type == LightType::Luminaire);
+    CHECK(back[j].profile_path == std::filesystem::absolute(ies).lexically_normal().string());
+    CHECK(glm::length(back[j].position - s.lights[j].position) < 1e-4f);
+    CHECK(luminaire_dimming(back[j]) == Approx(luminaire_dimming(s.lights[j])).epsilon(1e-5));
+  }
+  const std::string text = test::read_file(dir / "lights.glb");
+  CHECK(text.find("\"profile\":\"" + std::filesystem::absolute(ies).lexically_normal().string()) != std::string::npos);
+  CHECK(text.find("\"type\":\"spot\"") != std::string::npos);
+}
+
+TEST_CASE("a luminaire result's glTF opens in Blender: spots with the IES file named in their extras", "[lux][gltf][blender]") {
+  if (std::system("blender --version > /dev/null 2>&1") != 0) {
+    std::cout << "SKIPPED: blender is not installed (setup.sh installs it)" << std::endl;
+    return;
+  }
+  const auto dir = test::output_dir("layout_blender");
+  const auto criteria = criteria_file(dir);
+  const auto ies = panel(dir);
+  const Solved g = solve(dir, criteria, ies, {}, "lights.glb");
+  INFO(g.run.err);
+  REQUIRE(g.run.exit_code == 0);
+  const auto log = dir / "blender.log";
+  const std::string command = "blender -b --factory-startup --python '" + std::string(HILIGHT_SOURCE_DIR) +
+                              "/tools/blender_gltf_roundtrip.py' -- '" + (dir / "lights.glb").string() + "' '" +
+                              (dir / "blender.glb").string() + "' '" + (dir / "blender.json").string() + "' > '" + log.string() + "' 2>&1";
+  const int status = std::system(command.c_str());
+  INFO(test::read_file(log));
+  REQUIRE(status == 0);
+  const auto report = nlohmann::json::parse(test::read_file(dir / "blender.json"));
+  REQUIRE(report["lights"].size() == size_t(g.report["lights"].get<size_t>()));
+  for (const auto& b : report["lights"]) {
+    CHECK(b["type"] == "SPOT");
+    CHECK(b["direction"][1].get<double>() == Approx(-1.0).margin(1e-5));
+    REQUIRE(b["extras"].contains("hilight"));
+    CHECK(b["extras"]["hilight"]["profile"] == std::filesystem::absolute(ies).lexically_normal().string());
+    CHECK(b["extras"]["hilight"]["type"] == "luminaire");
+  }
+}
+
+TEST_CASE("bad layout input: one line naming what is wrong, exit 2, nothing written", "[lux][layout][cli]") {
+  const auto dir = test::output_dir("layout_bad");
+  const auto criteria = criteria_file(dir);
+  const auto ies = panel(dir);
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--maintenance-factor", "0"}, "--maintenance-factor"},
+      {{"--maintenance-factor", "1.2"}, "--maintenance-factor"},
+      {{"--luminaire-size", "7,7"}, "does not fit the room"},
+      {{"--luminaire-size", "0.6"}, "--luminaire-size"},
+      {{"--min-spacing", "40"}, "--min-spacing"},
+      {{"--ceiling-grid", "8"}, "--ceiling-grid"},
+      {{"--ceiling-grid-origin", "1;2"}, "--ceiling-grid-origin"},
+      {{"--margin", "1.5"}, "--margin"},
+      {{"--operating-hours", "8000,2000"}, "--operating-hours"},
+      {{"--leni-factors", "1,2,1"}, "--leni-factors"},
+      {{"--layout", "grid"}, "--layout"},
+  };
+  for (const auto& [args, named] : cases) {
+    const Solved s = solve(dir, criteria, ies, args);
+    INFO(args.front() << " " << args.back() << ": " << s.run.err);
+    CHECK(s.run.exit_code == 2);
+    CHECK(test::line_count(s.run.err) == 1);
+    CHECK(s.run.err.find(named) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / "lights.json"));
+    CHECK_FALSE(std::filesystem::exists(dir / "report.json"));
+  }
+  // A UGR limit with a luminaire that gives no luminous area.
+  const Solved no_area = solve(dir, criteria, point_panel(dir), {"--ugr-max", "19"});
+  CHECK(no_area.run.exit_code == 2);
+  CHECK(test::line_count(no_area.run.err) == 1);
+  CHECK(no_area.run.err.find("--ugr-max") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "lights.json"));
+  // Criteria options with a painted target.
+  const auto painted = test::run_hilight({"solve", kRoom, "--target", (dir / "t.ply").string(), "-o", (dir / "l.json").string(), "--margin", "0.05"});
+  CHECK(painted.exit_code == 2);
+  CHECK(painted.err.find("--margin") != std::string::npos);
+}
+
+TEST_CASE("a luminaire result in a copy of the input IFC: IfcLightFixture in its IfcSpace, read again by IfcPlusPlus and assimp",
+          "[lux][cli][ifc][real]") {
+#ifndef HILIGHT_HAVE_IFCPP
+  std::cout << "SKIPPED: this build has no IfcPlusPlus (apt install libifcplusplus-dev libboost-dev)" << std::endl;
+  return;
+#else
+  const std::string house = (builders::testmodels_dir() / "IFC" / "AC14-FZK-Haus.ifc").string();
+  if (!std::filesystem::exists(house)) {
+    std::cout << "SKIPPED: assimp-testmodels is not installed" << std::endl;
+    return;
+  }
+  const auto dir = test::output_dir("layout_ifc");
+  const auto ies = panel(dir);
+  REQUIRE(test::run_hilight({"target", "workplane", house, "--region", "3", "--lux", "300", "--u0", "0.4", "-o", (dir / "c.json").string()})
+              .exit_code == 0);
+  const auto r = test::run_hilight({"solve", house, "--target", (dir / "c.json").string(), "--luminaire", ies.string(), "--mount",
+                                    "ceiling", "--offset", "0.1", "-o", (dir / "lit.ifc").string(), "--report", (dir / "r.json").string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("IfcLightFixture") != std::string::npos);
+  const auto report = nlohmann::json::parse(test::read_file(dir / "r.json"));
+  // IfcPlusPlus reads the copy: one fixture per luminaire, where the report puts it, contained in a named IfcSpace.
+  const std::vector<cli::IfcFixture> fixtures = cli::read_ifc_fixtures(dir / "lit.ifc");
+  REQUIRE(fixtures.size() == report["luminaires"].size());
+  const std::set<std::string> rooms = {"Flur", "Wohnen", "Schlafzimmer", "Bad", "Buero", "K\xc3\xbc" "che", "Galerie"};
+  for (size_t j = 0; j < fixtures.size(); ++j) {
+    INFO(fixtures[j].name << " in " << fixtures[j].container);
+    const auto& p = report["luminaires"][j]["position"];
+    CHECK(glm::length(fixtures[j].position - glm::dvec3(p[0].get<double>(), p[1].get<double>(), p[2].get<double>())) < 1e-3);
+    CHECK(rooms.count(fixtures[j].container) == 1);
+  }
+  // assimp reads it too, the original's geometry and a body for each fixture just above where its luminaire shines from.
+  const Scene original = load_scene(house, {}), lit = load_scene(dir / "lit.ifc", {});
+  CHECK(lit.triangles.size() > original.triangles.size());
+  const RayScene rays(lit);
+  const Lighting lights = [&] {
+    Lighting out;
+    for (const auto& l : report["luminaires"]) {
+      Light x;
+      x.position = to_local(glm::dvec3(l["position"][0].get<double>(), l["position"][1].get<double>(), l["position"][2].get<double>()), lit.frame);
+      out.push_back(x);
+    }
+    return out;
+  }();
+  for (const Light& l : lights) {
+    const Hit up = rays.intersect(l.position - Vec3(0.f, 0.01f, 0.f), Vec3(0.f, 1.f, 0.f), 1.f);
+    REQUIRE(up.valid());
+    CHECK(up.t == Approx(0.01f).margin(2e-3));
+  }
+#endif
+}
