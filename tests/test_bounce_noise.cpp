@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
 
 using namespace hilight;
 
@@ -75,12 +76,12 @@ TEST_CASE("bounce noise: a lamp 15 cm below the ceiling gives no fireflies on fl
     std::printf("bounce noise (%s): median neighbour deviation %.1f%%, 99th percentile %.1f%% over %zu flat vertices\n", mode,
                 100 * s.median, 100 * s.p99, s.vertices);
     // Before the hot patches: 14% and 395%. Issue 11's goal is 3% and 25%;
-    // measured 4.7% and 44% (exact), 4.8% and 50% (vertex). The converged
-    // field itself (4096 rays) has a 99th percentile of 31%: furniture's
-    // contact shadows on a 0.2 m mesh.
+    // measured 4.2% and 43% (exact: every cell's patches), 4.7% and 48%
+    // (vertex: hot patches only). The converged field itself (4096 rays)
+    // has a 99th percentile of 31%: furniture's contact shadows on a 0.2 m mesh.
     CHECK(s.vertices > 1000);
-    CHECK(s.median <= 0.06);
-    CHECK(s.p99 <= 0.6);
+    CHECK(s.median <= (std::string(mode) == "exact" ? 0.05 : 0.06));
+    CHECK(s.p99 <= (std::string(mode) == "exact" ? 0.5 : 0.6));
   }
 }
 

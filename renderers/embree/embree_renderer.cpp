@@ -138,7 +138,7 @@ std::vector<HotSpots> EmbreeRenderer::hot_spots_of(std::span<const PreparedLight
   if (!m_settings.hot_spots || m_settings.bounces == 0) return out;
   uint64_t cast = 0;
   out.reserve(lights.size());
-  for (const auto& light : lights) out.emplace_back(*m_embree, light, cast);
+  for (const auto& light : lights) out.emplace_back(*m_embree, light, /*every_cell=*/!m_settings.vertex_interpolated_bounce, cast);
   m_rays += cast;
   return out;
 }

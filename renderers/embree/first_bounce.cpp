@@ -102,7 +102,7 @@ Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light,
     hit.u = g.u();
     hit.v = g.v();
     const Vec3 y = m_es.hit_position(hit);
-    if (hot && hot->handles(x, y)) continue;
+    if (hot && hot->handles(x, y, m_es.face_normals()[hit.triangle])) continue;
     float e = unit_direct_irradiance_on_side(m_es, ShadingPoint{y, false}, m_es.hit_normal(hit),
                                              g.side() * m_es.face_normals()[hit.triangle], light, rays);
     if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
@@ -124,7 +124,8 @@ Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex
     if (!hit.valid()) continue;
     const auto& tri = scene.triangles[hit.triangle()];
     const float u = hit.u(), v = hit.v();
-    if (hot && hot->handles(x, (1.f - u - v) * scene.positions[tri[0]] + u * scene.positions[tri[1]] + v * scene.positions[tri[2]]))
+    if (hot && hot->handles(x, (1.f - u - v) * scene.positions[tri[0]] + u * scene.positions[tri[1]] + v * scene.positions[tri[2]],
+                            m_es.face_normals()[hit.triangle()]))
       continue;
     // Each vertex holds both sides' values; take the side facing the gatherer.
     auto on_side = [&](int corner) { return vertex_direct[2 * tri[corner] + ((hit.vertex_sides() >> corner) & 1 ? 0 : 1)]; };

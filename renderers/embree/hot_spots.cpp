@@ -30,7 +30,8 @@ struct SubHit {
 
 } // namespace
 
-int HotSpots::cell_of(const Vec3& d) const {
+int HotSpots::cell_of(const Vec3& world) const {
+  const Vec3 d = m_frame.to_own(world);
   const Vec3 a = glm::abs(d);
   const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
   const int face = 2 * axis + (d[axis] < 0.f ? 1 : 0);
@@ -39,7 +40,8 @@ int HotSpots::cell_of(const Vec3& d) const {
   return (face * G + i) * G + j;
 }
 
-HotSpots::HotSpots(const RayScene& rays, const PreparedLight& light, uint64_t& cast) : m_light(light.position) {
+HotSpots::HotSpots(const RayScene& rays, const PreparedLight& light, bool every_cell, uint64_t& cast)
+    : m_light(light.position), m_frame(rays.own_frame()) {
   const Scene& scene = rays.scene();
   const int cells = 6 * G * G;
   std::vector<SubHit> sub(size_t(cells) * S * S);
@@ -50,7 +52,7 @@ HotSpots::HotSpots(const RayScene& rays, const PreparedLight& light, uint64_t& c
     for (int a = 0; a < S; ++a)
       for (int b = 0; b < S; ++b) {
         const float u = -1.f + (float(i * S + a) + 0.5f) * step, v = -1.f + (float(j * S + b) + 0.5f) * step;
-        const Vec3 dir = cube_direction(face, u, v);
+        const Vec3 dir = m_frame.to_world(cube_direction(face, u, v));
         SubHit& s = sub[(size_t(c) * S + a) * S + b];
         ++cast;
         const Hit hit = rays.intersect(light.position, dir);
@@ -74,53 +76,74 @@ HotSpots::HotSpots(const RayScene& rays, const PreparedLight& light, uint64_t& c
   for (const SubHit& h : sub)
     if (h.hit) distances.push_back(h.distance);
   std::nth_element(distances.begin(), distances.begin() + long(distances.size() / 2), distances.end());
-  const float typical = distances[distances.size() / 2];
-  const float reach = std::min(5.f * nearest, kHotFraction * typical);
-  m_reach2 = reach * reach;
-  m_cell.assign(size_t(cells), -1);
+  const float hot_reach = std::min(5.f * nearest, kHotFraction * distances[distances.size() / 2]);
+  const float reach = every_cell ? std::numeric_limits<float>::max() : hot_reach;
+  m_reach2 = reach < std::numeric_limits<float>::max() ? reach * reach : std::numeric_limits<float>::max();
+  m_hot2 = hot_reach * hot_reach;
+  m_cell.assign(size_t(cells), {});
   const float lift = 1e-3f * scene.diagonal();
   for (int c = 0; c < cells; ++c) {
     const SubHit* s = &sub[size_t(c) * S * S];
-    // The cell's surfaces within reach form its patch; gather hits there are
-    // the patch's (handles() checks the reach too), the rest stay the gather's.
-    Rgb flux(0.f);
-    Vec3 centre(0.f), normal(0.f);
-    float weight = 0.f;
-    auto in_reach = [&](const SubHit& h) { return h.hit && h.distance < reach; };
-    for (int k = 0; k < S * S; ++k) {
-      if (!in_reach(s[k])) continue;
-      const float w = s[k].flux.r + s[k].flux.g + s[k].flux.b;
-      flux += s[k].flux;
-      centre += w * s[k].position;
-      normal += w * s[k].normal;
-      weight += w;
+    // The cell's lit surfaces within reach, sorted into planes (Plane::holds,
+    // first plane first); a plane met by kMinRays or more becomes a patch.
+    // Gather hits are sorted by the same rule (handles()), so a patch takes
+    // over exactly the hits on the surfaces whose flux it carries.
+    std::array<int, S * S> plane_of;
+    plane_of.fill(-1);
+    int planes = 0;
+    for (int seed = 0; seed < S * S && planes < kPlanesPerCell; ++seed) {
+      if (plane_of[seed] != -1 || !s[seed].hit || !(s[seed].distance < reach)) continue;
+      Plane& plane = m_cell[size_t(c)][size_t(planes)];
+      plane.point = s[seed].position;
+      plane.normal = s[seed].normal;
+      plane.thickness = kPlaneTolerance * s[seed].distance;
+      plane.hot = s[seed].distance < hot_reach;
+      int members = 0;
+      for (int k = seed; k < S * S; ++k)
+        if (plane_of[k] == -1 && s[k].hit && s[k].distance < reach &&
+            plane.holds(s[k].position, s[k].normal, s[k].distance < hot_reach))
+          plane_of[k] = planes, ++members;
+      const int index = planes++;
+      Rgb flux(0.f);
+      Vec3 centre(0.f), normal(0.f);
+      float weight = 0.f;
+      for (int k = 0; k < S * S; ++k) {
+        if (plane_of[k] != index) continue;
+        const float w = s[k].flux.r + s[k].flux.g + s[k].flux.b;
+        flux += s[k].flux;
+        centre += w * s[k].position;
+        normal += w * s[k].normal;
+        weight += w;
+      }
+      if (members < kMinRays || !(weight > 0.f) || !(glm::length(normal) > 0.f)) continue;  // too few rays to speak for it
+      centre /= weight;
+      normal = glm::normalize(normal);
+      float radius = 0.f;
+      for (int k = 0; k < S * S; ++k)
+        if (plane_of[k] == index) radius = std::max(radius, glm::length(s[k].position - centre));
+      // A hot patch's fireflies matter more than its point-light shadow.
+      const float radii = plane.hot ? kHotNearRadii : kNearRadii;
+      const float near = radii * std::max(radius, lift);
+      plane.patch = int32_t(m_patches.size());
+      m_patches.push_back({centre + lift * normal, normal, flux, near * near});
     }
-    if (!(weight > 0.f) || !(glm::length(normal) > 0.f)) continue;
-    centre /= weight;
-    normal = glm::normalize(normal);
-    bool flat = true;
-    float radius = 0.f;
-    for (int k = 0; k < S * S; ++k) {
-      if (!in_reach(s[k])) continue;
-      flat &= glm::dot(s[k].normal, normal) > 0.9f;  // nearly flat: one centre and normal speak for it
-      radius = std::max(radius, glm::length(s[k].position - centre));
-    }
-    if (!flat) continue;
-    m_cell[size_t(c)] = int32_t(m_patches.size());
-    const float near = 3.f * std::max(radius, lift);
-    m_patches.push_back({centre + lift * normal, normal, flux, near * near});
   }
 }
 
-bool HotSpots::handles(const Vec3& x, const Vec3& y) const {
+bool HotSpots::handles(const Vec3& x, const Vec3& y, const Vec3& face_normal) const {
   if (m_patches.empty()) return false;
   const Vec3 d = y - m_light;
   const float d2 = glm::dot(d, d);
   if (d2 >= m_reach2 || !(d2 > 0.f)) return false;
-  const int32_t p = m_cell[size_t(cell_of(d))];
-  if (p < 0) return false;
-  const Vec3 w = m_patches[size_t(p)].position - x;
-  return glm::dot(w, w) > m_patches[size_t(p)].near2;
+  const Vec3 n = glm::dot(face_normal, d) < 0.f ? face_normal : -face_normal;  // the side facing the light
+  const bool hot = d2 < m_hot2;
+  for (const Plane& plane : m_cell[size_t(cell_of(d))]) {
+    if (!plane.holds(y, n, hot)) continue;
+    if (plane.patch < 0) return false;
+    const Vec3 w = m_patches[size_t(plane.patch)].position - x;
+    return glm::dot(w, w) > m_patches[size_t(plane.patch)].near2;
+  }
+  return false;
 }
 
 namespace {
