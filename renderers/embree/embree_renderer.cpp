@@ -101,12 +101,14 @@ std::vector<Rgb> EmbreeRenderer::bounced_fields(std::span<const PreparedLight> l
 }
 
 std::string EmbreeRenderer::settings_key() const {
-  std::string further;  // keys of a first-bounce renderer stay as they were (caches on disk keep)
+  // A cache on disk holds responses of one model: a key changes with it
+  // ("patches=planes": every cell's patches, not only hot ones).
+  std::string further;
   if (m_settings.further_bounces())
     further = "/transport_samples=" + std::to_string(m_settings.transport_samples);
   return "embree/bounces=" + bounces_text(m_settings.bounces) + further + "/samples=" + std::to_string(m_settings.bounce_samples) +
          "/seed=" + std::to_string(m_settings.seed) + "/vertex_bounce=" + std::to_string(m_settings.vertex_interpolated_bounce) +
-         "/hot_spots=" + std::to_string(m_settings.hot_spots);
+         "/hot_spots=" + std::to_string(m_settings.hot_spots) + (m_settings.hot_spots ? "/patches=planes" : "");
 }
 
 std::vector<float> EmbreeRenderer::vertex_direct_irradiance(std::span<const PreparedLight> lights,
