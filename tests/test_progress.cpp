@@ -93,10 +93,36 @@ TEST_CASE("Progress: a stage's fraction, its parts, and nothing without a report
     CHECK(now.fraction == Approx(0.5 + 0.25 * 0.0));  // the part too young to show: the outer's 2 of 4
     sleep_for(0.6);
     now = progress_now();
+    // Named after half a second, measured after two (short calls do not flicker).
     CHECK(now.stages == std::vector<std::string>{"rendering", "solving", "building the light cache"});
-    CHECK(now.fraction == Approx((2 + 0.25) / 4));
+    CHECK(now.fraction == Approx(0.5));
+    sleep_for(1.5);
+    CHECK(progress_now().fraction == Approx((2 + 0.25) / 4));
   }
   CHECK(recorder.idles == 0);
+}
+
+TEST_CASE("Progress: a stage opened on a worker thread is a part of the work going on", "[progress]") {
+  Recorder recorder;
+  {
+    ProgressReporting reporting(&recorder, 1000.0);
+    ProgressStage root("solving");
+    std::thread([&] {
+      ProgressStage worker("lighting the points", 10);
+      worker.advance(5);
+      sleep_for(2.1);
+      const ProgressUpdate now = progress_now();
+      CHECK(now.stages == std::vector<std::string>{"solving", "lighting the points"});
+      CHECK(now.fraction == Approx(0.5));
+      CHECK(ProgressStage::current() == &worker);
+    }).join();
+    CHECK(ProgressStage::current() == &root);  // the worker's end leaves this thread's stages alone
+  }
+  std::lock_guard lock(recorder.mutex);
+  // Only the outermost stage counts as a part of the command's time.
+  REQUIRE(recorder.ended.size() == 2);
+  CHECK(recorder.ended[0] == std::pair<std::string, size_t>("lighting the points", 1));
+  CHECK(recorder.ended[1] == std::pair<std::string, size_t>("solving", 0));
 }
 
 TEST_CASE("Progress: the time left, stage times, and idle when the last stage ends", "[progress]") {

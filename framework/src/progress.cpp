@@ -11,10 +11,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// A part is shown (its name, and its fraction under a parent of unknown
-/// size) once it has run this long: the many short renderer calls inside a
-/// stage would make the line flicker.
-constexpr double kShowAfter = 0.5;
+/// A part's name is shown once it has run this long, and its fraction as
+/// the work's (under a parent of unknown size) once it has run kMeasureAfter:
+/// the many short renderer calls inside a solve's stage would make the line
+/// flicker between their fractions; a long one (a light cache, a large
+/// render) is measured.
+constexpr double kShowAfter = 0.5, kMeasureAfter = 2.0;
 
 double seconds_since(Clock::time_point t, Clock::time_point now) { return std::chrono::duration<double>(now - t).count(); }
 
@@ -59,7 +61,7 @@ struct ProgressHub {
     for (size_t k = n; k-- > 0;) {
       const ProgressStage& s = *chain[k];
       const double total = s.m_total.load(std::memory_order_relaxed), done = s.m_done.load(std::memory_order_relaxed);
-      const bool child_shown = k + 1 < n && seconds_since(chain[k + 1]->m_start, now) >= kShowAfter;
+      const bool child_shown = k + 1 < n && seconds_since(chain[k + 1]->m_start, now) >= kMeasureAfter;
       const double part = k + 1 < n && f[k + 1] >= 0 ? std::min(f[k + 1], 1.0) * chain[k + 1]->m_parent_units : 0.0;
       if (total > 0)
         f[k] = std::clamp((done + part) / total, 0.0, 1.0);
@@ -143,7 +145,14 @@ ProgressStage::ProgressStage(std::string name, double total, double parent_units
   m_start = Clock::now();
   std::lock_guard lock(hub.state);
   m_active = true;
-  m_parent = t_innermost;
+  m_previous = t_innermost;
+  // On a thread with no stage of its own (a worker of a parallel solve), a
+  // part of the work that is going on: the oldest outermost stage's.
+  m_parent = m_previous;
+  if (!m_parent) {
+    auto root = std::find_if(hub.open.begin(), hub.open.end(), [](const ProgressStage* s) { return !s->m_parent; });
+    if (root != hub.open.end()) m_parent = *root;
+  }
   m_depth = m_parent ? m_parent->m_depth + 1 : 0;
   hub.open.push_back(this);
   t_innermost = this;
@@ -159,7 +168,7 @@ ProgressStage::~ProgressStage() {
     // A part still open (closed out of order) belongs to this one's parent now.
     for (ProgressStage* s : hub.open)
       if (s->m_parent == this) s->m_parent = m_parent;
-    if (t_innermost == this) t_innermost = m_parent;
+    if (t_innermost == this) t_innermost = m_previous;
     idle = hub.open.empty();
   }
   const double seconds = seconds_since(m_start, Clock::now());

@@ -108,7 +108,7 @@ public:
   }
 
   void stage_ended(const std::string& name, size_t depth, double seconds) override {
-    if (depth != 0) return;
+    if (depth != 0 || name.empty()) return;
     std::lock_guard lock(m_times_mutex);
     auto it = std::find_if(m_times.begin(), m_times.end(), [&](const auto& p) { return p.first == name; });
     if (it == m_times.end())

@@ -6,10 +6,13 @@
 ///
 /// Library code opens a ProgressStage around a piece of long work and
 /// advances it from any thread. Stages nest per thread: one opened while
-/// another is open on the same thread is a part of it. A part with a known
+/// another is open on the same thread is a part of it; one opened on a
+/// thread with none open (a worker of a parallel solve) is a part of the
+/// oldest outermost stage. A part with a known
 /// size fills `parent_units` of its parent's units as it goes (the parent
 /// advances past them itself when the part is done); under a parent of
-/// unknown size, a part's own fraction is the work's.
+/// unknown size, a part's own fraction is the work's once it has run two
+/// seconds (short calls inside a long stage do not make the line flicker).
 ///
 /// Without a reporter (set_progress_reporter / ProgressReporting) stages
 /// cost an atomic load and nothing is recorded. With one, a thread of this
@@ -99,7 +102,8 @@ private:
   std::string m_name;
   std::atomic<double> m_total{0}, m_done{0};
   double m_parent_units = 1;
-  ProgressStage* m_parent = nullptr;  ///< on this thread; guarded by the hub's mutex after construction
+  ProgressStage* m_parent = nullptr;    ///< what it is a part of; guarded by the hub's mutex after construction
+  ProgressStage* m_previous = nullptr;  ///< the innermost stage of its thread before it (restored when it ends)
   std::chrono::steady_clock::time_point m_start;
   size_t m_depth = 0;
 };
