@@ -141,7 +141,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--offset", mount_offset, "with --mount ceiling: how far below the ceiling")->check(CLI::Range(1e-6, 1e6));
   app.add_option("--units", units_name,
                  "radiometric: intensities in W/sr, painted values in W/(sr m2); photometric: candela, and cd/m2 or lux "
-                 "(--target-quantity)")
+                 "(--target-quantity). A lights file that states its intensity_unit is read in it")
       ->check(CLI::IsMember({"radiometric", "photometric"}))
       ->capture_default_str();
   app.add_option("--target-quantity", quantity_name, "what the painted values are: luminance, or illuminance (lux on the surface; photometric)")
