@@ -35,7 +35,7 @@ void check_one_line_error(const test::RunResult& r) {
 
 } // namespace
 
-TEST_CASE("Help: solve leads with what a user needs; the paper's parameters are under Advanced", "[cli][help]") {
+TEST_CASE("Help: solve leads with what a user needs, the paper's parameters under Advanced", "[cli][help]") {
   const test::RunResult r = test::run_hilight({"solve", "--help"});
   REQUIRE(r.exit_code == 0);
   const std::string& help = r.out;

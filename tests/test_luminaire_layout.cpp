@@ -184,7 +184,7 @@ TEST_CASE("luminaires keep their size and spacing: no two overlap, --min-spacing
   CHECK(sized.report["luminaire_size_m"][1] == Approx(1.2));
 }
 
-TEST_CASE("--lights N with criteria is honoured: exactly N, or exit 3 with the fewest that can", "[lux][layout][cli]") {
+TEST_CASE("lux: --lights N with criteria is honoured: exactly N, or exit 3 with the fewest that can", "[lux][layout][cli]") {
   const auto dir = test::output_dir("layout_count");
   const auto criteria = criteria_file(dir);
   const auto ies = panel(dir);
@@ -215,7 +215,7 @@ TEST_CASE("--lights N with criteria is honoured: exactly N, or exit 3 with the f
   CHECK_FALSE(std::filesystem::exists(dir / "lights.json"));
 }
 
-TEST_CASE("--margin 0.05 keeps Ē and U0 5% clear of their limits, U0 also between the grid's points", "[lux][layout][cli]") {
+TEST_CASE("lux: --margin 0.05 keeps Ē and U0 5% clear of their limits, U0 also between the grid's points", "[lux][layout][cli]") {
   const auto dir = test::output_dir("layout_margin");
   const auto criteria = criteria_file(dir);
   const Solved s = solve(dir, criteria, panel(dir), {"--margin", "0.05", "--maintenance-factor", "0.8"});
@@ -259,7 +259,7 @@ TEST_CASE("--margin 0.05 keeps Ē and U0 5% clear of their limits, U0 also betwe
   CHECK(s.report["grids"][0]["u0_whole_grid"].get<double>() >= 1.05 * 0.6 * (1 - 1e-3));
 }
 
-TEST_CASE("the maintenance factor: maintained Ē = MF × new, stated; MF 0.8 needs 1/0.8 of the flux of MF 1", "[lux][layout][cli]") {
+TEST_CASE("the maintenance factor: maintained Ē = MF × new, stated, MF 0.8 needs 1/0.8 of the flux of MF 1", "[lux][layout][cli]") {
   const auto dir = test::output_dir("layout_mf");
   const auto criteria = criteria_file(dir);
   const auto ies = panel(dir);
@@ -283,7 +283,7 @@ TEST_CASE("the maintenance factor: maintained Ē = MF × new, stated; MF 0.8 nee
   CHECK(mean / double(lux.size()) == Approx(eight.report["grids"][0]["mean_lux"].get<double>()).epsilon(1e-4));
 }
 
-TEST_CASE("arrays: --layout array gives rows × columns aligned with the room or on a ceiling grid; auto reports both", "[lux][layout][cli]") {
+TEST_CASE("arrays: --layout array gives rows × columns aligned with the room or on a ceiling grid, auto reports both", "[lux][layout][cli]") {
   const auto dir = test::output_dir("layout_array");
   const auto criteria = criteria_file(dir);
   const auto ies = panel(dir);

@@ -268,7 +268,7 @@ TEST_CASE("Progress: a render on a terminal draws a bar with the percentage and 
   CHECK(bars >= 3);
 }
 
-TEST_CASE("Progress: a pipe gets nothing, or lines with --progress; the summary names the slow part", "[progress][cli]") {
+TEST_CASE("Progress: a pipe gets nothing, or lines with --progress, the summary names the slow part", "[progress][cli]") {
   if (!fs::exists(kHouse)) {
     std::cout << "SKIPPED: " << kHouse << " is missing (assimp-testmodels)" << std::endl;
     return;
