@@ -271,9 +271,11 @@ TEST_CASE("the maintenance factor: maintained Ē = MF × new, stated, MF 0.8 nee
   CHECK(eight.report["maintenance_factor"] == Approx(0.8));
   CHECK(eight.run.err.find("MF 0.80") != std::string::npos);
   CHECK(eight.run.err.find("maintained Ē") != std::string::npos);
-  // The least flux any layout needs scales as 1/MF exactly (the program is linear).
-  CHECK(eight.report["least_luminous_flux_lm"].get<double>() ==
-        Approx(one.report["least_luminous_flux_lm"].get<double>() / 0.8).epsilon(1e-4));
+  // The least flux any layout needs: 1/MF of MF 1's, or a little more where a luminaire at full output
+  // would need more than full (the program is linear but each dimming is at most 1).
+  const double least1 = one.report["least_luminous_flux_lm"].get<double>(), least8 = eight.report["least_luminous_flux_lm"].get<double>();
+  CHECK(least8 >= least1 / 0.8 * (1 - 1e-6));
+  CHECK(least8 <= least1 / 0.8 * 1.02);
   auto scene = std::make_shared<const Scene>(load_scene(kRoom, {}));
   const IlluminanceCriteria c = read_criteria(criteria);
   const std::vector<double> lux = measure(scene, c.points(), eight.lights, 0.8);
@@ -569,23 +571,13 @@ TEST_CASE("a luminaire result in a copy of the input IFC: IfcLightFixture in its
     CHECK(glm::length(fixtures[j].position - glm::dvec3(p[0].get<double>(), p[1].get<double>(), p[2].get<double>())) < 1e-3);
     CHECK(rooms.count(fixtures[j].container) == 1);
   }
-  // assimp reads it too, the original's geometry and a body for each fixture just above where its luminaire shines from.
+  // assimp reads it too (so hilight can solve in it again): the house as it was. The fixtures are
+  // referenced in their spaces, which assimp's IFC reader does not draw (it crashes on contained ones).
   const Scene original = load_scene(house, {}), lit = load_scene(dir / "lit.ifc", {});
-  CHECK(lit.triangles.size() > original.triangles.size());
-  const RayScene rays(lit);
-  const Lighting lights = [&] {
-    Lighting out;
-    for (const auto& l : report["luminaires"]) {
-      Light x;
-      x.position = to_local(glm::dvec3(l["position"][0].get<double>(), l["position"][1].get<double>(), l["position"][2].get<double>()), lit.frame);
-      out.push_back(x);
-    }
-    return out;
-  }();
-  for (const Light& l : lights) {
-    const Hit up = rays.intersect(l.position - Vec3(0.f, 0.01f, 0.f), Vec3(0.f, 1.f, 0.f), 1.f);
-    REQUIRE(up.valid());
-    CHECK(up.t == Approx(0.01f).margin(2e-3));
+  CHECK(lit.triangles.size() == original.triangles.size());
+  for (int k = 0; k < 3; ++k) {
+    CHECK(lit.bounds.lo[k] == Approx(original.bounds.lo[k]).margin(1e-4));
+    CHECK(lit.bounds.hi[k] == Approx(original.bounds.hi[k]).margin(1e-4));
   }
 #endif
 }

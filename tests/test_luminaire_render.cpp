@@ -3,6 +3,7 @@
 // cos γ / d² (the analytic value, and the profile's own bilinear value); a
 // rotationally constant profile renders exactly as a point light, bounce
 // included; renderers and formats that cannot carry a profile say so.
+#include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/lighting.hpp"
 #include "hilight/io/photometry_io.hpp"
@@ -10,6 +11,7 @@
 #include "hilight/io/ply_reader.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/scene_builders.hpp"
+#include "hilight/units.hpp"
 #include "photometry_files.hpp"
 #include "support.hpp"
 
@@ -115,8 +117,7 @@ TEST_CASE("where a luminaire cannot go, the command says so in one line", "[phot
   std::ofstream(dir / "l.json") << R"({"lights":[{"type":"luminaire","profile":"down.ies","position":[2,2.4,2],"dimming":0.5}]})";
   const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
   REQUIRE(test::run_hilight({"render", room, "--lights", (dir / "l.json").string(), "-o", (dir / "t.ply").string()}).exit_code == 0);
-  std::vector<std::vector<std::string>> refused = {  // glTF has no profiles; a plain solve no luminaires
-      {"export", room, "--lights", (dir / "l.json").string(), "-o", (dir / "s.glb").string()},
+  std::vector<std::vector<std::string>> refused = {  // a plain solve takes no luminaires
       {"solve", room, "--target", (dir / "t.ply").string(), "-o", (dir / "f.json").string(), "--mode", "fine-tune", "--initial",
        (dir / "l.json").string(), "--no-cache"}};
   for (const auto& args : refused) {
@@ -125,7 +126,16 @@ TEST_CASE("where a luminaire cannot go, the command says so in one line", "[phot
     CHECK(r.exit_code == 2);
     CHECK(test::line_count(r.err) == 1);
   }
-  for (const char* out : {"s.glb", "f.json"}) CHECK_FALSE(std::filesystem::exists(dir / out));
+  CHECK_FALSE(std::filesystem::exists(dir / "f.json"));
+  // glTF has no profiles: the luminaire goes as a spot Blender imports, its file in the extras, and comes back (issue 34).
+  const auto gltf = test::run_hilight({"export", room, "--lights", (dir / "l.json").string(), "-o", (dir / "s.glb").string()});
+  INFO(gltf.err);
+  REQUIRE(gltf.exit_code == 0);
+  const Lighting back = read_gltf_lights(dir / "s.glb");
+  REQUIRE(back.size() == 1);
+  CHECK(back[0].type == LightType::Luminaire);
+  CHECK(luminaire_dimming(back[0]) == Approx(0.5));
+  CHECK(back[0].profile_path == std::filesystem::absolute(dir / "down.ies").lexically_normal().string());
   // POV-Ray gets the stand-in (lighting.hpp: luminaire_as_spots).
   CHECK(test::run_hilight({"export", room, "--lights", (dir / "l.json").string(), "-o", (dir / "s.pov").string()}).exit_code == 0);
   CHECK_THAT(test::read_file(dir / "s.pov"), Catch::Contains("spotlight"));

@@ -41,6 +41,7 @@
 #include <ifcpp/IFC4/include/IfcReal.h>
 #include <ifcpp/IFC4/include/IfcRectangleProfileDef.h>
 #include <ifcpp/IFC4/include/IfcRelContainedInSpatialStructure.h>
+#include <ifcpp/IFC4/include/IfcRelReferencedInSpatialStructure.h>
 #include <ifcpp/IFC4/include/IfcRelDefinesByProperties.h>
 #include <ifcpp/IFC4/include/IfcShapeRepresentation.h>
 #include <ifcpp/IFC4/include/IfcSpace.h>
@@ -344,6 +345,9 @@ IfcWritten write_ifc_luminaires(const std::filesystem::path& source, const std::
       const double length = std::max(l.size.x, 0.05) * per_metre, width = std::max(l.size.y, 0.05) * per_metre;
       auto profile = make_shared<IfcRectangleProfileDef>();
       profile->m_ProfileType = make_shared<IfcProfileTypeEnum>(IfcProfileTypeEnum::ENUM_AREA);
+      profile->m_Position = make_shared<IfcAxis2Placement2D>();  // optional in IFC4, not to IFC2X3 readers (assimp)
+      profile->m_Position->m_Location = point({0, 0});
+      profile->m_Position->m_RefDirection = dir({1, 0});
       profile->m_XDim = make_shared<IfcPositiveLengthMeasure>(length);
       profile->m_YDim = make_shared<IfcPositiveLengthMeasure>(width);
       auto solid = make_shared<IfcExtrudedAreaSolid>();
@@ -385,8 +389,11 @@ IfcWritten write_ifc_luminaires(const std::filesystem::path& source, const std::
     }
   }
   size_t k = 0;
+  // Referenced in their space, not contained: Debian's assimp 5.2 reads IFC by IFC2X3's schema and
+  // crashes on a contained element it does not know (IfcLightFixture is IFC4's), and hilight reads
+  // scenes through it (docs/interchange.md, "IFC").
   for (auto& [raw, entry] : contained) {
-    auto rel = make_shared<IfcRelContainedInSpatialStructure>();
+    auto rel = make_shared<IfcRelReferencedInSpatialStructure>();
     rel->m_GlobalId = make_shared<IfcGloballyUniqueId>(global_id(key + "#contained" + std::to_string(k++)));
     rel->m_OwnerHistory = owner;
     rel->m_Name = make_shared<IfcLabel>(L"hilight luminaires");
@@ -419,13 +426,16 @@ std::vector<IfcFixture> read_ifc_fixtures(const std::filesystem::path& file) {
   const double metres = model->getUnitConverter()->getLengthInMeterFactor();
   model->resolveInverseAttributes();
   std::map<BuildingEntity*, std::string> container;
-  for (const auto& [id, e] : model->getMapIfcEntities())
-    if (const auto rel = dynamic_pointer_cast<IfcRelContainedInSpatialStructure>(e); rel && rel->m_RelatingStructure) {
-      const auto& s = rel->m_RelatingStructure;
-      const auto space = dynamic_pointer_cast<IfcSpatialElement>(s);
-      const auto& label = space && space->m_LongName ? space->m_LongName : s->m_Name;
-      for (const auto& p : rel->m_RelatedElements) container[p.get()] = label ? narrow(label->m_value) : "";
-    }
+  const auto name_of = [](const shared_ptr<IfcSpatialElement>& s) {
+    const auto& label = s->m_LongName ? s->m_LongName : s->m_Name;
+    return label ? narrow(label->m_value) : std::string();
+  };
+  for (const auto& [id, e] : model->getMapIfcEntities()) {
+    if (const auto rel = dynamic_pointer_cast<IfcRelContainedInSpatialStructure>(e); rel && rel->m_RelatingStructure)
+      for (const auto& p : rel->m_RelatedElements) container[p.get()] = name_of(rel->m_RelatingStructure);
+    if (const auto rel = dynamic_pointer_cast<IfcRelReferencedInSpatialStructure>(e); rel && rel->m_RelatingStructure)
+      for (const auto& p : rel->m_RelatedElements) container[p.get()] = name_of(rel->m_RelatingStructure);
+  }
   std::vector<IfcFixture> out;
   for (const auto& [id, e] : model->getMapIfcEntities())
     if (const auto f = dynamic_pointer_cast<IfcLightFixture>(e)) {

@@ -3,8 +3,9 @@
 /// 34 §6), through Debian's IfcPlusPlus (libifcplusplus-dev): each an
 /// IfcLightFixture with its outline as a thin box, placed in the IfcSpace
 /// whose extruded footprint holds it (else the storey below it) and
-/// contained there, its photometry, dimming, flux and power in a property
-/// set. IfcPlusPlus reads IFC2X3 and IFC4 and writes IFC4 (IfcLightFixture
+/// referenced there (IfcRelReferencedInSpatialStructure: assimp crashes on
+/// a contained IFC4 element), its photometry, dimming, flux and power in a
+/// property set. IfcPlusPlus reads IFC2X3 and IFC4 and writes IFC4 (IfcLightFixture
 /// is IFC4's), so the copy is IFC4. docs/interchange.md, "IFC".
 #include <filesystem>
 #include <string>

@@ -302,13 +302,19 @@ public:
         kept.push_back(c);
         continue;
       }
-      size_t best = m_places.size();
-      float d2 = std::numeric_limits<float>::max();
+      // The nearest place that keeps its distance from those kept (nearest first, so the first that fits).
+      std::vector<std::pair<float, size_t>> by_distance;
+      by_distance.reserve(m_places.size());
       for (size_t m = 0; m < m_places.size(); ++m) {
         const Vec3 d = m_places[m].position - m_places[c].position;
-        if (glm::dot(d, d) < d2 && std::find(kept.begin(), kept.end(), m) == kept.end() && fits(m, kept)) d2 = glm::dot(d, d), best = m;
+        by_distance.push_back({glm::dot(d, d), m});
       }
-      if (best < m_places.size()) kept.push_back(best);
+      std::sort(by_distance.begin(), by_distance.end());
+      for (const auto& [d2, m] : by_distance)
+        if (fits(m, kept)) {
+          kept.push_back(m);
+          break;
+        }
     }
     return evaluate(kept);
   }
@@ -358,7 +364,7 @@ private:
   /// Place `m` keeps the spacing rules with every light but the `skip`-th.
   bool fits(size_t m, const std::vector<size_t>& lights, size_t skip = size_t(-1)) const {
     for (size_t k = 0; k < lights.size(); ++k)
-      if (k != skip && lights[k] != m && too_close(m_outlines[m], m_outlines[lights[k]], m_rules)) return false;
+      if (k != skip && too_close(m_outlines[m], m_outlines[lights[k]], m_rules)) return false;  // a place taken is too close to itself
     return true;
   }
   double reduced_cost(const Layout& layout, size_t c) const {
@@ -589,7 +595,10 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
   bool free_found = false;
   {
     std::optional<Layout> best, fallback;
+    // Layouts of more luminaires than an array may have are walked through, not built.
+    constexpr size_t kMostToBuild = 400;
     const auto consider = [&](const Layout& at) {
+      if (at.lights.size() > kMostToBuild) return;
       Layout f = buildable(at);
       if (acceptable(f)) {
         report.walk.push_back({f.lights.size(), f.flux * rated});
@@ -638,6 +647,9 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
       report.fewest_free = chosen.lights.size();
     } else if (fallback) {
       free_layout = *fallback;
+      free_found = true;
+    } else {  // nothing small enough to build was walked through (criteria far out of reach): the last, spread
+      free_layout = walker.spread(at);
       free_found = true;
     }
     if (settings.max_count && free_layout.lights.size() > settings.max_count) {
@@ -713,10 +725,14 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
       r.met = r.shortfall <= bound.shortfall * (1 + 1e-3) + 1e-6 && ugr_ok(r.ugr);
     };
     std::vector<ArrayResult> results;
-    const size_t first = settings.fixed_count ? settings.fixed_count : std::max<size_t>(least_count, size_t(std::floor(0.85 * bound.flux)));
+    // Arrays of up to 400 luminaires (20 × 20) unless a count asks for more.
+    constexpr size_t kMostInArray = 400;
+    const size_t first = settings.fixed_count
+                             ? settings.fixed_count
+                             : std::clamp<size_t>(size_t(std::floor(0.85 * bound.flux)), least_count, std::max(least_count, kMostInArray));
     const size_t last = settings.fixed_count ? settings.fixed_count
                         : settings.max_count ? settings.max_count
-                                             : std::max<size_t>(first + 12, 3 * size_t(std::ceil(bound.flux)) + 8);
+                                             : std::min(std::max(first, kMostInArray), std::max<size_t>(first + 12, 3 * size_t(std::ceil(bound.flux)) + 8));
     size_t met_at = 0;
     for (size_t n = std::max<size_t>(first, 1); n <= last && n <= 2000; ++n) {
       if (met_at && n > met_at + 4) break;

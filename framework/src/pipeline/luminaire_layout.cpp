@@ -96,12 +96,14 @@ Light turned(const Light& light, float degrees) {
 bool too_close(const Footprint& a, const Footprint& b, const SpacingRules& rules) {
   const Vec3 d(b.centre.x - a.centre.x, 0.f, b.centre.z - a.centre.z);
   if (rules.min_spacing > 0 && double(glm::length(d)) < rules.min_spacing - 1e-6) return true;
-  if (a.length <= 0.f && a.width <= 0.f && b.length <= 0.f && b.width <= 0.f) return glm::length(d) < 1e-6f;
-  // Separating axes: the sides of both outlines.
+  if (glm::length(d) < 1e-6f) return true;  // two luminaires never share a centre
+  if (a.length <= 0.f && a.width <= 0.f && b.length <= 0.f && b.width <= 0.f) return false;
+  // Separating axes: the sides of both outlines (a line's body a millimetre wide).
   const Vec3 up(0.f, 1.f, 0.f);
   const Vec3 axes[4] = {a.axis, glm::cross(up, a.axis), b.axis, glm::cross(up, b.axis)};
   const auto half = [&](const Footprint& f, const Vec3& n) {
-    return 0.5f * (f.length * std::abs(glm::dot(f.axis, n)) + f.width * std::abs(glm::dot(glm::cross(up, f.axis), n)));
+    const float width = f.length > 0.f ? std::max(f.width, 1e-3f) : f.width;
+    return 0.5f * (f.length * std::abs(glm::dot(f.axis, n)) + width * std::abs(glm::dot(glm::cross(up, f.axis), n)));
   };
   for (const Vec3& n : axes) {
     const float gap = std::abs(glm::dot(d, n)) - half(a, n) - half(b, n);
