@@ -46,7 +46,6 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Light a scene with lights: a picture (.png, .exr) and/or the light at every vertex (.ply).\n"
                "  hilight render SCENE --lights lights.json -o out        (out.ply and out.png)",
                "render");
-  app.footer(exit_codes_help());
   std::string scene_path, lights_path, camera_text;
   std::vector<std::string> outputs;
   float exposure = 0.f;
