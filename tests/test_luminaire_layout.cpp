@@ -469,8 +469,14 @@ TEST_CASE("a luminaire result leaves hilight: the schedule (CSV), the report per
     CHECK(luminaire_dimming(back[j]) == Approx(luminaire_dimming(s.lights[j])).epsilon(1e-5));
   }
   const std::string text = test::read_file(dir / "lights.glb");
-  CHECK(text.find("\"profile\":\"" + std::filesystem::absolute(ies).lexically_normal().string()) != std::string::npos);
+  CHECK(text.find("\"profile\":\"panel.ies\"") != std::string::npos);  // named from the glTF's folder
   CHECK(text.find("\"type\":\"spot\"") != std::string::npos);
+  // A profile outside the glTF's folder is named, not read (as its buffers, issue 35).
+  std::filesystem::create_directories(dir / "elsewhere");
+  const Solved away = solve(dir, criteria, ies, {}, "elsewhere/lights.glb");
+  REQUIRE(away.run.exit_code == 0);
+  CHECK(test::read_file(dir / "elsewhere" / "lights.glb").find(std::filesystem::absolute(ies).lexically_normal().string()) != std::string::npos);
+  CHECK_THROWS_WITH(read_gltf_lights(dir / "elsewhere" / "lights.glb"), Catch::Contains("outside the glTF's folder"));
 }
 
 TEST_CASE("a luminaire result's glTF opens in Blender: spots with the IES file named in their extras", "[lux][gltf][blender]") {
@@ -497,7 +503,7 @@ TEST_CASE("a luminaire result's glTF opens in Blender: spots with the IES file n
     CHECK(b["type"] == "SPOT");
     CHECK(b["direction"][1].get<double>() == Approx(-1.0).margin(1e-5));
     REQUIRE(b["extras"].contains("hilight"));
-    CHECK(b["extras"]["hilight"]["profile"] == std::filesystem::absolute(ies).lexically_normal().string());
+    CHECK(b["extras"]["hilight"]["profile"] == "panel.ies");
     CHECK(b["extras"]["hilight"]["type"] == "luminaire");
   }
 }

@@ -249,6 +249,12 @@ Light luminaire_from_extras(const tinygltf::Value& h, const Vec3& position, cons
   if (!(dimming >= 0 && dimming <= 1e6) || !(std::abs(spin) <= 360)) throw bad("\"dimming\" must be at least 0, \"spin_deg\" within ±360");
   const fs::path named = h.Get("profile").Get<std::string>();
   const fs::path file = named.is_absolute() ? named : path.parent_path() / named;
+  // As its buffers: inside the glTF's folder only (issue 35), a regular file.
+  if (!inside_folder(path.parent_path(), file))
+    throw bad("its profile " + named_from(path.parent_path(), file) +
+              " lies outside the glTF's folder (put the .ies or .ldt beside the glTF, or below it)");
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) throw bad("its profile " + named.string() + " is not a file there");
   const std::string key = fs::absolute(file).lexically_normal().string();
   auto& profile = profiles[key];
   if (!profile) profile = std::make_shared<const Photometry>(read_photometry(file));

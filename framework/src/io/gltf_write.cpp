@@ -188,7 +188,7 @@ tinygltf::Value numbers(std::initializer_list<double> values) {
 /// file, aim, spin, dimming and flux (and an area source's shape) go in
 /// `extras.hilight`, from which hilight reads the luminaire back
 /// (docs/interchange.md).
-void add_luminaire(const Light& l, tinygltf::Light& light, tinygltf::Node& node) {
+void add_luminaire(const Light& l, tinygltf::Light& light, tinygltf::Node& node, const fs::path& path) {
   const Photometry& p = *l.profile;
   const double dimming = luminaire_dimming(l);
   std::vector<double> mean(181, 0.0);
@@ -217,7 +217,11 @@ void add_luminaire(const Light& l, tinygltf::Light& light, tinygltf::Node& node)
   light.color = {1.0, 1.0, 1.0};
   tinygltf::Value::Object extras;
   extras["type"] = tinygltf::Value(std::string("luminaire"));
-  extras["profile"] = tinygltf::Value(l.profile_path);
+  // Named from the glTF's folder when it lies there or below (the only place reading takes it from), else absolute.
+  const fs::path folder = fs::absolute(path).parent_path().lexically_normal(), profile = fs::absolute(l.profile_path).lexically_normal();
+  const fs::path relative = profile.lexically_relative(folder);
+  const bool below = !relative.empty() && *relative.begin() != "..";
+  extras["profile"] = tinygltf::Value(below ? relative.generic_string() : profile.string());
   extras["aim"] = numbers({l.direction.x, l.direction.y, l.direction.z});
   extras["spin_deg"] = tinygltf::Value(double(l.spin_deg));
   extras["dimming"] = tinygltf::Value(dimming);
@@ -255,7 +259,7 @@ void add_light(tinygltf::Model& model, const Light& l, size_t index, const glm::
     const glm::dquat q = aim(l.direction);
     node.rotation = {q.x, q.y, q.z, q.w};
   }
-  if (l.profile) add_luminaire(l, light, node);
+  if (l.profile) add_luminaire(l, light, node, path);
   else if (is_area(l.type)) add_area_extras(l, light, node);
   model.lights.push_back(light);
   node.name = light.name;
