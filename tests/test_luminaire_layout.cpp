@@ -587,3 +587,46 @@ TEST_CASE("a luminaire result in a copy of the input IFC: IfcLightFixture in its
   }
 #endif
 }
+
+TEST_CASE("EN 12464-1's zones: the task, its immediate surround (0.5 m) and background (3 m) as criteria, met by the solve",
+          "[lux][layout][cli]") {
+  const auto dir = test::output_dir("layout_zones");
+  const auto zones = dir / "zones.json";
+  const auto t = test::run_hilight({"target", "workplane", kRoom, "--box", "2,0,1.5,4,3,3.5", "--lux", "500", "--u0", "0.6", "--zones",
+                                    "-o", zones.string()});
+  INFO(t.err);
+  REQUIRE(t.exit_code == 0);
+  const IlluminanceCriteria c = read_criteria(zones);
+  REQUIRE(c.grids.size() == 3);
+  CHECK(c.grids[0].name == "task");
+  CHECK(c.grids[1].name == "surround");
+  CHECK(c.grids[1].lux == 300);  // EN 12464-1's table for a 500 lx task
+  CHECK(c.grids[1].u0 == Approx(0.4));
+  CHECK(c.grids[2].name == "background");
+  CHECK(c.grids[2].lux == Approx(100));  // a third of the surround's
+  CHECK(c.grids[2].u0 == Approx(0.1));
+  const auto from_task = [](const Vec3& p) {
+    return std::hypot(std::max({2.f - p.x, 0.f, p.x - 4.f}), std::max({1.5f - p.z, 0.f, p.z - 3.5f}));
+  };
+  for (const Vec3& p : c.grids[0].points) CHECK(from_task(p) == 0.f);
+  for (const Vec3& p : c.grids[1].points) {
+    CHECK(from_task(p) > 0.f);
+    CHECK(from_task(p) <= 0.5f + 1e-3f);
+  }
+  for (const Vec3& p : c.grids[2].points) {
+    CHECK(from_task(p) > 0.5f);
+    CHECK(from_task(p) <= 3.5f + 1e-3f);
+  }
+  CHECK(surround_lux(750) == 500);
+  CHECK(surround_lux(300) == 200);
+  CHECK(surround_lux(150) == 150);
+  const Solved s = solve(dir, zones, panel(dir), {});
+  INFO(s.run.err);
+  REQUIRE(s.run.exit_code == 0);
+  for (const auto& g : s.report["grids"]) CHECK(g["met"] == true);
+  CHECK(s.run.err.find("surround: maintained") != std::string::npos);
+  // Zones lie around a task area: one must be given.
+  const auto no_box = test::run_hilight({"target", "workplane", kRoom, "--zones", "-o", (dir / "z2.json").string()});
+  CHECK(no_box.exit_code == 2);
+  CHECK(no_box.err.find("--zones") != std::string::npos);
+}

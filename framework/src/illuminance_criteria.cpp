@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <unordered_set>
 
 namespace hilight {
@@ -211,6 +212,61 @@ CriterionGrid make_surface_grid(const RayScene& rays, const Regions& regions, co
   if (grid.points.empty())
     throw InputError(std::string("no ") + to_string(kind) + " face into the area above the work plane");
   return grid;
+}
+
+double surround_lux(double task_lux) {
+  if (task_lux >= 750) return 500;
+  if (task_lux >= 500) return 300;
+  if (task_lux >= 300) return 200;
+  return task_lux;
+}
+
+std::vector<CriterionGrid> make_zones(const RayScene& rays, const Regions& regions, const Bounds& task, const CriterionGrid& task_plane,
+                                      float height, float border, float surround_width, float background_width) {
+  std::set<int> rooms;
+  for (const Vec3& p : task_plane.points)
+    if (const int r = regions.at(p); r >= 0) rooms.insert(r);
+  // Distance over the floor from the task area (0 inside it).
+  const auto from_task = [&](const Vec3& p) {
+    const float dx = std::max({task.lo.x - p.x, 0.f, p.x - task.hi.x}), dz = std::max({task.lo.z - p.z, 0.f, p.z - task.hi.z});
+    return std::hypot(dx, dz);
+  };
+  std::vector<CriterionGrid> out;
+  const double surround = surround_lux(task_plane.lux);
+  struct Band {
+    const char* name;
+    float inner, outer;
+    double lux, u0;
+  };
+  for (const Band& band : {Band{"surround", 0.f, surround_width, surround, 0.4},
+                           Band{"background", surround_width, surround_width + background_width, surround / 3.0, 0.1}}) {
+    Bounds outer = task;
+    outer.lo -= Vec3(band.outer, 0.f, band.outer);
+    outer.hi += Vec3(band.outer, 0.f, band.outer);
+    const Vec3 e = outer.extent();
+    const double spacing = std::min(en12464_spacing(std::max(e.x, e.z)), 0.5 * double(band.outer - band.inner));
+    GridArea area;
+    area.box = outer;
+    CriterionGrid g;
+    try {
+      g = make_work_plane(rays, regions, area, height, band.lux, band.u0, spacing, border);
+    } catch (const InputError&) {
+      continue;  // no floor there
+    }
+    CriterionGrid kept = g;
+    kept.name = band.name;
+    kept.points.clear();
+    kept.normals.clear();
+    for (size_t i = 0; i < g.points.size(); ++i) {
+      const float d = from_task(g.points[i]);
+      if (d > band.inner + 1e-4f && d <= band.outer + 1e-4f && (rooms.empty() || rooms.count(regions.at(g.points[i])))) {
+        kept.points.push_back(g.points[i]);
+        kept.normals.push_back(g.normals[i]);
+      }
+    }
+    if (!kept.points.empty()) out.push_back(std::move(kept));
+  }
+  return out;
 }
 
 const char* to_string(CriterionGrid::Kind kind) {

@@ -70,11 +70,16 @@ int run_target(const std::vector<std::string>& args) {
       ->check(CLI::Range(1e-4, 1e6));
   app.add_option("--border", border, "no work-plane point within this of a wall (EN 12464-1: 0.5)")->check(FiniteNonNegative)->capture_default_str();
   app.add_flag("--append", append, "add these grids to the criteria already in the output file");
+  bool zones = false;
+  app.add_flag("--zones", zones,
+               "with --box (the task area): EN 12464-1's immediate surround (a 0.5 m band, Ē from the standard's table, U0 0.40) "
+               "and background (a 3 m band beyond, a third of it, U0 0.10) as grids too");
   SceneLoadOptions scene_options;
   add_scene_options(app, scene_options, kAdvanced);
   progress.add_to(app);
   if (auto code = parse_arguments(app, args)) return *code;
   if (region >= 0 && !box_text.empty()) throw InputError("--region and --box: give one area");
+  if (zones && box_text.empty()) throw InputError("--zones needs the task area as --box X0,Y0,Z0,X1,Y1,Z1 (its surround and background lie around it)");
   check_output_type(output, {".json"}, "criteria are written as .json");
   check_writable(output);
   IlluminanceCriteria criteria;
@@ -103,8 +108,11 @@ int run_target(const std::vector<std::string>& args) {
   }
   const auto in_scene = [&](const std::string& what) { return scene_path + ": " + what; };
   try {
-    const CriterionGrid plane = make_work_plane(rays, regions, area, height, lux, u0, spacing, border);
+    CriterionGrid plane = make_work_plane(rays, regions, area, height, lux, u0, spacing, border);
+    if (zones) plane.name = "task";
     criteria.grids.push_back(plane);
+    if (zones)
+      for (auto& band : make_zones(rays, regions, *area.box, plane, height, border)) criteria.grids.push_back(std::move(band));
     if (walls > 0) criteria.grids.push_back(make_surface_grid(rays, regions, area, CriterionGrid::Kind::Walls, walls, surface_u0, plane, spacing));
     if (ceiling > 0)
       criteria.grids.push_back(make_surface_grid(rays, regions, area, CriterionGrid::Kind::Ceiling, ceiling, surface_u0, plane, spacing));

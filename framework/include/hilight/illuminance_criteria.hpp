@@ -77,6 +77,21 @@ CriterionGrid make_work_plane(const RayScene& rays, const Regions& regions, cons
 CriterionGrid make_surface_grid(const RayScene& rays, const Regions& regions, const GridArea& area, CriterionGrid::Kind kind,
                                 double lux, double u0, const CriterionGrid& plane, double spacing = 0);
 
+/// EN 12464-1's immediate surround of a task whose maintained Ē is
+/// `task_lux`: 500 lx for ≥ 750, 300 for ≥ 500, 200 for ≥ 300, else the task's.
+double surround_lux(double task_lux);
+
+/// EN 12464-1's zones around a task area (`task`, a box; `task_plane` its
+/// work plane): the immediate surround, a band `surround_width` (0.5 m)
+/// around it, Ē ≥ surround_lux(task) and U0 ≥ 0.40; the background, a band
+/// `background_width` (3 m) beyond that, Ē ≥ a third of the surround's and
+/// U0 ≥ 0.10. Work-plane points at `height` in the task's rooms, clear of
+/// the walls by `border`, at EN 12464-1's spacing for each band's outer
+/// side but at most half its width. A band with no point in the rooms is
+/// left out (a task that fills its room has no background).
+std::vector<CriterionGrid> make_zones(const RayScene& rays, const Regions& regions, const Bounds& task, const CriterionGrid& task_plane,
+                                      float height, float border = 0.5f, float surround_width = 0.5f, float background_width = 3.f);
+
 const char* to_string(CriterionGrid::Kind kind);
 
 } // namespace hilight

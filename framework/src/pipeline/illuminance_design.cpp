@@ -450,8 +450,9 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
   }
   if (area.empty()) throw InputError("the criteria have no point");
   if (plane == -std::numeric_limits<float>::max()) plane = area.center().y;
+  // A third of the finest grid's spacing, but no finer than 15 cm (the zones' narrow bands have fine grids).
   const float step = settings.candidate_spacing > 0                  ? float(settings.candidate_spacing)
-                     : finest < std::numeric_limits<double>::max() ? float(finest / 3.0)
+                     : finest < std::numeric_limits<double>::max() ? std::max(float(finest / 3.0), 0.15f)
                                                                    : area.diagonal() / 20.f;
   if (!(step > 0.f)) throw InputError("the criteria's points are all in one place: no room to spread luminaires");
   const std::vector<float> layers = candidate_layers(space, plane, step);
