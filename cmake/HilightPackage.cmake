@@ -18,6 +18,11 @@ set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${CMAKE_BINARY_DIR}/lib)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME hilight)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "povray")
+# IfcPlusPlus (IFC out, frontends/cli/ifc_luminaires.cpp) ships no shlibs
+# file, so dpkg-shlibdeps cannot name it: the CLI plugin needs it, said here.
+if(TARGET hilight_ifcpp)
+  set(CPACK_DEBIAN_RUNTIME_PACKAGE_DEPENDS "libifcplusplus")
+endif()
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME hilight-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SHLIBDEPS OFF)
 set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS
