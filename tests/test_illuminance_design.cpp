@@ -329,6 +329,13 @@ TEST_CASE("the HTML report of a criteria solve shows the lux grids and renders i
   CHECK(html.find("id=\"luxmap-0\"") != std::string::npos);  // the work plane
   CHECK(html.find("id=\"luxmap-1\"") != std::string::npos);  // the ceiling
   CHECK(html.find("class=\"luminaire\"") != std::string::npos);
+  // Issue 34: isolines and a scale bar on the maps, the array against the free layout, UGR, W/m², dimming per luminaire.
+  CHECK(html.find("class=\"isoline\"") != std::string::npos);
+  CHECK(html.find("class=\"scalebar\"") != std::string::npos);
+  CHECK(html.find("<table id=\"layouts\">") != std::string::npos);
+  CHECK(html.find("<table id=\"ugr\">") != std::string::npos);
+  CHECK(html.find("W/m²") != std::string::npos);
+  CHECK(html.find("<th>dimming (%)</th>") != std::string::npos);
   CHECK(html.find("<svg id=\"cuts\"") == std::string::npos);  // no painted target, no D̄ plot
   if (test::skip_without_chromium()) return;
   const test::BrowserPage page = test::open_in_chromium(dir / "report.html");

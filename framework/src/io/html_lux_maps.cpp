@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
+#include <map>
 #include <sstream>
 
 namespace hilight {
@@ -21,6 +23,68 @@ std::string false_colour(double t) {
   out << "rgb(";
   for (int c = 0; c < 3; ++c) out << int(255.0 * (stops[k][c] * (1 - f) + stops[k + 1][c] * f)) << (c < 2 ? "," : ")");
   return out.str();
+}
+
+/// Isolines (marching squares) over the cells of a regular grid of points
+/// (a work plane's), at round levels between its least and largest lux:
+/// SVG paths labelled with their level. Nothing for irregular grids (walls).
+std::string isolines(const CriterionGrid& grid, const double* lux, const Bounds& box, double scale) {
+  if (grid.kind == CriterionGrid::Kind::Walls || grid.points.size() < 4) return "";
+  // The cells: the smallest steps between points in x and in z.
+  float cx = std::numeric_limits<float>::max(), cz = cx;
+  for (size_t i = 1; i < grid.points.size(); ++i) {
+    const float dx = std::abs(grid.points[i].x - grid.points[i - 1].x), dz = std::abs(grid.points[i].z - grid.points[i - 1].z);
+    if (dx > 1e-4f) cx = std::min(cx, dx);
+    if (dz > 1e-4f) cz = std::min(cz, dz);
+  }
+  if (cx == std::numeric_limits<float>::max() || cz == std::numeric_limits<float>::max()) return "";
+  const Vec3 o = grid.points.front();
+  std::map<std::pair<long, long>, size_t> at;
+  for (size_t i = 0; i < grid.points.size(); ++i)
+    at[{std::lround((grid.points[i].x - o.x) / cx), std::lround((grid.points[i].z - o.z) / cz)}] = i;
+  double low = lux[0], high = lux[0];
+  for (size_t i = 0; i < grid.points.size(); ++i) low = std::min(low, lux[i]), high = std::max(high, lux[i]);
+  if (!(high > low)) return "";
+  // Round levels: a step of 1, 2 or 5 × 10^k giving about five lines.
+  const double raw = (high - low) / 5.0, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = magnitude;
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * magnitude <= raw * 1.5) step = m * magnitude;
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1);
+  for (double level = std::ceil(low / step) * step; level < high; level += step) {
+    std::ostringstream d;
+    d << std::fixed << std::setprecision(1);
+    std::pair<double, double> label{-1, -1};
+    for (const auto& [key, i00] : at) {
+      const auto find = [&](long dx, long dz) {
+        const auto it = at.find({key.first + dx, key.second + dz});
+        return it == at.end() ? size_t(-1) : it->second;
+      };
+      const size_t i10 = find(1, 0), i01 = find(0, 1), i11 = find(1, 1);
+      if (i10 == size_t(-1) || i01 == size_t(-1) || i11 == size_t(-1)) continue;
+      // The square's corners counter-clockwise, and where the level crosses each side.
+      const size_t c[4] = {i00, i10, i11, i01};
+      std::vector<std::pair<double, double>> cross;
+      for (int k = 0; k < 4; ++k) {
+        const size_t a = c[k], b = c[(k + 1) % 4];
+        if ((lux[a] < level) == (lux[b] < level)) continue;
+        const double t = (level - lux[a]) / (lux[b] - lux[a]);
+        const double x = double(grid.points[a].x + float(t) * (grid.points[b].x - grid.points[a].x) - box.lo.x) * scale;
+        const double y = double(grid.points[a].z + float(t) * (grid.points[b].z - grid.points[a].z) - box.lo.z) * scale;
+        cross.push_back({x, y});
+      }
+      for (size_t k = 0; k + 1 < cross.size(); k += 2) {
+        d << "M" << cross[k].first << "," << cross[k].second << "L" << cross[k + 1].first << "," << cross[k + 1].second;
+        if (label.first < 0) label = cross[k];
+      }
+    }
+    if (d.str().empty()) continue;
+    s << "<path class=\"isoline\" d=\"" << d.str() << "\" stroke=\"black\" stroke-width=\"0.8\" fill=\"none\"/>"
+      << "<text x=\"" << label.first + 2 << "\" y=\"" << label.second - 2 << "\">" << std::setprecision(0) << level << std::setprecision(1)
+      << "</text>";
+  }
+  return s.str();
 }
 
 std::string grid_map(const CriterionGrid& grid, const double* lux, const Lighting& lights, size_t index) {
@@ -43,6 +107,7 @@ std::string grid_map(const CriterionGrid& grid, const double* lux, const Lightin
       << "\" fill=\"" << false_colour(lux[i] / top) << "\"><title>" << std::setprecision(0) << lux[i] << " lx</title></rect>"
       << std::setprecision(1);
   }
+  s << isolines(grid, lux, box, scale);
   for (const Light& l : lights) {
     if (l.position.x < box.lo.x || l.position.x > box.hi.x || l.position.z < box.lo.z || l.position.z > box.hi.z) continue;
     const double x = double(l.position.x - box.lo.x) * scale, y = double(l.position.z - box.lo.z) * scale;
@@ -114,8 +179,8 @@ std::string lux_maps_html(const IlluminanceCriteria& criteria, const DesignRepor
            << "</div>\n";
     first += c.points.size();
   }
-  html << "</div><p class=\"legend\">Each square a calculation point, coloured by its illuminance; circles: the luminaires. "
-          "Walls are in the table only.</p>\n";
+  html << "</div><p class=\"legend\">Each square a calculation point, coloured by its illuminance; lines: isolines (lx); "
+          "circles: the luminaires; the bar: a length in metres. Walls are in the table only.</p>\n";
   return html.str();
 }
 
