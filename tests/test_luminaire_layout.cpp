@@ -414,6 +414,14 @@ TEST_CASE("energy: W/m² and LENI (EN 15193-1) from the power, the floor and the
   CHECK(e["installed_power_w"].get<double>() == Approx(36.0 * double(s.lights.size())));
   CHECK(s.run.err.find("W/m²") != std::string::npos);
   CHECK(s.run.err.find("LENI") != std::string::npos);
+  // Cylindrical illuminance at 1.2 m and the modelling, measured again here at one point.
+  const auto& cyl = s.report["cylindrical"];
+  REQUIRE(cyl["points"].get<size_t>() > 0);
+  CHECK(cyl["mean_lux"].get<double>() > 0);
+  CHECK(cyl["modelling"].get<double>() > 0.1);
+  CHECK(cyl["modelling"].get<double>() < 1.5);
+  CHECK(cyl["u0"].get<double>() <= 1.0);
+  CHECK(s.run.err.find("cylindrical Ēz") != std::string::npos);
 }
 
 TEST_CASE("a luminaire result leaves hilight: the schedule (CSV), the report per luminaire, glTF", "[lux][cli][gltf]") {

@@ -162,6 +162,8 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
                     {"floor_area_m2", r.room.floor_area}}},
           {"ugr", {{"max", finite_or_null(r.ugr)}, {"limit", a.design.ugr_max > 0 ? nlohmann::json(a.design.ugr_max) : nlohmann::json(nullptr)},
                    {"luminous_area_m2", r.luminous_area}, {"observers", observers}}},
+          {"cylindrical", {{"height_m", r.cylindrical.height}, {"points", r.cylindrical.points}, {"mean_lux", r.cylindrical.mean},
+                           {"min_lux", r.cylindrical.min}, {"u0", r.cylindrical.u0}, {"modelling", r.cylindrical.modelling}}},
           {"energy", {{"floor_area_m2", e.area}, {"power_w", watts ? nlohmann::json(e.power) : nlohmann::json(nullptr)},
                       {"installed_power_w", watts ? nlohmann::json(e.installed) : nlohmann::json(nullptr)},
                       {"power_density_w_m2", watts && e.area > 0 ? nlohmann::json(e.density) : nlohmann::json(nullptr)},
@@ -412,6 +414,10 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
     };
     std::fprintf(stderr, "hilight: layouts: %s; %s; kept: %s (%s)\n", layout_line("array", report.array).c_str(),
                  layout_line("free", report.free).c_str(), report.chosen.c_str(), report.why.c_str());
+    if (report.cylindrical.points)
+      std::fprintf(stderr, "hilight: cylindrical Ēz %.0f lx at %.1f m (Emin %.0f lx, U0 %.2f), modelling Ēz/Ēh %.2f\n",
+                   report.cylindrical.mean, report.cylindrical.height, report.cylindrical.min, report.cylindrical.u0,
+                   report.cylindrical.modelling);
     if (report.luminous_area > 0) {
       char text[160];
       if (std::isfinite(report.ugr)) std::snprintf(text, sizeof(text), "UGR %.1f at the standard observers", report.ugr);
@@ -426,8 +432,8 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
     }
     if (is_ifc_path(a.output)) {
       std::string where;
-      for (const auto& space : ifc.spaces)
-        if (where.find("'" + space + "'") == std::string::npos) where += (where.empty() ? "'" : ", '") + space + "'";
+      for (const auto& room : ifc.spaces)
+        if (where.find("'" + room + "'") == std::string::npos) where += (where.empty() ? "'" : ", '") + room + "'";
       std::fprintf(stderr, "hilight: %s: a copy of %s with %zu IfcLightFixture (%zu in IfcSpaces, %zu in storeys: %s), IFC4\n",
                    a.output.c_str(), a.scene_path.c_str(), lights.size(), ifc.in_spaces, ifc.in_storeys, where.c_str());
     }

@@ -853,6 +853,37 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
     report.met = report.met && f.met;
     first += grid.points.size();
   }
+  // Cylindrical illuminance at 1.2 m over the work planes' points (seated), and the modelling.
+  {
+    SurfacePoints cyl;
+    for (const auto& g : criteria.grids)
+      if (g.kind == CriterionGrid::Kind::WorkPlane)
+        for (const Vec3& p : g.points) {
+          const Vec3 at(p.x, room.floor_y + float(report.cylindrical.height), p.z);
+          if (rays.inside_solid(at)) continue;
+          for (const Vec3& n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(0, 1, 0)}) {
+            cyl.positions.push_back(at);
+            cyl.normals.push_back(n);
+          }
+        }
+    if (!cyl.positions.empty()) {
+      cyl.albedo.assign(cyl.positions.size(), Rgb(1.f));
+      const std::vector<double> ev = lux_from_radiance(reference.illuminate(cyl, lights));
+      auto& c = report.cylindrical;
+      c.points = ev.size() / 5;
+      double sum = 0, horizontal = 0;
+      c.min = std::numeric_limits<double>::max();
+      for (size_t i = 0; i < c.points; ++i) {
+        const double ez = mf * 0.25 * (ev[5 * i] + ev[5 * i + 1] + ev[5 * i + 2] + ev[5 * i + 3]);
+        sum += ez;
+        horizontal += mf * ev[5 * i + 4];
+        c.min = std::min(c.min, ez);
+      }
+      c.mean = sum / double(c.points);
+      c.u0 = c.mean > 0 ? c.min / c.mean : 0;
+      c.modelling = horizontal > 0 ? sum / horizontal : 0;
+    }
+  }
   report.ugr = kNaN;
   for (size_t o = 0; o < observers.size(); ++o) {
     double glare = 0, direct = 0;

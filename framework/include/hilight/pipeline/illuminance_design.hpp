@@ -107,6 +107,15 @@ struct DesignReport {
   RoomFrame room;
   glm::vec2 luminaire_size{0.f};
   double luminous_area = 0;  ///< m², for luminance (0: the luminaire gives none; no UGR)
+  /// EN 12464-1's cylindrical illuminance of the lights found, maintained:
+  /// over the work planes' points at `height` over the floor, Ēz (the mean
+  /// of four vertical illuminances, facing ±x and ±z: the standard's
+  /// approximation), its Emin and U0, and the modelling (Ēz/Ēh, the
+  /// horizontal there; EN 12464-1 asks 0.3 to 0.6). Reported, not a criterion.
+  struct Cylindrical {
+    double height = 1.2, mean = 0, min = 0, u0 = 0, modelling = 0;
+    size_t points = 0;
+  } cylindrical;
   std::vector<ObserverGlare> glare;  ///< per observer, the lights found
   double ugr = 0;                    ///< the largest (NaN: none in view or no luminous area)
   std::map<std::string, double> seconds;
