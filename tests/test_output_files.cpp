@@ -8,6 +8,8 @@
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
+#include <fstream>
+#include <iterator>
 #include <csignal>
 #include <fstream>
 #include <fcntl.h>
