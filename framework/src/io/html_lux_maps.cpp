@@ -56,7 +56,9 @@ std::string isolines(const CriterionGrid& grid, const double* lux, const Bounds&
     std::ostringstream d;
     d << std::fixed << std::setprecision(1);
     std::pair<double, double> label{-1, -1};
-    for (const auto& [key, i00] : at) {
+    for (const auto& cell : at) {
+      const std::pair<long, long> key = cell.first;  // (not a structured binding: clang 14 cannot capture those)
+      const size_t i00 = cell.second;
       const auto find = [&](long dx, long dz) {
         const auto it = at.find({key.first + dx, key.second + dz});
         return it == at.end() ? size_t(-1) : it->second;
