@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <tuple>
@@ -16,6 +17,9 @@ namespace hilight {
 namespace {
 
 constexpr int kGrid = 32;
+/// A flat axis shorter than this share of its grown extent has no depth to
+/// look into: its sides count as open (a floor alone, a two-sided sheet).
+constexpr float kDepthless = 1e-3f;
 
 /// Nearest surface depth seen from both faces across axis k, per grid cell.
 struct DepthMaps {
@@ -25,8 +29,11 @@ struct DepthMaps {
 
 } // namespace
 
-std::array<float, 6> side_openness(const Scene& scene) {
-  const Bounds box = scene.bounds;
+namespace {
+
+/// side_openness() of the scene's surfaces as `to_frame` maps them (the
+/// world's axes, or the scene's own), over `box` (their box in that frame).
+std::array<float, 6> openness_in(const Scene& scene, const std::function<Vec3(const Vec3&)>& to_frame, const Bounds& box) {
   const Vec3 extent = box.extent();
   std::array<DepthMaps, 3> maps;
   for (int k = 0; k < 3; ++k) {
@@ -38,7 +45,8 @@ std::array<float, 6> side_openness(const Scene& scene) {
   };
   const float cell = std::max(extent.x, std::max(extent.y, extent.z)) / kGrid;
   // Points on the surfaces, closer than half a cell, mark the maps.
-  scene.for_each_surface_point(0.5f * cell, [&](const Vec3& p) {
+  scene.for_each_surface_point(0.5f * cell, [&](const Vec3& world) {
+    const Vec3 p = to_frame(world);
     for (auto& m : maps) {
       const int c = cell_of(p[m.a], m.a) * kGrid + cell_of(p[m.b], m.b);
       m.from_lo[c] = std::min(m.from_lo[c], p[m.k] - box.lo[m.k]);
@@ -62,6 +70,12 @@ std::array<float, 6> side_openness(const Scene& scene) {
   return open;
 }
 
+} // namespace
+
+std::array<float, 6> side_openness(const Scene& scene) {
+  return openness_in(scene, [](const Vec3& p) { return p; }, scene.bounds);
+}
+
 namespace {
 
 /// A scene counts as turned when its box in its own frame (grown) has less
@@ -72,14 +86,22 @@ constexpr double kTurnedVolume = 0.7;
 
 /// Grows a flat extent [lo, hi] (below `flat`) to `grown`, on the side the
 /// surfaces face when most of their area faces one way (`lean`: +1 all face
-/// up the axis), else on both.
-void grow_flat(float& lo, float& hi, float lean, float grown) {
-  const float extent = hi - lo;
-  if (lean > 0.5f) hi += grown - extent;
-  else if (lean < -0.5f) lo -= grown - extent;
-  else {
-    lo -= 0.5f * (grown - extent);
-    hi += 0.5f * (grown - extent);
+/// up the axis), else on both; never beyond a closed side (`open_lo`,
+/// `open_hi` false): a floor with low objects gets height above it, a
+/// closed flat (a floor, walls and a ceiling: 3 m high and 16 m across)
+/// keeps its floor and ceiling (issue 33: it reached 2.4 m under its floor
+/// and over its roof, and those two outside regions were each larger than
+/// the flat).
+void grow_flat(float& lo, float& hi, float lean, float grown, bool open_lo, bool open_hi) {
+  const float more = grown - (hi - lo);
+  const bool down = lean <= 0.5f && open_lo, up = lean >= -0.5f && open_hi;
+  if (up && down) {
+    lo -= 0.5f * more;
+    hi += 0.5f * more;
+  } else if (up) {
+    hi += more;
+  } else if (down) {
+    lo -= more;
   }
 }
 
@@ -137,10 +159,21 @@ Facing facing_in(const Scene& scene, const glm::mat3& to_frame) {
   return f;
 }
 
-/// [lo, hi] (in the frame of `f`) with each flat axis grown (grow_flat).
-void grow_flat_axes(Vec3& lo, Vec3& hi, const Facing& f, float flat, float grown) {
-  for (int k = 0; k < 3; ++k)
-    if (hi[k] - lo[k] < flat) grow_flat(lo[k], hi[k], f.area[k] > 0.f ? f.facing[k] / f.area[k] : 0.f, grown);
+/// [lo, hi] (in the frame of `f`) with each flat axis grown (grow_flat);
+/// `openness()` gives side_openness() in that frame, asked only when an axis
+/// is flat. A side is closed when under kOpenSide of it is open, unless the
+/// axis has no depth to look into (a floor alone: its face is the floor).
+void grow_flat_axes(Vec3& lo, Vec3& hi, const Facing& f, float flat, float grown,
+                    const std::function<std::array<float, 6>()>& openness) {
+  std::optional<std::array<float, 6>> open;
+  for (int k = 0; k < 3; ++k) {
+    const float extent = hi[k] - lo[k];
+    if (!(extent < flat)) continue;
+    if (!open) open = openness();
+    const bool depthless = !(extent > kDepthless * grown);
+    grow_flat(lo[k], hi[k], f.area[k] > 0.f ? f.facing[k] / f.area[k] : 0.f, grown, depthless || (*open)[2 * k] >= kOpenSide,
+              depthless || (*open)[2 * k + 1] >= kOpenSide);
+  }
 }
 
 /// Where lights may stand when the scene is turned off the world's axes
@@ -155,7 +188,12 @@ std::optional<Bounds> turned_bounds(const Scene& scene, const Bounds& world, flo
     const Vec3 q = frame.to_own(p - frame.centre);
     lo = glm::min(lo, q), hi = glm::max(hi, q);
   }
-  grow_flat_axes(lo, hi, facing_in(scene, glm::transpose(frame.axes)), flat, grown);
+  const glm::mat3 to_own = glm::transpose(frame.axes);
+  Bounds own_box;
+  own_box.lo = lo, own_box.hi = hi;
+  grow_flat_axes(lo, hi, facing_in(scene, to_own), flat, grown, [&] {
+    return openness_in(scene, [&](const Vec3& p) { return frame.to_own(p - frame.centre); }, own_box);
+  });
   auto volume = [](const Vec3& extent) { return double(extent.x) * double(extent.y) * double(extent.z); };
   if (!(volume(hi - lo) < kTurnedVolume * volume(world.extent()))) return std::nullopt;
   Bounds box = scene.bounds;
@@ -174,11 +212,12 @@ Bounds Scene::light_bounds() const {
   // their outer sides; open_light_bounds() is for targets lit from outside).
   // A flat axis grows to half the diagonal: a floor with low objects gets
   // height, on the side its surfaces face when most of their area faces one
-  // way (a light under an open floor would only light its underside).
+  // way (a light under an open floor would only light its underside), and
+  // never beyond a closed side (a flat's floor and ceiling are its walls).
   Bounds b = bounds;
   const float flat = 0.25f * diagonal(), grown = 0.5f * diagonal();
   const Facing world = facing_in(*this, glm::mat3(1.f));
-  grow_flat_axes(b.lo, b.hi, world, flat, grown);
+  grow_flat_axes(b.lo, b.hi, world, flat, grown, [this] { return side_openness(*this); });
   // Most of the surface squarely along the world's axes (walls, floors):
   // upright, whatever its own frame says.
   if (world.square >= 0.5 * world.total) return b;

@@ -8,6 +8,7 @@
 #include "hilight/io/lights_json.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/pipeline/solve_session.hpp"
+#include "hilight/real_model_scenes.hpp"
 #include "hilight/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
@@ -19,6 +20,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <sys/resource.h>
 
 namespace hilight::cli {
 
@@ -52,6 +54,13 @@ private:
   const std::string& m_path;
   bool m_owned = false;
 };
+
+/// The process's peak resident memory so far, in MB (getrusage).
+double peak_rss_mb() {
+  rusage usage{};
+  ::getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;
+}
 
 /// Mean distance from each true light to the nearest found light.
 double mean_position_error(const Lighting& truth, const Lighting& found) {
@@ -117,7 +126,7 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
                             {"true_lights", truth.size()}, {"found_lights", found_count}, {"repeat", repeat},
                             {"dbar_median", median(dbar)}, {"position_error_over_diagonal_median", median(pos_err)},
                             {"cold_seconds_median", median(cold)}, {"warm_seconds_median", median(warm)},
-                            {"light_cache_mb", cache_mb}};
+                            {"light_cache_mb", cache_mb}, {"peak_rss_mb_so_far", peak_rss_mb()}};
   for (const auto& [stage, v] : stages) j["warm_stage_seconds_median"][stage] = median(v);
   std::printf("%s\n", j.dump().c_str());
   std::fflush(stdout);
@@ -143,12 +152,15 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
       ->check(BounceCount)
       ->capture_default_str();
   std::vector<std::string> scenes = {"room", "building", "product"};
-  float building_edge = 0.22f;
-  app.add_option("--scenes", scenes, "room (the furnished room, each optimizer), building (two storeys, 6 lights), product (3 lights outside it)")
+  float building_edge = 0.22f, home_edge = builders::kHomeBenchEdge;
+  app.add_option("--scenes", scenes,
+                 "room (the furnished room, each optimizer), building (two storeys, 6 lights), product (3 lights outside it), "
+                 "home (a furnished flat of five rooms from the IFC house and real models, 5 ceiling lamps; needs assimp-testmodels)")
       ->capture_default_str();
   app.add_option("--building-edge", building_edge, "tessellation of the building (0.22: about 100k vertices)")
       ->check(FiniteNonNegative)
       ->capture_default_str();
+  app.add_option("--home-edge", home_edge, "tessellation of the home (0.2: about 260k vertices)")->check(FiniteNonNegative)->capture_default_str();
   app.add_flag("--skip-no-cache", no_cache_figure, "skip the comparison solve without the light cache");
   if (auto code = parse_arguments(app, args)) return *code;
   set_thread_limit(threads);
@@ -156,6 +168,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   auto wants = [&](const char* s) { return std::find(scenes.begin(), scenes.end(), s) != scenes.end(); };
   if (wants("building")) bench_built_scene(builders::two_storey_building(), building_edge, 6, repeat, cache_root, bounces, registry);
   if (wants("product")) bench_built_scene(builders::product_on_turntable(), 0.f, 3, repeat, cache_root, bounces, registry);
+  if (wants("home")) bench_built_scene(builders::furnished_home(), home_edge, 5, repeat, cache_root, bounces, registry);
   if (!wants("room")) return 0;
 
   auto scene = std::make_shared<const Scene>(finish_scene(builders::furnished_room(), {max_edge}));

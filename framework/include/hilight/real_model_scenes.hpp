@@ -36,4 +36,22 @@ Scene real_furnished_room();
 /// bounds, where a key, a fill and a rim light stand (far lights).
 BuiltScene engine_product();
 
+/// A furnished home of several rooms joined by doorways (issue 33): the
+/// ground floor of the IFC house (AC14-FZK-Haus by KIT/IAI) as a flat of
+/// its own. Its living room (with the stair), hall and three rooms, their
+/// inner doors' leaves taken out so that doorways join them; cut at the top
+/// of the upper floor's slab (y = 2.7) under a flat roof slab laid over it
+/// (which closes the stair's opening); the terrain left out. Closed: floor,
+/// walls with their glazed windows and doors, ceiling. Furnished with the
+/// house's own bed and table and with real models of assimp-testmodels
+/// (OBJ, PLY, 3DS, glTF, MS3D) on tables, a sideboard and the floor, beside
+/// sofas, shelves and wardrobes made of boxes. Metres, the ceiling at 2.5.
+/// Zones: where ceiling lamps hang in each room (0.15–0.4 m below it).
+BuiltScene furnished_home();
+/// The home's tessellations (`--max-edge`): for `hilight bench solve`
+/// 258,617 render vertices and 419k triangles, the size of a real furnished
+/// flat; for the tests 62,844 vertices (the default, the diagonal/40, makes
+/// 109k).
+constexpr float kHomeBenchEdge = 0.2f, kHomeTestEdge = 0.8f;
+
 } // namespace hilight::builders

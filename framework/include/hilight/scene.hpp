@@ -51,7 +51,9 @@ struct Scene {
   /// Where lights may stand: the bounds, except that an axis shorter than a
   /// quarter of the diagonal (a flat or open scene: a floor with low objects)
   /// is grown to half the diagonal so there is room for lights: on the side
-  /// most of the surface area faces (above a floor), else on both sides.
+  /// most of the surface area faces (above a floor), else on both sides, but
+  /// never beyond a closed side (side_openness() under kOpenSide: a one-storey
+  /// flat 16 m across keeps its floor and ceiling; light_bounds.hpp).
   Bounds light_bounds() const;
   Rgb triangle_albedo(size_t t) const { return materials[triangle_material[t]].albedo; }
   /// Albedo of a vertex: that of the first triangle using it (vertices are not
