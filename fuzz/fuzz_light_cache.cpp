@@ -7,7 +7,7 @@
 #include "fuzz_support.hpp"
 #include "hilight/hash.hpp"
 #include "hilight/light_cache_file.hpp"
-#include "hilight/pipeline/samples.hpp"
+#include "hilight/solve/samples.hpp"
 #include "hilight/plugin.hpp"
 #include "hilight/registry.hpp"
 

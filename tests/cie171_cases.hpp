@@ -10,7 +10,7 @@
 // Each case returns what it measured; the tests decide what a renderer must
 // pass (tests/test_cie171.cpp for Embree, tests/test_cie171_renderers.cpp for
 // POV-Ray and ism-vulkan).
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <cmath>

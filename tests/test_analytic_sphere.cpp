@@ -24,7 +24,7 @@
 // what each renderer is held to there, and its size is stated
 // (docs/rendering-model.md).
 #include "hilight/io/scene_io.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

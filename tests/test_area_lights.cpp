@@ -6,7 +6,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_json.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/scene_origin.hpp"
 #include "support.hpp"
 

@@ -2,7 +2,7 @@
 // and ism-vulkan draw (area_light_elements) against Embree's integration, and
 // each of those renderers against Embree on the same area-lit scene. Skipped
 // ("SKIPPED: …") where POV-Ray or a Vulkan device is missing.
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

@@ -2,7 +2,7 @@
 // makes a 1/d² hot spot that gather rays hit rarely and brightly. Measured as
 // each flat-region vertex's deviation of the indirect light from the mean of
 // its mesh neighbours (the speckle a designer sees).
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <algorithm>

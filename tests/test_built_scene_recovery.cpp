@@ -6,11 +6,11 @@
 // mean position error <= 1% of the diagonal in every trial with the right
 // count. CI runs a few trials a scene; the hidden [built-sweep] case runs 20.
 // The engine is a real model (assimp-testmodels' glTF), lit the same way.
-#include "hilight/built_scenes.hpp"
+#include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/io/ply.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
-#include "hilight/pipeline/solver.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/solve/solve_renderers.hpp"
+#include "hilight/solve/solver.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

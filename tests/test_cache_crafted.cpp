@@ -6,7 +6,7 @@
 #include "hilight/hash.hpp"
 #include "hilight/light_cache.hpp"
 #include "hilight/light_cache_file.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

@@ -5,7 +5,7 @@
 // (tests/test_cie171_renderers.cpp). Tolerances are those of lighting
 // practice: 5% per point, 10% overall.
 #include "cie171_cases.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

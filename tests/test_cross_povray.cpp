@@ -6,8 +6,8 @@
 #include "hilight/io/lights_json.hpp"
 #include "hilight/io/ply.hpp"
 #include "hilight/ray_scene.hpp"
-#include "hilight/real_model_scenes.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "random_lights.hpp"
 #include "support.hpp"
 

@@ -1,7 +1,7 @@
-// The cut choice and the count walk (pipeline/cuts.cpp) on tables of D̄:
+// The cut choice and the count walk (solve/cuts.cpp) on tables of D̄:
 // eq. 9's improvement ratio, the walk down, the knee when no cut is good,
 // the floor below which no light is added, and --lights N.
-#include "hilight/pipeline/cuts.hpp"
+#include "hilight/solve/cuts.hpp"
 
 #include <catch2/catch.hpp>
 #include <map>

@@ -7,7 +7,7 @@
 #include "hilight/io/lights_json.hpp"
 #include "hilight/io/ply_reader.hpp"
 #include "hilight/io/scene_io.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "hilight/scene_origin.hpp"
 #include "support.hpp"
 

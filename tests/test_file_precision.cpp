@@ -4,7 +4,7 @@
 // rounded to float (far_positions.hpp); read in single precision first, the
 // 10⁴ copy was off by 18.6% D̄. Formats assimp reads in single precision
 // from a more precise file say so once, with the size of the error.
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

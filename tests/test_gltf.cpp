@@ -2,12 +2,12 @@
 // targets from vertex colours, the same solve from a glTF as from PLY/JSON,
 // and the broken glTF files of assimp-testmodels refused in one line.
 #include "hilight/error.hpp"
-#include "hilight/built_scenes.hpp"
+#include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/io/gltf.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/io/ply_reader.hpp"
 #include "hilight/io/scene_io.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "hilight/target.hpp"
 #include "support.hpp"
 

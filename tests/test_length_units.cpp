@@ -5,7 +5,7 @@
 // metres, and an implausible size is said once.
 #include "hilight/io/lights_json.hpp"
 #include "hilight/io/scene_io.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

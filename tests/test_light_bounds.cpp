@@ -2,11 +2,11 @@
 // a room is closed on every side and keeps its walls; a product, a real glTF
 // engine and a stage without a ceiling are open, and their open space
 // reaches half a diagonal beyond the open sides.
-#include "hilight/built_scenes.hpp"
+#include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/light_bounds.hpp"
-#include "hilight/real_model_scenes.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

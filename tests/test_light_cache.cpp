@@ -4,8 +4,8 @@
 #include "hilight/error.hpp"
 #include "hilight/light_cache.hpp"
 #include "hilight/light_cache_file.hpp"
-#include "hilight/pipeline/solve_session.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/solve/solve_session.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

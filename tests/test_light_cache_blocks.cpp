@@ -3,7 +3,7 @@
 // and one ray scene shared by everything that binds a scene.
 #include "hilight/io/scene_io.hpp"
 #include "hilight/light_cache_nodes.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

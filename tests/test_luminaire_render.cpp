@@ -10,7 +10,7 @@
 #include "hilight/io/ply.hpp"
 #include "hilight/io/ply_reader.hpp"
 #include "hilight/io/scene_io.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/units.hpp"
 #include "photometry_files.hpp"
 #include "support.hpp"

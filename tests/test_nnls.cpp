@@ -1,7 +1,7 @@
 // NNLS (FNNLS) against a brute-force reference: for small problems, the exact
 // optimum is the best unconstrained least-squares solution over every subset
 // of free variables that comes out non-negative.
-#include "hilight/pipeline/nnls.hpp"
+#include "hilight/solve/nnls.hpp"
 
 #include <catch2/catch.hpp>
 #include <random>

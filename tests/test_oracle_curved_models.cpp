@@ -8,8 +8,8 @@
 //   never shadow a light the smooth normal faces (no terminator speckles);
 // - a vertex where other surfaces meet it (hard creases, contacts) is shaded a
 //   hair inside its triangle and lifted ε on the light's side.
-#include "hilight/real_model_scenes.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/ray_scene.hpp"
 #include "random_lights.hpp"
 #include "support.hpp"

@@ -5,11 +5,11 @@
 // polish), not a renderer's. Random lights, seeded.
 #include "analytic_renderer.hpp"
 #include "hilight/light_space.hpp"
-#include "hilight/pipeline/hierarchy.hpp"
-#include "hilight/pipeline/responses.hpp"
-#include "hilight/pipeline/seeder.hpp"
-#include "hilight/pipeline/solver.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/solve/hierarchy.hpp"
+#include "hilight/solve/responses.hpp"
+#include "hilight/solve/seeder.hpp"
+#include "hilight/solve/solver.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/target.hpp"
 #include "support.hpp"
 

@@ -1,11 +1,11 @@
 // Pieces of the solve pipeline on small constructed cases: the hierarchy's
 // cuts, the sampler's importance.
-#include "hilight/pipeline/fit.hpp"
-#include "hilight/pipeline/hierarchy.hpp"
-#include "hilight/pipeline/solver.hpp"
-#include "hilight/pipeline/samples.hpp"
+#include "hilight/solve/fit.hpp"
+#include "hilight/solve/hierarchy.hpp"
+#include "hilight/solve/solver.hpp"
+#include "hilight/solve/samples.hpp"
 #include "hilight/sampler.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

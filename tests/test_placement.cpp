@@ -5,8 +5,8 @@
 #include "hilight/io/lights_json.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/light_space.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
-#include "hilight/pipeline/solver.hpp"
+#include "hilight/solve/solve_renderers.hpp"
+#include "hilight/solve/solver.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

@@ -3,7 +3,7 @@
 // on a terminal (a pseudo-terminal here), nothing on a pipe unless
 // --progress, and a summary whose time is the whole command's.
 #include "hilight/progress.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "support.hpp"
 
 #include <atomic>

@@ -5,11 +5,11 @@
 #include "hilight/error.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/light_space.hpp"
-#include "hilight/pipeline/diagnosis.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
-#include "hilight/pipeline/solver.hpp"
-#include "hilight/real_model_scenes.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/solve/diagnosis.hpp"
+#include "hilight/solve/solve_renderers.hpp"
+#include "hilight/solve/solver.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
 // The first diffuse bounce: against an analytic oracle (inside a sphere) and
 // its convergence as gather samples grow (inside a closed box).
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

@@ -3,7 +3,7 @@
 // by being registered. Each case runs at bounces 0 (the direct light every
 // renderer computes exactly) unless it says otherwise.
 #include "hilight/error.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <algorithm>

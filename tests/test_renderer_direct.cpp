@@ -1,6 +1,6 @@
 // Direct light (bounces 0) against analytic answers, for every renderer that
 // can run here: L = albedo/π · I · |cos θ| / d² · visibility · spot factor.
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
 // Superposition: illumination is linear in the lights' intensities, per
 // channel, so render(A + B) = render(A) + render(B) and render = Σ l_j φ_j.
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

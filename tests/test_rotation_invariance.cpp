@@ -11,7 +11,7 @@
 #include "hilight/io/lights_json.hpp"
 #include "hilight/io/ply_reader.hpp"
 #include "hilight/own_frame.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "support.hpp"
 
 #include <glm/gtc/quaternion.hpp>

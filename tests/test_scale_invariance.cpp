@@ -6,7 +6,7 @@
 // is relative to the scene's size (docs/rendering-model.md, "Tolerances").
 // Translation is test_far_from_origin.cpp's; the same family.
 #include "hilight/io/lights_json.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

@@ -3,7 +3,7 @@
 #include "hilight/error.hpp"
 #include "hilight/io/image_io.hpp"
 #include "hilight/io/tessellate.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

@@ -3,11 +3,11 @@
 // the budget holds, and the shadow's edge comes out sharper.
 #include "hilight/io/lights_json.hpp"
 #include "hilight/io/ply.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
-#include "hilight/pipeline/solver.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/solve/solve_renderers.hpp"
+#include "hilight/solve/solver.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "random_lights.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/shadow_refinement.hpp"
 #include "support.hpp"
 

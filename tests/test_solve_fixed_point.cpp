@@ -8,9 +8,9 @@
 #include "hilight/io/ply.hpp"
 #include "hilight/light_cache.hpp"
 #include "hilight/io/scene_io.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
-#include "hilight/pipeline/solver.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/solve/solve_renderers.hpp"
+#include "hilight/solve/solver.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "random_lights.hpp"
 #include "support.hpp"
 

@@ -1,12 +1,12 @@
 // Spotlights without hints, piece by piece on the built stage: the
 // refinement finds a spot from a start off along its valley (distance
 // traded against cutoff), the screening finds one and two spots from nothing.
-#include "hilight/built_scenes.hpp"
+#include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/io/ply.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
-#include "hilight/pipeline/spot_proposals.hpp"
-#include "hilight/pipeline/spot_refinement.hpp"
-#include "hilight/pipeline/spot_screening.hpp"
+#include "hilight/solve/solve_renderers.hpp"
+#include "hilight/solve/spot_proposals.hpp"
+#include "hilight/solve/spot_refinement.hpp"
+#include "hilight/solve/spot_screening.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
 #include "cli_common.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
+#include "hilight/solve/solve_renderers.hpp"
 
 #include "hilight/error.hpp"
 #include "hilight/threads.hpp"

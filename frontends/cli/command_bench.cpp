@@ -2,7 +2,7 @@
 // figure set), so runs can be compared by scripts. Medians over --repeat runs.
 #include "cli_common.hpp"
 #include "commands.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
 #include <algorithm>

@@ -4,12 +4,12 @@
 // JSON lines on stdout, one per scene and cache, all in one process.
 #include "cli_common.hpp"
 #include "commands.hpp"
-#include "hilight/built_scenes.hpp"
+#include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/light_bounds.hpp"
 #include "hilight/light_cache_file.hpp"
-#include "hilight/pipeline/solve_renderers.hpp"
-#include "hilight/real_model_scenes.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/solve/solve_renderers.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
 #include <algorithm>

@@ -4,9 +4,9 @@
 #include "commands.hpp"
 #include "hilight/io/photometry_io.hpp"
 #include "hilight/io/scene_io.hpp"
-#include "hilight/pipeline/illuminance_design.hpp"
-#include "hilight/real_model_scenes.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/solve/illuminance_design.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
 #include <algorithm>

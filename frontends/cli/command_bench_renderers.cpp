@@ -5,7 +5,7 @@
 // (ism-vulkan: GPU seconds per stage from timestamps). JSON lines on stdout.
 #include "cli_common.hpp"
 #include "commands.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
 #include <algorithm>

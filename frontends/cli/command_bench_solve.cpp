@@ -4,12 +4,12 @@
 // medians over --repeat runs, all in one process so the figures compare.
 #include "cli_common.hpp"
 #include "commands.hpp"
-#include "hilight/built_scenes.hpp"
+#include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/light_cache_store.hpp"
-#include "hilight/pipeline/solve_session.hpp"
-#include "hilight/real_model_scenes.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/solve/solve_session.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
 #include "hilight/error.hpp"

@@ -12,7 +12,7 @@
 #include "hilight/io/photometry_io.hpp"
 #include "hilight/units.hpp"
 #include "hilight/scene_origin.hpp"
-#include "hilight/pipeline/solve_session.hpp"
+#include "hilight/solve/solve_session.hpp"
 #include "hilight/threads.hpp"
 #include "progress_display.hpp"
 

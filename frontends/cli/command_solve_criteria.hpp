@@ -1,9 +1,9 @@
 #pragma once
 /// `hilight solve SCENE --target C.json --luminaire L.ies`: lights for
-/// illuminance criteria (pipeline/illuminance_design.hpp) instead of paint.
+/// illuminance criteria (solve/illuminance_design.hpp) instead of paint.
 #include "cli_common.hpp"
 #include "hilight/light_space.hpp"
-#include "hilight/pipeline/illuminance_design.hpp"
+#include "hilight/solve/illuminance_design.hpp"
 
 #include <optional>
 #include <string>

@@ -2,7 +2,7 @@
 // scenes and lights. Skipped ("SKIPPED: …") where no Vulkan device exists.
 // Validation layers are on for every ism-vulkan renderer these tests make:
 // any validation error fails the call that caused it.
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>

@@ -2,7 +2,7 @@
 // Small scenes and helpers shared by the painter core's tests.
 #include "core/document.hpp"
 #include "core/solve_job.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "../support.hpp"
 
 #include <memory>

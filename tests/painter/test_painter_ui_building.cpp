@@ -14,7 +14,7 @@
 #include "hilight/io/scene_io.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/regions.hpp"
-#include "hilight/real_model_scenes.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 
 #include <catch2/catch.hpp>
 #include <cstring>

@@ -10,7 +10,7 @@
 #include "hilight/io/image_io.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/ray_scene.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

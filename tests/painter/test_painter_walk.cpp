@@ -4,8 +4,8 @@
 #include "core/walk.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/regions.hpp"
-#include "hilight/real_model_scenes.hpp"
-#include "hilight/scene_builders.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "painter_fixtures.hpp"
 
 #include <catch2/catch.hpp>

@@ -7,7 +7,7 @@
 /// and caches/adaptive (nodes refined where the blend is measured to be
 /// wrong); `--cache none` solves without one.
 #include "hilight/light_bounds.hpp"
-#include "hilight/pipeline/samples.hpp"
+#include "hilight/solve/samples.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/renderer.hpp"
 

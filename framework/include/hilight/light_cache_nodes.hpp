@@ -3,7 +3,7 @@
 /// over every scene vertex, stored compactly on disk (half floats over each
 /// node's largest value, runs of dark vertices as lengths), and the same
 /// restricted to one sample set for the solve's blends.
-#include "hilight/pipeline/samples.hpp"
+#include "hilight/solve/samples.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/renderer.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 /// The surface samples a solve touches (paper §3.2): a Sampler plugin picks a
 /// few thousand of the target's points; the solve's objective sums over them.
-#include "hilight/pipeline/samples.hpp"
+#include "hilight/solve/samples.hpp"
 
 #include <cstdint>
 

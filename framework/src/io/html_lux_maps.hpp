@@ -4,7 +4,7 @@
 // wanted, and the luminaires marked.
 #include "hilight/illuminance_criteria.hpp"
 #include "hilight/lighting.hpp"
-#include "hilight/pipeline/illuminance_design.hpp"
+#include "hilight/solve/illuminance_design.hpp"
 
 #include <string>
 

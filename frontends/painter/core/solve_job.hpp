@@ -11,8 +11,8 @@
 ///
 /// Cancelling: each job gets a stop token; cancel() requests it, and the
 /// Solver throws SolveCancelled at its next stage or renderer batch
-/// (pipeline/stoppable_renderer.hpp); the light cache's build is one batch.
-#include "hilight/pipeline/solve_session.hpp"
+/// (solve/stoppable_renderer.hpp); the light cache's build is one batch.
+#include "hilight/solve/solve_session.hpp"
 #include "hilight/registry.hpp"
 
 #include <atomic>

@@ -5,8 +5,8 @@
 /// views; D̄ against the light count (the hierarchy's cuts) with the chosen
 /// count marked; the lights; the timings.
 #include "hilight/illuminance_criteria.hpp"
-#include "hilight/pipeline/illuminance_design.hpp"
-#include "hilight/pipeline/solver.hpp"
+#include "hilight/solve/illuminance_design.hpp"
+#include "hilight/solve/solver.hpp"
 #include "hilight/ray_scene.hpp"
 
 #include <filesystem>

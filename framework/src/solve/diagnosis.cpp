@@ -1,0 +1,39 @@
+#include "hilight/solve/diagnosis.hpp"
+
+#include "hilight/solve/seeder.hpp"
+
+#include <tbb/parallel_for.h>
+
+namespace hilight {
+
+double unreachable_share(const Target& target, const LightSpace& space, size_t max_points) {
+  const std::vector<Vec3> places = free_grid_points(space, 8);
+  const RayScene& rays = space.rays();
+  const size_t n = target.size(), stride = std::max<size_t>(1, n / std::max<size_t>(1, max_points));
+  std::vector<size_t> points;
+  for (size_t i = 0; i < n; i += stride) points.push_back(i);
+  std::vector<double> energy(points.size(), 0.0), unreached(points.size(), 0.0);
+  tbb::parallel_for(size_t(0), points.size(), [&](size_t k) {
+    const size_t i = points[k];
+    const DVec3 v(target.value[i]);
+    energy[k] = double(target.weight[i]) * glm::dot(v, v);
+    if (!(energy[k] > 0)) return;
+    const Vec3& p = target.points.positions[i];
+    const Vec3& normal = target.points.normals[i];
+    for (const Vec3& place : places) {
+      Vec3 to = place - p;
+      const float distance = glm::length(to);
+      if (!(distance > 0.f)) continue;
+      to /= distance;
+      // Lit from either side (two-sided surfaces): start on the side facing the place.
+      const Vec3 origin = p + (glm::dot(normal, to) >= 0.f ? 1.f : -1.f) * rays.epsilon() * normal;
+      if (!rays.occluded(origin, to, distance)) return;
+    }
+    unreached[k] = energy[k];
+  });
+  double total = 0, lost = 0;
+  for (size_t k = 0; k < points.size(); ++k) total += energy[k], lost += unreached[k];
+  return total > 0 ? lost / total : 0.0;
+}
+
+} // namespace hilight

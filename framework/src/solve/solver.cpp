@@ -1,0 +1,531 @@
+#include "hilight/solve/solver.hpp"
+#include "hilight/solve/luminaire_aim.hpp"
+
+#include "hilight/error.hpp"
+#include "hilight/light_bounds.hpp"
+#include "hilight/light_cache_file.hpp"
+#include "hilight/light_cache_store.hpp"
+#include "hilight/solve/cuts.hpp"
+#include "hilight/solve/diagnosis.hpp"
+#include "hilight/solve/fit.hpp"
+#include "hilight/solve/gauss_newton.hpp"
+#include "hilight/solve/refine_problem.hpp"
+#include "hilight/solve/spot_proposals.hpp"
+#include "solver_internal.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <tbb/task_group.h>
+#include <cstdio>
+#include <sstream>
+
+namespace hilight {
+
+using namespace solver_detail;
+
+namespace {
+
+std::string hex(uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+/// Lights of cut `k` (positions and summed intensities) followed by the spots.
+Lighting lights_of_cut(const LightHierarchy& h, size_t k, const Lighting& spots, std::vector<Rgb>& phi) {
+  Lighting lights;
+  phi.clear();
+  for (int node : h.cut(k)) {
+    const Cluster& c = h.nodes()[node];
+    lights.push_back(Light::point(c.position, c.intensity));
+    phi.insert(phi.end(), c.phi.begin(), c.phi.end());
+  }
+  lights.insert(lights.end(), spots.begin(), spots.end());
+  return lights;
+}
+
+} // namespace
+
+size_t sample_count_for(size_t target_points) { return std::clamp<size_t>((target_points + 7) / 14, 3000, 10000); }
+
+Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
+               Renderer& reference, Sampler& sampler, Optimizer& optimizer, const LightCacheBuilder* cache,
+               SolveSettings settings, ProgressFn progress)
+    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_closed_bounds(m_scene->light_bounds()),
+      m_open_bounds(open_light_bounds(*m_scene)), m_space(std::in_place, *m_rays, settings.placement, m_closed_bounds),
+      m_luminaire_renderer(settings.luminaire ? std::optional<LuminaireRenderer>(std::in_place, renderer, *settings.luminaire) : std::nullopt),
+      m_luminaire_reference(settings.luminaire ? std::optional<LuminaireRenderer>(std::in_place, reference, *settings.luminaire) : std::nullopt),
+      m_stoppable_renderer(m_luminaire_renderer ? static_cast<Renderer&>(*m_luminaire_renderer) : renderer, m_stop),
+      m_stoppable_reference(m_luminaire_reference ? static_cast<Renderer&>(*m_luminaire_reference) : reference, m_stop),
+      m_renderer(m_stoppable_renderer),
+      m_reference(m_stoppable_reference), m_sampler(sampler),
+      m_optimizer(optimizer), m_cache_builder(cache),
+      m_settings(std::move(settings)), m_progress(std::move(progress)) {}
+
+void Solver::stage(const std::string& name) const {
+  if (m_stop.stop_requested()) throw SolveCancelled();
+  if (m_progress) m_progress(name);
+}
+
+float Solver::neighbourhood_radius() const {
+  // Two tessellation edges, within [diagonal/1000, diagonal/20]: a coarse
+  // --max-edge must not make "local" the whole scene (quadratic sampling).
+  const float d = m_scene->diagonal();
+  return std::clamp(2.f * m_scene->max_edge, 1e-3f * d, 0.05f * d);
+}
+
+void Solver::ensure_cache(SolveReport& report) {
+  if (!m_cache_builder) {
+    report.cache_state = "off";
+    return;
+  }
+  if (m_cache) {
+    report.cache_state = "in memory";
+    return;
+  }
+  Stopwatch watch;
+  const Bounds bounds = m_open ? m_open_bounds : m_closed_bounds;
+  const uint64_t key = light_cache_key(*m_scene, m_renderer.settings_key(), m_cache_builder->settings_key(), bounds);
+  std::filesystem::path file;
+  if (!m_settings.cache_dir.empty()) {
+    file = m_settings.cache_dir / ("lightcache-" + hex(key) + ".bin");
+    LoadedCache loaded = load_light_cache(file, key, *m_cache_builder, m_scene->positions.size());
+    m_cache = std::move(loaded.cache);
+    if (!loaded.damage.empty())
+      std::fprintf(stderr, "hilight: warning: light cache %s is unusable: %s; building it again\n", file.c_str(),
+                   loaded.damage.c_str());
+  }
+  if (m_cache) {
+    report.cache_state = "loaded";
+    touch_cache_file(file);  // recently used: evicted last
+  } else {
+    stage("building the light cache");
+    m_cache = m_cache_builder->build({*m_scene, *m_rays, m_renderer, bounds});
+    // Its bounce gathers at every vertex (hundreds of MB in a building) are
+    // not needed again: the solve works on its samples and the target.
+    m_renderer.release_scratch();
+    report.cache_state = "built";
+    if (!file.empty()) {
+      try {
+        save_light_cache(file, key, *m_cache);
+        evict_cache(m_settings.cache_dir, m_settings.cache_cap_bytes, file);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "hilight: warning: light cache not saved to %s: %s\n", file.c_str(), e.what());
+      }
+    }
+  }
+  report.seconds["cache"] += watch.seconds();
+}
+
+std::unique_ptr<LightCacheView> Solver::cache_view(const SampleSet& samples) const {
+  return m_cache ? m_cache->view(*m_scene, samples) : nullptr;
+}
+
+Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
+  const size_t m = samples.size();
+  m_cuts.clear();
+  m_hierarchy.reset();
+  const auto view = cache_view(samples);
+  ResponseModel model(m_renderer, samples, view.get());
+
+  stage("seeding");
+  Stopwatch seed_watch;
+  SeedResult seed = seed_lights(model, *m_space, m_settings.spot_hints, m_settings.seeding);
+  report.seconds["seeding"] += seed_watch.seconds();
+  const size_t n_points = seed.lights.size() - seed.spot_count;
+  report.seed_lights = n_points;
+  report.seeds_tried = seed.lights_tried;
+  if (n_points == 0 && seed.spot_count == 0)
+    throw InputError(m_space->rules().any() ? "--place " + m_space->rules().describe() +
+                                                 ": no light allowed there brightens the target (the rules exclude the lit region, or no place satisfies them)"
+                                           : std::string("the seeding found no light that brightens the target"));
+  if (n_points == 0) {  // only the requested spotlights: no hierarchy, refine them alone
+    Stopwatch refine_watch;
+    ResponseModel exact(m_renderer, samples, nullptr);
+    Lighting spots_only = refine_anchored(model, exact, seed.lights, report.dbar_samples);
+    report.seconds["refinement"] += refine_watch.seconds();
+    return spots_only;
+  }
+
+  stage("building the light hierarchy");
+  Stopwatch hierarchy_watch;
+  Lighting leaves(seed.lights.begin(), seed.lights.begin() + std::ptrdiff_t(n_points));
+  std::vector<Rgb> leaf_phi(seed.phi.begin(), seed.phi.begin() + std::ptrdiff_t(n_points * m));
+  std::vector<Rgb> spot_phi(seed.phi.begin() + std::ptrdiff_t(n_points * m), seed.phi.end());
+  Lighting spots(seed.lights.begin() + std::ptrdiff_t(n_points), seed.lights.end());
+  std::vector<Rgb> spot_l;
+  for (const auto& s : spots) spot_l.push_back(s.intensity);
+  // A merged light stands in free space, in the room of one of the two.
+  const LightSpace& space = *m_space;
+  auto may_stand_at = [&space](const Vec3& x, const Vec3& a, const Vec3& b) {
+    if (!space.admissible(x)) return false;
+    const int room = space.regions().at(x);
+    return room == space.regions().at(a) || room == space.regions().at(b);
+  };
+  m_hierarchy = LightHierarchy::build(model, leaves, leaf_phi, spot_phi, spot_l, m_settings.hierarchy, may_stand_at);
+  report.seconds["hierarchy"] += hierarchy_watch.seconds();
+
+  // Every cut's D̄ with intensities re-fitted (a better start than the sums).
+  report.cuts.assign(n_points, {});
+  std::vector<Lighting> starts(n_points);
+  for (size_t k = 1; k <= n_points; ++k) {
+    std::vector<Rgb> phi;
+    Lighting lights = lights_of_cut(*m_hierarchy, k, spots, phi);
+    phi.insert(phi.end(), spot_phi.begin(), spot_phi.end());
+    std::vector<Rgb> l = fit_intensities(phi, lights.size(), samples);
+    for (size_t j = 0; j < lights.size(); ++j) lights[j].intensity = l[j];
+    report.cuts[k - 1].lights = k;
+    report.cuts[k - 1].dbar_initial = normalized_difference(combine(phi, l, m), samples);
+    starts[k - 1] = std::move(lights);
+  }
+
+  // Which cuts to refine and how many lights (solve/cuts.cpp).
+  // A count the seeding cannot reach (--lights N, count:MIN) takes every
+  // seeded light here; add_missing_lights() adds the rest where the fit is worst.
+  CountRule rule{std::min(m_settings.fixed_count, n_points), m_settings.n_cut, m_settings.eps_opt, m_settings.eps_impro, kVisibleDbar};
+  rule.min_count = std::min(min_lights(), n_points);
+  rule.max_count = max_lights();
+  std::vector<double> initial;
+  for (const auto& c : report.cuts) initial.push_back(c.dbar_initial);
+  const std::vector<size_t> chosen = choose_cuts(initial, rule);
+
+  Stopwatch refine_watch;
+  ResponseModel exact(m_renderer, samples, nullptr);
+  auto refine_cut = [&](size_t k) {
+    if (report.cuts[k - 1].refined) return;
+    stage("refining the cut with " + std::to_string(k) + " lights");
+    CutRecord& rec = report.cuts[k - 1];
+    rec.refined_lights = refine_anchored(model, exact, starts[k - 1], rec.dbar_refined);
+    rec.refined = true;
+  };
+  auto dbar_of = [&](size_t k) { return report.cuts[k - 1].refined ? report.cuts[k - 1].dbar_refined : report.cuts[k - 1].dbar_initial; };
+  {
+    // The walk always needs a neighbour of the first cut: refine both at
+    // once (each refinement has serial stretches; two fill both cores).
+    const size_t first = chosen.front();
+    const FirstNeighbour neighbour = first_neighbour(initial, chosen, rule);
+    tbb::task_group group;
+    group.run([&] { refine_cut(first); });
+    if (neighbour == FirstNeighbour::Below) group.run([&] { refine_cut(first - 1); });
+    if (neighbour == FirstNeighbour::Above) group.run([&] { refine_cut(first + 1); });
+    group.wait();
+  }
+  // Cuts are refined lazily, only as the walk needs them.
+  const size_t count = walk_count(initial, chosen, rule, [&](size_t k) {
+    refine_cut(k);
+    return report.cuts[k - 1].dbar_refined;
+  });
+  report.seconds["refinement"] += refine_watch.seconds();
+  for (size_t k = 1; k < n_points; ++k) {
+    double next = dbar_of(k + 1);
+    report.improvement.push_back(next > 0 ? dbar_of(k) / next : 0.0);
+  }
+  report.dbar_samples = report.cuts[count - 1].dbar_refined;
+  // Kept for cut_lights(): every cut, refined where the solve refined it.
+  m_cuts.clear();
+  for (size_t k = 1; k <= n_points; ++k)
+    m_cuts.push_back(report.cuts[k - 1].refined ? report.cuts[k - 1].refined_lights : starts[k - 1]);
+  return report.cuts[count - 1].refined_lights;
+}
+
+Lighting Solver::cut_lights(size_t k) const {
+  if (m_cuts.empty()) throw std::logic_error("Solver::cut_lights: no solve yet");
+  return to_output(m_cuts[std::clamp<size_t>(k, 1, m_cuts.size()) - 1]);
+}
+
+Lighting Solver::to_points(const Lighting& lights) const {
+  return m_settings.luminaire ? as_points(lights, *m_settings.luminaire) : lights;
+}
+
+Lighting Solver::to_output(Lighting lights) const {
+  return m_settings.luminaire ? as_luminaires(lights, *m_settings.luminaire) : lights;
+}
+
+std::vector<Rgb> Solver::illumination(const Target& target, const Lighting& lights) {
+  return m_reference.illuminate(target.points, lights);
+}
+
+SampleSet Solver::evaluation_set(const Target& target) const {
+  const size_t want = m_settings.evaluation_points;
+  if (want == 0 || want >= target.size()) return all_samples(target);
+  // Evenly spaced target points estimate the whole target's D̄ at a fixed
+  // cost — unless the target's light is concentrated where the spacing does
+  // not look (a small painted patch): then every point is measured.
+  const size_t n = target.size();
+  SampleSet measured;
+  for (size_t k = 0; k < want; ++k) measured.add(target, uint32_t(std::min(n - 1, k * n / want)));
+  const double share = double(measured.size()) / double(n);
+  const double energy = measured.target_norm() * measured.target_norm(), total = target.norm() * target.norm();
+  if (!(energy > 0.5 * share * total && energy < 2.0 * share * total)) return all_samples(target);
+  return measured;
+}
+
+double Solver::measure_dbar(const Target& target, const Lighting& lights) {
+  SampleSet measured = evaluation_set(target);
+  return normalized_difference(m_reference.illuminate(measured.points, lights), measured);
+}
+
+size_t Solver::min_lights() const { return m_settings.fixed_count ? m_settings.fixed_count : m_settings.placement.min_count; }
+size_t Solver::max_lights() const { return m_settings.fixed_count ? m_settings.fixed_count : m_settings.placement.max_count; }
+
+void Solver::finish_report(const Target& target, const Lighting& lights, SolveReport& report) {
+  report.chosen = lights.size();
+  report.target_points = target.size();
+  if (report.dbar_points > 0) return;  // measured by polish_residuals
+  Stopwatch watch;
+  const SampleSet measured = evaluation_set(target);
+  report.dbar = normalized_difference(m_reference.illuminate(measured.points, lights), measured);
+  report.dbar_points = measured.size();
+  report.seconds["evaluation"] += watch.seconds();
+}
+
+void Solver::require_admissible(const Lighting& lights, const std::string& what) const {
+  for (size_t j = 0; j < lights.size(); ++j)
+    if (lights[j].type == LightType::Luminaire || is_area(lights[j].type))
+      throw InputError(what + ": light " + std::to_string(j) + " is a luminaire or an area source; the solve optimizes those only as --luminaire or --area-light");
+  for (size_t j = 0; j < lights.size(); ++j) {
+    const Vec3& p = lights[j].position;
+    const char* problem = !m_space->light_bounds().contains(p) ? "is outside the space lights may take (the scene's bounds)"
+                          : m_rays->inside_solid(p)    ? "is inside solid geometry"
+                                                       : nullptr;
+    if (!problem) continue;
+    std::ostringstream message;
+    message << what << ": light " << j << " at (" << p.x << ", " << p.y << ", " << p.z << ") " << problem;
+    throw InputError(message.str());
+  }
+}
+
+SampleSet Solver::sample(const Target& target, SolveReport& report) {
+  stage("sampling");
+  Stopwatch watch;
+  const size_t count = m_settings.samples ? m_settings.samples : sample_count_for(target.size());
+  SampleSet samples = m_sampler.draw(target, {count, neighbourhood_radius(), m_settings.seed});
+  // Samples that miss every lit point cannot constrain anything (a tiny lit
+  // patch in a huge target, too few samples): take every point instead.
+  if (!(samples.target_norm() > 0.0)) samples = all_samples(target);
+  report.samples = samples.size();
+  report.seconds["sampling"] += watch.seconds();
+  return samples;
+}
+
+Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_token stop) {
+  m_stop = std::move(stop);
+  Stopwatch total;
+  open_space_for(m_settings.spot_hints);
+  require_admissible(m_settings.spot_hints, "spot hints");
+  Lighting lights = solve_in_space(target, report);
+  if (m_settings.luminaire && m_settings.luminaire->profile && distinct_spins(*m_settings.luminaire->profile).size() > 1 && report.dbar > kTurnDbar)
+    lights = solve_each_spin(target, std::move(lights), report);
+  // Lights inside cannot explain the target: perhaps it is lit from outside
+  // (a product, a facade). Look again beyond the open sides; keep the better.
+  const bool can_open = !m_open &&
+                        (m_open_bounds.lo != m_closed_bounds.lo || m_open_bounds.hi != m_closed_bounds.hi);
+  if (m_settings.open_space_dbar > 0 && report.dbar > m_settings.open_space_dbar && can_open &&
+      !m_settings.placement.ceiling_offset) {
+    stage("looking beyond the scene's bounds");
+    SolveReport open_report;
+    open_report.seconds = report.seconds;
+    open_space(true);
+    Lighting open_lights = solve_in_space(target, open_report);
+    if (open_report.dbar < 0.8 * report.dbar) {
+      open_report.dbar_closed = report.dbar;
+      open_report.open_space = true;
+      report = std::move(open_report);
+      lights = std::move(open_lights);
+    } else {
+      report.seconds = open_report.seconds;
+      report.dbar_closed = report.dbar;
+      open_space(false);
+    }
+  }
+  // Point lights cannot explain the target, inside or beyond: spotlights
+  // from nothing (point lights beside them where they pay) compete; the
+  // fewer lights win unless the others improve D̄ by ε_impro (eq. 9).
+  if (m_settings.propose_spots && report.dbar > kSpotDbar && m_settings.spot_hints.empty() && m_settings.fixed_count == 0 &&
+      !m_settings.luminaire) {  // the designer chose the luminaire: no spots instead
+    stage("looking for spotlights");
+    SolveReport spot_report;
+    spot_report.seconds = report.seconds;
+    spot_report.open_space = report.open_space;
+    spot_report.dbar_closed = report.dbar_closed;
+    Lighting spots = spots_in_space(target, report.dbar_samples, spot_report);
+    const size_t n_spots = spots.size(), n_points = lights.size();
+    const double d_spots = spot_report.dbar, d_points = report.dbar, eps = m_settings.eps_impro;
+    const bool counts = n_spots >= min_lights() && (max_lights() == 0 || n_spots <= max_lights());
+    const bool spots_win = !spots.empty() && counts && (n_spots == n_points ? d_spots < d_points
+                                              : n_spots < n_points ? d_spots < eps * d_points  // the extra point lights do not pay
+                                                                   : d_points >= eps * d_spots);  // the extra lights pay
+    if (spots_win) {
+      report = std::move(spot_report);
+      lights = std::move(spots);
+    } else {
+      report.seconds = spot_report.seconds;
+    }
+  }
+  drop_idle_lights(lights);
+  if (m_settings.luminaire && m_settings.luminaire->profile && distinct_spins(*m_settings.luminaire->profile).size() > 1 && !lights.empty()) {
+    // An asymmetric luminaire: each one's turn about its aim, then measured again.
+    stage("aiming the luminaires");
+    Stopwatch watch;
+    lights = aim_luminaires(m_reference, sample(target, report), to_output(std::move(lights)), report.dbar_samples);
+    report.dbar_points = 0;
+    report.seconds["aim"] += watch.seconds();
+  }
+  finish_report(target, lights, report);
+  if (report.dbar > kPoorFitDbar) report.unreachable = unreachable_share(target, *m_space);
+  report.seconds["total"] = total.seconds();
+  return to_output(std::move(lights));
+}
+
+void Solver::drop_idle_lights(Lighting& lights) const {
+  // A light a millionth as bright as the brightest does nothing a designer
+  // could see; the fit sometimes parks one at ~0 instead of removing it.
+  if (m_settings.fixed_count > 0) return;
+  float brightest = 0.f;
+  for (const auto& l : lights) brightest = std::max({brightest, l.intensity.r, l.intensity.g, l.intensity.b});
+  Lighting kept;
+  for (const auto& l : lights)
+    if (l.type == LightType::Spot || std::max({l.intensity.r, l.intensity.g, l.intensity.b}) > 1e-6f * brightest)
+      kept.push_back(l);  // spots stay: they are the user's hints
+  if (!kept.empty() && kept.size() >= min_lights()) lights = std::move(kept);
+}
+
+void Solver::open_space(bool open) {
+  if (open == m_open) return;
+  std::shared_ptr<const Regions> regions = m_space->shared_regions();  // copied: emplace destroys the old space first
+  m_space.emplace(*m_rays, m_settings.placement, open ? m_open_bounds : m_closed_bounds, std::move(regions));
+  m_open = open;
+  std::swap(m_cache, m_other_cache);
+  m_hierarchy.reset();
+  m_cuts.clear();
+}
+
+void Solver::open_space_for(const Lighting& lights) {
+  for (const auto& l : lights)
+    if (!m_closed_bounds.contains(l.position) && m_open_bounds.contains(l.position)) return open_space(true);
+}
+
+Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {
+  ensure_cache(report);
+  SampleSet samples = sample(target, report);
+  Lighting found = solve_samples(samples, report);
+  Stopwatch polish_watch;
+  Lighting lights = polish_with_reference(samples, found, false, report.dbar_samples);
+  lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
+  report.seconds["reference polish"] += polish_watch.seconds();
+  return finish_in_space(target, std::move(samples), std::move(lights), report);
+}
+
+Lighting Solver::solve_each_spin(const Target& target, Lighting lights, SolveReport& report) {
+  const float base = m_settings.luminaire->spin_deg;
+  float best = base;
+  for (float spin : distinct_spins(*m_settings.luminaire->profile)) {
+    if (spin == 0.f) continue;  // solved already
+    stage("solving with the luminaire turned " + std::to_string(int(spin)) + "°");
+    turn_luminaire(std::fmod(base + spin, 360.f));
+    SolveReport turned;
+    turned.seconds = report.seconds;
+    Lighting found = solve_in_space(target, turned);
+    if (turned.dbar < report.dbar) {
+      report = std::move(turned);
+      lights = std::move(found);
+      best = m_settings.luminaire->spin_deg;
+    } else {
+      report.seconds = turned.seconds;
+    }
+  }
+  turn_luminaire(best);
+  return lights;
+}
+
+void Solver::turn_luminaire(float spin_deg) {
+  if (m_settings.luminaire->spin_deg == spin_deg) return;
+  m_settings.luminaire->spin_deg = spin_deg;
+  m_luminaire_renderer->set_luminaire(*m_settings.luminaire);
+  m_luminaire_reference->set_luminaire(*m_settings.luminaire);
+  // A light cache is of one luminaire turned one way (its key says so).
+  m_cache.reset();
+  m_other_cache.reset();
+}
+
+Lighting Solver::spots_in_space(const Target& target, double points_dbar, SolveReport& report) {
+  ensure_cache(report);
+  SampleSet samples = sample(target, report);
+  Stopwatch watch;
+  Lighting lights = add_spots(samples, points_dbar, report.dbar_samples);
+  if (!lights.empty()) lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
+  report.seconds["spots"] += watch.seconds();
+  if (lights.empty()) return lights;
+  return finish_in_space(target, std::move(samples), std::move(lights), report);
+}
+
+Lighting Solver::finish_in_space(const Target& target, SampleSet samples, Lighting lights, SolveReport& report) {
+  Stopwatch merge_watch;
+  lights = merge_close_pairs(samples, std::move(lights), report.dbar_samples);
+  for (int round = 0; round < 4; ++round) {  // each split must pay (eq. 9)
+    const size_t before = lights.size();
+    lights = split_lamps(samples, std::move(lights), report.dbar_samples);
+    if (lights.size() == before) break;
+  }
+  report.seconds["reference polish"] += merge_watch.seconds();
+  lights = polish_residuals(target, std::move(samples), lights, false, report);
+  finish_report(target, lights, report);
+  return lights;
+}
+
+Lighting Solver::fine_tune(const Target& target, const Lighting& given, SolveReport& report, std::stop_token stop) {
+  const Lighting lights = to_points(given);
+  m_stop = std::move(stop);
+  Stopwatch total;
+  open_space_for(lights);
+  require_admissible(lights, "lights to fine-tune");
+  ensure_cache(report);
+  SampleSet samples = sample(target, report);
+  // Anchored at the reference from the start: lights that already produce
+  // the target have a zero objective and stay exactly where they are. One
+  // round, and no residual polish: fine-tune follows the painter's strokes.
+  Stopwatch refine_watch;
+  Lighting refined = polish_with_reference(samples, lights, true, report.dbar_samples, 1);
+  if (m_settings.settle_fine_tune && report.dbar_samples > kSettledDbar) {
+    double model_dbar = 0, settled_dbar = 0;
+    Lighting settled = settle_lights(samples, *m_space, m_renderer, m_reference, refined, model_dbar);
+    settled = polish_with_reference(samples, settled, true, settled_dbar, 0);  // the reference's D̄, intensities fitted
+    if (settled_dbar < report.dbar_samples) refined = std::move(settled), report.dbar_samples = settled_dbar;
+  }
+  report.seconds["refinement"] += refine_watch.seconds();
+  finish_report(target, refined, report);
+  report.seconds["total"] = total.seconds();
+  return to_output(std::move(refined));
+}
+
+Lighting Solver::add_lights(const Target& target, const Lighting& given, SolveReport& report, std::stop_token stop) {
+  const Lighting lights = to_points(given);
+  m_stop = std::move(stop);
+  Stopwatch total;
+  open_space_for(lights);
+  open_space_for(m_settings.spot_hints);
+  require_admissible(m_settings.spot_hints, "spot hints");
+  for (size_t j = 0; j < lights.size(); ++j)
+    if (lights[j].type == LightType::Luminaire || is_area(lights[j].type))
+      throw InputError("lights to add to: light " + std::to_string(j) + " is a luminaire or an area source; the solve optimizes those only as --luminaire or --area-light");
+  ensure_cache(report);
+  // ΔΨ = max(Ψ − I(L), 0): what the current lights leave to be lit.
+  std::vector<Rgb> current = illumination(target, lights);
+  Target missing = target;
+  for (size_t i = 0; i < missing.size(); ++i) missing.value[i] = glm::max(target.value[i] - current[i], Rgb(0.f));
+  // What is left below ε_w of the target is model noise, not a missing light.
+  if (!(missing.norm() > m_settings.seeding.weak_threshold * target.norm()))
+    throw InputError(target.source, "the given lights already produce the target to within " +
+                                        std::to_string(int(std::round(100 * m_settings.seeding.weak_threshold))) + "%: nothing to add");
+  SampleSet samples = sample(missing, report);
+  Lighting added = polish_with_reference(samples, solve_samples(samples, report), false, report.dbar_samples);
+  Lighting all = lights;
+  all.insert(all.end(), added.begin(), added.end());
+  finish_report(target, all, report);
+  report.seconds["total"] = total.seconds();
+  return to_output(std::move(all));
+}
+
+} // namespace hilight

@@ -1,0 +1,418 @@
+#include "hilight/solve/spot_proposals.hpp"
+
+#include "hilight/solve/fit.hpp"
+#include "hilight/solve/spot_refinement.hpp"
+#include "hilight/solve/spot_screening.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <cstdlib>
+
+namespace hilight {
+
+namespace {
+
+/// Candidates refined per round: the screening's best few from distinct apexes.
+constexpr size_t kStarts = 6;
+/// Each bounce estimate serves this many Levenberg–Marquardt steps: more are
+/// spent following a bounce that is already out of date.
+constexpr int kRoundIterations = 15;
+
+/// How spots are refined: bounce rounds at most, whose bounce (the fast
+/// renderer's is 3x cheaper and ~25% off: enough to compare candidates, not
+/// to place the answer), how over-lighting counts (refine_spots), and the
+/// widest soft edge as a share of the cutoff.
+struct Pass {
+  int rounds;
+  bool fast_bounce;
+  double over_weight;
+  double falloff_share;
+};
+/// While the set is built, a spot keeps an edge (soft edge at most half its
+/// cutoff): an edgeless lobe fits under several pools at once and then
+/// holds them all.
+constexpr double kBuildingFalloffShare = 0.5;
+/// Spots refined together while the set is built...
+constexpr Pass kJoint{12, false, 1.0, kBuildingFalloffShare};
+/// ...and once it is: every edge free.
+constexpr Pass kFree{12, false, 1.0, 1.0};
+/// Settling (Model::settle), the answer's last word: past the slopes' stop,
+/// a simplex. A shadow edge sweeping over samples as a lamp moves is a kink
+/// the finite differences do not see (they leave those samples out), and it
+/// can hold Levenberg–Marquardt a few cm off (the curved models turned,
+/// with the bounce: 5 cm, D̄ 1.3%; settled, within 0.2 mm, D̄ 0.02%).
+/// Rounds at most in each of its two phases, the simplex's evaluations at
+/// most per round...
+constexpr int kSettleRounds = 12, kSettleSimplexEvaluations = 600;
+/// ...and rounds in a row without a 2% gain on the best before it stops:
+/// the bounce's roughness (each gather hit crosses shadow edges on its own)
+/// makes a round fit worse now and then on the way down (measured, fine-tune
+/// after a turn, D̄·10⁴ in the rounds fitted without the spikes: 2.74, then
+/// 3.32, 2.78, 2.57, 2.31, 0.98; stopping after two such rounds left the
+/// spot 10⁻⁴ of the size from the lamp, after three 1.4·10⁻⁵).
+constexpr int kSettlePatience = 3;
+/// A candidate beside the spots found so far: it may light less than the
+/// target (lamps not yet found will add) but over-lighting counts 100
+/// times: otherwise the best single spot for two or three pools is one wide
+/// cone over all of them.
+constexpr Pass kCandidate{2, true, 100.0, kBuildingFalloffShare};
+/// Two candidates together (a spot split in two).
+constexpr Pass kPair{2, true, 1.0, kBuildingFalloffShare};
+
+/// A sample holding more than this many times the mean squared residual of
+/// the samples still kept is a spike (without_spikes).
+constexpr double kSpike = 100.0;
+
+/// `samples`' weights with the spikes of `residual` left out, again and
+/// again while any stands out of the rest. Near the lights that made the
+/// target, what the bounce re-taken gets wrong is a handful of samples: a
+/// gather hit that crossed a shadow edge as the lights moved changes its
+/// sample by 1/128 of a lit hit (measured on a turned scene, 0.4 mm from
+/// the lamps: 20 of 6,708 points held 99.9% of the bounce's difference,
+/// against 500 for 55% of the direct light's). Fitted with them, the rounds
+/// stop where their spikes balance the direct light's pull (0.1–0.7 mm
+/// off); without them the direct light alone places the lights.
+std::vector<float> without_spikes(const SampleSet& samples, const std::vector<Rgb>& residual) {
+  const size_t m = samples.size();
+  std::vector<double> e(m);
+  for (size_t i = 0; i < m; ++i) e[i] = double(samples.weight[i]) * glm::dot(DVec3(residual[i]), DVec3(residual[i]));
+  std::vector<float> weight = samples.weight;
+  for (bool dropped = true; dropped;) {
+    double sum = 0;
+    size_t kept = 0;
+    for (size_t i = 0; i < m; ++i)
+      if (weight[i] > 0.f) sum += e[i], ++kept;
+    if (kept == 0 || !(sum > 0)) break;
+    const double limit = kSpike * sum / double(kept);
+    dropped = false;
+    for (size_t i = 0; i < m; ++i)
+      if (weight[i] > 0.f && e[i] > limit) weight[i] = 0.f, dropped = true;
+  }
+  return weight;
+}
+
+/// `a`'s lights stand where `b`'s do, aimed and opened alike (intensities aside).
+bool same_geometry(const Lighting& a, const Lighting& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t j = 0; j < a.size(); ++j)
+    if (a[j].type != b[j].type || a[j].position != b[j].position || a[j].direction != b[j].direction ||
+        a[j].cutoff_deg != b[j].cutoff_deg || a[j].falloff_deg != b[j].falloff_deg)
+      return false;
+  return true;
+}
+
+struct Model {
+  const SampleSet& samples;
+  const LightSpace& space;
+  Renderer& renderer;   ///< direct light (and the fast bounce)
+  Renderer& reference;  ///< the bounce estimates
+
+  std::vector<Rgb> bounce_of(const Lighting& spots, bool fast = false) const {
+    return (fast ? renderer : reference).unit_responses(samples.points, spots, Transport::IndirectOnly);
+  }
+  /// Each spot's direct light plus its `bounce`.
+  std::vector<Rgb> responses(const Lighting& spots, const std::vector<Rgb>& bounce) const {
+    std::vector<Rgb> phi = renderer.unit_responses(samples.points, spots, Transport::DirectOnly);
+    for (size_t i = 0; i < phi.size(); ++i) phi[i] += bounce[i];
+    return phi;
+  }
+
+  /// `spots` refined with `base` held, their bounce taken where they stand,
+  /// again and again where they went: the bounce follows the cone slowly, so
+  /// the rounds converge (measured: the error along a spot's valley falls
+  /// ~2.5x a round). `bounce` (if given) gets the bounce where they end.
+  Lighting refine(Lighting spots, const std::vector<Rgb>& base_phi, size_t base_count, const Pass& pass, double& dbar,
+                  std::vector<Rgb>* bounce = nullptr) const {
+    double previous = 1e300;
+    SpotRefineSettings settings;
+    settings.over_weight = pass.over_weight;
+    settings.max_falloff_share = pass.falloff_share;
+    settings.iterations = kRoundIterations;
+    for (int round = 0; round < pass.rounds; ++round) {
+      const std::vector<Rgb> estimate = bounce_of(spots, pass.fast_bounce);
+      spots = refine_spots(spots, estimate, samples, space, renderer, base_phi, base_count, dbar, settings);
+      if (dbar > 0.98 * previous) break;  // the bounce no longer moves the spots
+      previous = dbar;
+    }
+    if (bounce) *bounce = bounce_of(spots);
+    return spots;
+  }
+
+  /// D̄ of `lights` with `bounce` (theirs), intensities fitted.
+  double dbar_with(const Lighting& lights, const std::vector<Rgb>& bounce) const { return fit(responses(lights, bounce), lights.size()); }
+
+  /// `lights` (alone: nothing held) settled: rounds as refine's, with a
+  /// simplex after each round's Levenberg–Marquardt (spot_refinement.hpp),
+  /// each round judged by its lights' D̄ with the bounce re-taken where they
+  /// stand — the objective itself, not the held bounce it was refined with
+  /// — and the best kept, so the answer is never worse than `lights`. While
+  /// the set is built refine() moves on regardless (measured: stopping at a
+  /// worse round there lost a turned scene's spot, D̄ 18%). Once the rounds
+  /// stall (or reach kSettleRounds), with `despike`, as many more rounds
+  /// again from the best fit the samples without the bounce's spikes
+  /// (without_spikes; not from the start: far from the answer a lamp's own
+  /// hot spot is a spike, and fitted without it the rounds went nowhere, D̄
+  /// 0.6%). The best's intensities are those its D̄ was fitted with; `dbar`
+  /// gets that D̄ (with the bounce re-taken), `bounce` its bounce.
+  Lighting settle(Lighting lights, double& dbar, std::vector<Rgb>* bounce = nullptr, bool despike = false) const {
+    SpotRefineSettings settings;
+    settings.iterations = kRoundIterations;
+    settings.simplex_evaluations = kSettleSimplexEvaluations;
+    Lighting best;
+    std::vector<Rgb> best_bounce, best_residual, residual, estimate, intensities;
+    double best_dbar = 1e300;
+    std::optional<SampleSet> despiked;  // the samples the rounds fit, once without the spikes
+    static const bool debug = std::getenv("HILIGHT_SPOT_DEBUG");
+    bool moved = true, despiking = false;
+    for (int round = 0, rounds_without_gain = 0;; ++round) {  // rounds counted in each phase
+      if (moved) {
+        estimate = bounce_of(lights);
+        const double d = fit(responses(lights, estimate), lights.size(), &residual, &intensities);
+        if (debug) std::fprintf(stderr, "settling, round %d%s: D̄ %.4e\n", round, despiking ? " without spikes" : "", d);
+        rounds_without_gain = d < 0.98 * best_dbar ? 0 : rounds_without_gain + 1;
+        if (best.empty() || d < best_dbar) {
+          best = lights, best_bounce = estimate, best_residual = residual, best_dbar = d;
+          for (size_t j = 0; j < best.size(); ++j) best[j].intensity = intensities[j];
+        }
+      } else {
+        rounds_without_gain = kSettlePatience;  // the same lights again: every round after would be this one
+      }
+      if (rounds_without_gain >= kSettlePatience || round == kSettleRounds) {
+        if (!despike || despiking) break;
+        // Direct light alone has no spikes of the bounce; and without any
+        // left out the rounds would retrace the ones just run.
+        const bool bounce_seen = std::any_of(best_bounce.begin(), best_bounce.end(), [](const Rgb& b) { return b != Rgb(0.f); });
+        std::vector<float> weight = without_spikes(samples, best_residual);
+        if (!bounce_seen || weight == samples.weight) break;
+        despiked.emplace(samples).weight = std::move(weight);
+        despiking = true, round = 0, rounds_without_gain = 0;
+        lights = best, estimate = best_bounce, residual = best_residual;
+      } else if (despiking) {
+        despiked->weight = without_spikes(samples, residual);
+      }
+      double held_dbar = 1.0;  // with the bounce held: not comparable across rounds
+      Lighting next = refine_spots(lights, estimate, despiked ? *despiked : samples, space, renderer, {}, 0, held_dbar, settings);
+      moved = !same_geometry(next, lights);
+      lights = std::move(next);
+    }
+    dbar = best_dbar;
+    if (bounce) *bounce = std::move(best_bounce);
+    return best;
+  }
+
+  /// D̄ of lights with responses `phi` (n of them), intensities by NNLS
+  /// (`intensities` gets them); `residual`: Ψ − the fit.
+  double fit(const std::vector<Rgb>& phi, size_t n, std::vector<Rgb>* residual = nullptr, std::vector<Rgb>* intensities = nullptr) const {
+    const size_t m = samples.size();
+    std::vector<Rgb> fitted = fit_intensities(phi, n, samples);
+    const std::vector<Rgb> lit = combine(phi, fitted, m);
+    if (intensities) *intensities = std::move(fitted);
+    if (residual) {
+      residual->resize(m);
+      for (size_t i = 0; i < m; ++i) (*residual)[i] = samples.target[i] - lit[i];
+    }
+    return normalized_difference(lit, samples);
+  }
+};
+
+void show(const char* what, const Lighting& spots, double dbar) {
+  static const bool debug = std::getenv("HILIGHT_SPOT_DEBUG");
+  if (!debug) return;
+  static auto t0 = std::chrono::steady_clock::now();
+  std::fprintf(stderr, "%s: D̄ %.4f at %.2f s\n", what, dbar, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  for (const auto& l : spots)
+    std::fprintf(stderr, "  (%.3f %.3f %.3f) dir (%.3f %.3f %.3f) cutoff %.2f falloff %.2f I %.2f\n", l.position.x, l.position.y,
+                 l.position.z, l.direction.x, l.direction.y, l.direction.z, l.cutoff_deg, l.falloff_deg, l.intensity.g);
+}
+
+/// The best of the screening's candidates for what `base` (responses
+/// `base_phi`, with bounce) leaves, each refined with the base held; `dbar`
+/// its D̄ beside them. Nothing when the screening has no candidate.
+/// `spots` without spot `s`; `kept_bounce` gets the others' bounce.
+Lighting without(const Lighting& spots, const std::vector<Rgb>& bounce, size_t s, size_t m, std::vector<Rgb>& kept_bounce) {
+  Lighting kept = spots;
+  kept.erase(kept.begin() + std::ptrdiff_t(s));
+  kept_bounce = bounce;
+  kept_bounce.erase(kept_bounce.begin() + std::ptrdiff_t(s * m), kept_bounce.begin() + std::ptrdiff_t((s + 1) * m));
+  return kept;
+}
+
+std::optional<Light> best_candidate(const Model& model, const SpotScreen& screen, const std::vector<Rgb>& base_phi, size_t base_count,
+                                    double& dbar) {
+  std::vector<Rgb> residual;
+  model.fit(base_phi, base_count, &residual);
+  std::optional<Light> best;
+  dbar = 1e300;
+  for (const Light& start : screen.candidates(residual, kStarts)) {
+    double d = 1.0;
+    const Lighting one = model.refine({start}, base_phi, base_count, kCandidate, d);
+    if (std::getenv("HILIGHT_SPOT_DEBUG")) std::fprintf(stderr, "   start (%.2f %.2f %.2f) dir (%.2f %.2f %.2f) c %.1f -> (%.2f %.2f %.2f) c %.1f f %.1f: %.4f\n", start.position.x, start.position.y, start.position.z, start.direction.x, start.direction.y, start.direction.z, start.cutoff_deg, one[0].position.x, one[0].position.y, one[0].position.z, one[0].cutoff_deg, one[0].falloff_deg, d);
+    if (d < dbar) dbar = d, best = one[0];
+  }
+  return best;
+}
+
+/// Each of `spots` in turn replaced by the best candidate for what the
+/// others leave, all then refined together; kept where D̄ falls.
+void replace_each(const Model& model, const SpotScreen& screen, Lighting& spots, std::vector<Rgb>& bounce, double& dbar,
+                  double visible_dbar) {
+  for (size_t s = 0; s < spots.size() && dbar > visible_dbar; ++s) {
+    std::vector<Rgb> trial_bounce;
+    Lighting trial = without(spots, bounce, s, model.samples.size(), trial_bounce);
+    double d = 1.0;
+    const auto other = best_candidate(model, screen, model.responses(trial, trial_bounce), trial.size(), d);
+    if (!other) continue;
+    trial.push_back(*other);
+    trial = model.refine(std::move(trial), {}, 0, kJoint, d, &trial_bounce);
+    if (!(d < dbar)) continue;
+    spots = std::move(trial), bounce = std::move(trial_bounce), dbar = d;
+    show("swapped", spots, dbar);
+  }
+}
+
+/// `spots` with spot `s` in two: the best pair among the screening's
+/// candidates for what the others leave, each refined alone and then every
+/// pair together with the others held; then all refined together. A spot
+/// over two overlapping pools is the best single cone for both, so the two
+/// are looked for together. `dbar` gets the result's D̄.
+Lighting split(const Model& model, const SpotScreen& screen, const Lighting& spots, const std::vector<Rgb>& bounce, size_t s,
+               std::vector<Rgb>& split_bounce, double& dbar) {
+  Lighting others = without(spots, bounce, s, model.samples.size(), split_bounce);
+  const std::vector<Rgb> base = model.responses(others, split_bounce);
+  std::vector<Rgb> residual;
+  model.fit(base, others.size(), &residual);
+  Lighting alone;
+  for (const Light& start : screen.candidates(residual, kStarts)) {
+    double d = 1.0;
+    alone.push_back(model.refine({start}, base, others.size(), kCandidate, d)[0]);
+  }
+  Lighting best;
+  double best_dbar = 1e300;
+  for (size_t i = 0; i < alone.size(); ++i)
+    for (size_t j = i + 1; j < alone.size(); ++j) {
+      double d = 1.0;
+      const Lighting pair = model.refine({alone[i], alone[j]}, base, others.size(), kPair, d);
+      if (d < best_dbar) best_dbar = d, best = pair;
+    }
+  if (best.empty()) return {};
+  others.insert(others.end(), best.begin(), best.end());
+  return model.refine(std::move(others), {}, 0, kJoint, dbar, &split_bounce);
+}
+
+/// Each spot at least kWideSpotDeg wide tried as a point light, all then
+/// settled together; kept unless the cone improves D̄ by ε_impro (eq. 9:
+/// the simpler light wins a near tie). Spots are proposed from cones, so a
+/// bare lamp arrives as the widest cone, which cuts what the lamp lights
+/// above its rim; the spots beside it bend to make up for that (the curved
+/// models with the bounce: their spot 10 cm low, D̄ 2.9%). Only once the
+/// set is built: while it is, a wide cone may be the first spot over two
+/// pools, and a point light, once there, is never a spot again.
+void wide_spots_as_points(const Model& model, double eps_impro, Lighting& spots, std::vector<Rgb>& bounce, double& dbar) {
+  for (size_t j = 0; j < spots.size(); ++j) {
+    if (spots[j].type != LightType::Spot || spots[j].cutoff_deg < kWideSpotDeg) continue;
+    Lighting trial = spots;
+    trial[j] = Light::point(spots[j].position, spots[j].intensity);
+    std::vector<Rgb> trial_bounce;
+    double d = 1.0;
+    trial = model.settle(std::move(trial), d, &trial_bounce);
+    if (!(d <= eps_impro * dbar)) continue;
+    spots = std::move(trial), bounce = std::move(trial_bounce), dbar = d;
+    show("as a point", spots, dbar);
+  }
+}
+
+} // namespace
+
+Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference,
+                       const SpotProposalSettings& settings, double& dbar) {
+  const size_t m = samples.size();
+  const Model model{samples, space, renderer, reference};
+  show("start", {}, 1.0);
+  const SpotScreen screen(samples, space, renderer);
+  show("screen", {}, 1.0);
+  Lighting spots;
+  std::vector<Rgb> bounce;
+  dbar = 1.0;  // no light: all of Ψ is missing
+  // One spot a round for what the others leave (eq. 9 forward, as the point
+  // lights' add_missing_lights): each of the screening's candidates refined
+  // with the others held, the best kept, then all refined together.
+  while (spots.size() < settings.max_spots && dbar > settings.visible_dbar) {
+    double one_dbar = 1.0;
+    const auto best = best_candidate(model, screen, spots.empty() ? std::vector<Rgb>{} : model.responses(spots, bounce), spots.size(), one_dbar);
+    if (!best) break;
+    show("candidates", {}, one_dbar);
+    Lighting more = spots;
+    more.push_back(*best);
+    std::vector<Rgb> more_bounce;
+    double more_dbar = one_dbar;
+    more = model.refine(std::move(more), {}, 0, kJoint, more_dbar, &more_bounce);
+    show("added", more, more_dbar);
+    bool pays = dbar >= settings.eps_impro * more_dbar || dbar - more_dbar >= settings.weak_threshold;
+    if (!pays && more.size() > 1) {
+      // Re-placed given the others, each spot may do better: the first spot
+      // over pools that overlap is one wide cone; once others hold some of
+      // them, its best place is one pool. Then the spot more may pay.
+      replace_each(model, screen, more, more_bounce, more_dbar, settings.visible_dbar);
+      pays = dbar >= settings.eps_impro * more_dbar || dbar - more_dbar >= settings.weak_threshold;
+    }
+    if (!pays) break;
+    spots = std::move(more), bounce = std::move(more_bounce), dbar = more_dbar;
+  }
+  if (spots.empty()) return spots;
+  // Poorly explained still: a spot may hold two pools that overlap. Each
+  // spot tried as two, kept if the spot more pays (eq. 9).
+  for (size_t s = 0; dbar > settings.split_dbar && s < spots.size() && spots.size() < settings.max_spots; ++s) {
+    std::vector<Rgb> split_bounce;
+    double split_dbar = 1.0;
+    Lighting two = split(model, screen, spots, bounce, s, split_bounce, split_dbar);
+    show("split", two, split_dbar);
+    if (two.empty() || !(dbar >= settings.eps_impro * split_dbar || dbar - split_dbar >= settings.weak_threshold)) continue;
+    spots = std::move(two), bounce = std::move(split_bounce), dbar = split_dbar;
+  }
+  // The set is built: every edge free, plain least squares.
+  spots = model.refine(std::move(spots), {}, 0, kFree, dbar, &bounce);
+  // From here on each D̄ is with the bounce re-taken where the lights stand,
+  // as the settling's is (the rounds' own is with the bounce they held).
+  dbar = model.dbar_with(spots, bounce);
+  show("freed", spots, dbar);
+  wide_spots_as_points(model, settings.eps_impro, spots, bounce, dbar);
+  // Eq. 9 backwards: the spot whose loss the others bear best (intensities
+  // re-fitted) goes if, the others refined without it, the loss is less
+  // than ε_impro (and less than ε_w of ‖Ψ‖), or invisible.
+  while (spots.size() > 1) {
+    const std::vector<Rgb> phi = model.responses(spots, bounce);
+    size_t weakest = 0;
+    double least = 1e300;
+    for (size_t s = 0; s < spots.size(); ++s) {
+      std::vector<Rgb> without;
+      for (size_t j = 0; j < spots.size(); ++j)
+        if (j != s) without.insert(without.end(), phi.begin() + std::ptrdiff_t(j * m), phi.begin() + std::ptrdiff_t((j + 1) * m));
+      if (const double d = model.fit(without, spots.size() - 1); d < least) least = d, weakest = s;
+    }
+    Lighting fewer = spots;
+    fewer.erase(fewer.begin() + std::ptrdiff_t(weakest));
+    std::vector<Rgb> fewer_bounce;
+    double fewer_dbar = least;
+    fewer = model.refine(std::move(fewer), {}, 0, kFree, fewer_dbar, &fewer_bounce);
+    fewer_dbar = model.dbar_with(fewer, fewer_bounce);
+    const bool pays = fewer_dbar >= settings.eps_impro * dbar || fewer_dbar - dbar >= settings.weak_threshold;
+    if (pays && fewer_dbar > settings.visible_dbar) break;
+    spots = std::move(fewer), bounce = std::move(fewer_bounce), dbar = fewer_dbar;
+    show("pruned", spots, dbar);
+  }
+  // The last word: past the slopes' stop, a simplex over every light's
+  // geometry (spot_refinement.hpp).
+  spots = model.settle(std::move(spots), dbar, &bounce, true);
+  show("settled", spots, dbar);
+  return spots;
+}
+
+Lighting settle_lights(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference, Lighting lights,
+                       double& dbar) {
+  const Model model{samples, space, renderer, reference};
+  return model.settle(std::move(lights), dbar, nullptr, true);
+}
+
+} // namespace hilight
