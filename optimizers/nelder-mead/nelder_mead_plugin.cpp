@@ -6,8 +6,8 @@
 // | max_evaluations  | 3000    | objective evaluations per cut                    |
 // | restarts         | 1       | fresh simplices around the best point afterwards |
 #include "hilight/error.hpp"
-#include "hilight/pipeline/light_parameters.hpp"
-#include "hilight/pipeline/simplex.hpp"
+#include "hilight/solve/light_parameters.hpp"
+#include "hilight/solve/simplex.hpp"
 #include "hilight/plugin.hpp"
 #include "hilight/version.hpp"
 #include "hilight/registry.hpp"

@@ -14,8 +14,8 @@
 // |                   |         | (4x for a spotlight: 6 parameters, flat valley)|
 // | tolerance         | 1e-4    | relative improvement below which sweeps stop    |
 #include "hilight/error.hpp"
-#include "hilight/pipeline/light_parameters.hpp"
-#include "hilight/pipeline/simplex.hpp"
+#include "hilight/solve/light_parameters.hpp"
+#include "hilight/solve/simplex.hpp"
 #include "hilight/plugin.hpp"
 #include "hilight/version.hpp"
 #include "hilight/registry.hpp"
