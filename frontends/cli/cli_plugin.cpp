@@ -18,7 +18,6 @@ public:
             {"target", "make illuminance criteria (a lux work plane, walls, ceiling) to solve for"},
             {"luminaire", "read an IES LM-63 or EULUMDAT file: its flux, peak, symmetry (JSON)"},
             {"plugins", "list plugin modules, their versions and availability"},
-            {"bench", "measure renderer throughput (machine-readable JSON lines)"},
             {"cache", "list or clear the light caches kept between solves"}};
   }
   int run(const std::string& command, const std::vector<std::string>& args, Registry& registry) override {
@@ -29,7 +28,6 @@ public:
     if (command == "luminaire") return run_luminaire(args);
     if (command == "target") return run_target(args);
     if (command == "plugins") return run_plugins(args, registry);
-    if (command == "bench") return run_bench(args, registry);
     if (command == "cache") return run_cache(args);
     return 2;
   }
@@ -42,5 +40,5 @@ void register_cli(PluginRegistrar& registrar) {
 } // namespace
 } // namespace hilight::cli
 
-HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "command-line interface: info, render, solve, export, target, luminaire, plugins, bench, cache",
+HILIGHT_PLUGIN("frontend", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION, "command-line interface: info, render, solve, export, target, luminaire, plugins, cache",
                hilight::cli::register_cli)

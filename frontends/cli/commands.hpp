@@ -12,11 +12,6 @@ int run_render(const std::vector<std::string>& args, Registry& registry);
 int run_plugins(const std::vector<std::string>& args, Registry& registry);
 int run_solve(const std::vector<std::string>& args, Registry& registry);
 int run_export(const std::vector<std::string>& args, Registry& registry);
-int run_bench(const std::vector<std::string>& args, Registry& registry);
 int run_luminaire(const std::vector<std::string>& args);
 int run_target(const std::vector<std::string>& args);
-int run_bench_solve(const std::vector<std::string>& args, Registry& registry);
-int run_bench_cache(const std::vector<std::string>& args, Registry& registry);
-int run_bench_lux(const std::vector<std::string>& args, Registry& registry);
-int run_bench_renderers(const std::vector<std::string>& args, Registry& registry);
 } // namespace hilight::cli

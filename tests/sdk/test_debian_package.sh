@@ -45,7 +45,7 @@ hl=$root/usr/bin/hilight
 grep -q "^hilight $version " <<<"$("$hl" --version)" || fail "hilight --version is not $version"
 listing=$(env -u HILIGHT_PLUGIN_PATH HOME="$work/home" "$hl" plugins)
 echo "$listing"
-for plugin in "renderer +embree" "frontend +cli" "optimizer +varpro" "sampler +importance" "cache +grid"; do
+for plugin in "renderer +embree" "frontend +cli" "frontend +bench" "optimizer +varpro" "sampler +importance" "cache +grid"; do
   echo "$listing" | grep -E "^$plugin +$version +ok" >/dev/null || fail "the unpacked hilight does not load $plugin $version"
 done
 echo "$listing" | grep -F "from $root/usr/lib/hilight/hilight-renderer-embree.so (installed)" >/dev/null ||

@@ -1,7 +1,7 @@
 #pragma once
 /// Progress of long work (issue 36). The library says what it is doing and
 /// how far along it is; a frontend shows it: the CLI a bar with the time
-/// left on a terminal, or lines with --progress (frontends/cli/progress_display.hpp);
+/// left on a terminal, or lines with --progress (frontends/common/progress_display.hpp);
 /// the painter can show the same in its window.
 ///
 /// Library code opens a ProgressStage around a piece of long work and

@@ -2,8 +2,7 @@
 // scenes: build time, traced lights, size on disk, and the bounce they give
 // against the exact bounce at seeded random light positions (every vertex).
 // JSON lines on stdout, one per scene and cache, all in one process.
-#include "cli_common.hpp"
-#include "commands.hpp"
+#include "bench_commands.hpp"
 #include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/light_bounds.hpp"
 #include "hilight/light_cache_file.hpp"
@@ -18,7 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-namespace hilight::cli {
+namespace hilight::bench {
 
 namespace {
 
@@ -164,4 +163,4 @@ int run_bench_cache(const std::vector<std::string>& args, Registry& registry) {
   return 0;
 }
 
-} // namespace hilight::cli
+} // namespace hilight::bench

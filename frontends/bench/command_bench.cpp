@@ -1,7 +1,6 @@
 // hilight bench: renderer throughput as JSON lines on stdout (one object per
 // figure set), so runs can be compared by scripts. Medians over --repeat runs.
-#include "cli_common.hpp"
-#include "commands.hpp"
+#include "bench_commands.hpp"
 #include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
@@ -10,7 +9,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-namespace hilight::cli {
+namespace hilight::bench {
 
 namespace {
 
@@ -150,4 +149,4 @@ int run_bench(const std::vector<std::string>& args, Registry& registry) {
   return 0;
 }
 
-} // namespace hilight::cli
+} // namespace hilight::bench

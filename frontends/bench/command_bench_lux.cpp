@@ -1,7 +1,6 @@
 // hilight bench lux: the illuminance design on an open-plan office (issue
 // 14's 10 m × 20 m, 500 lx, U0 0.6 work plane), JSON lines on stdout.
-#include "cli_common.hpp"
-#include "commands.hpp"
+#include "bench_commands.hpp"
 #include "hilight/io/photometry_io.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/solve/illuminance_design.hpp"
@@ -14,7 +13,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-namespace hilight::cli {
+namespace hilight::bench {
 
 namespace {
 
@@ -155,4 +154,4 @@ int run_bench_lux(const std::vector<std::string>& args, Registry& registry) {
   return 0;
 }
 
-} // namespace hilight::cli
+} // namespace hilight::bench

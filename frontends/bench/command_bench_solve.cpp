@@ -2,8 +2,7 @@
 // 4 known lights) for each optimizer: cold start (light cache built), warm
 // start (cache on disk), fine-tune after a small edit. JSON lines on stdout;
 // medians over --repeat runs, all in one process so the figures compare.
-#include "cli_common.hpp"
-#include "commands.hpp"
+#include "bench_commands.hpp"
 #include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/light_cache_store.hpp"
@@ -22,7 +21,7 @@
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
 
-namespace hilight::cli {
+namespace hilight::bench {
 
 namespace {
 
@@ -226,4 +225,4 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   return 0;
 }
 
-} // namespace hilight::cli
+} // namespace hilight::bench

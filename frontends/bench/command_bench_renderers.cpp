@@ -3,8 +3,7 @@
 // configuration (4 lights, every vertex) and to compute φ for a batch of
 // unit lights (default 1,000), plus each renderer's own stage figures
 // (ism-vulkan: GPU seconds per stage from timestamps). JSON lines on stdout.
-#include "cli_common.hpp"
-#include "commands.hpp"
+#include "bench_commands.hpp"
 #include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
@@ -14,7 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-namespace hilight::cli {
+namespace hilight::bench {
 
 namespace {
 
@@ -90,4 +89,4 @@ int run_bench_renderers(const std::vector<std::string>& args, Registry& registry
   return 0;
 }
 
-} // namespace hilight::cli
+} // namespace hilight::bench
