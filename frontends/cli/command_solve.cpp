@@ -1,5 +1,6 @@
 // hilight solve SCENE --target T.ply -o LIGHTS.json: the inverse solve.
 #include "cli_common.hpp"
+#include "solve_options.hpp"
 #include "command_solve_criteria.hpp"
 #include "commands.hpp"
 #include "hilight/error.hpp"
@@ -101,14 +102,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
                "  hilight solve SCENE --target desks.json --luminaire panel.ies -o lights.json   (lux criteria)",
                "solve");
   app.footer(exit_codes_help(true));
-  std::string scene_path, target_path, output, report_path, initial_path, mode = "solve", hints_path, cache_dir;
-  std::vector<std::string> place_rules;
-  SolveSpec spec;
-  bool no_cache = false, quiet = false;
+  std::string scene_path, target_path, output, report_path, initial_path, mode = "solve", hints_path;
+  SolveOptions solve;  // the options hilight paint shares (frontends/common/solve_options.hpp)
+  bool quiet = false;
   double max_dbar = -1;
-  unsigned long long seed = 1;
-  SolveSettings& s = spec.settings;
-  RendererOptions ropts;
+  SolveSettings& s = solve.spec.settings;
+  RendererOptions& ropts = solve.renderer;
   CriteriaSolve criteria;
   std::string mount;
   float mount_offset = -1.f;
@@ -128,10 +127,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("-o,--output", output, "where to write the lights: .json (hilight's lights file) or .gltf/.glb (scene and lights, for Blender)")
       ->required();
   app.add_option("--lights", s.fixed_count, "how many lights (default: the solve decides)")->check(CLI::Range(1, 10000));
-  app.add_option("--place", place_rules,
-                 "where lights may go (repeatable): ceiling[:OFFSET] (hanging OFFSET below the ceiling, default 0.2), "
-                 "height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1 (inside one of the boxes), exclude:X0,Y0,Z0,X1,Y1,Z1, "
-                 "region:K (in room K, as hilight info numbers them), not-region:K, count:MIN:MAX or count:N (how many lights)");
+  solve.add_placement(app);
   app.add_option("--luminaire", luminaire_path,
                  "every light is this luminaire (an .ies or .ldt file), aimed down: the solve finds how many, where, and their dimming");
   app.add_option("--area-light", area_light,
@@ -157,15 +153,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--max-dbar", max_dbar, "fail (exit 3, lights still written) when the fit's error D̄ is above this, e.g. 0.015")
       ->check(CLI::Range(0.0, 1e9));
   add_scene_options(app, scene_options, kSolveAdvanced);
-  ropts.add_to(app, kSolveAdvanced);
+  solve.add_renderer(app, kSolveAdvanced);
   app.add_flag("-q,--quiet", quiet, "no progress or summary on stderr (warnings stay)");
   progress.add_to(app);
 
   // Advanced: the paper's parameters, the plugins and their tuning.
   app.add_option("--spot-hints", hints_path, "lights JSON of spotlights wanted (position, direction, cutoff; intensity ignored)")->group(kSolveAdvanced);
-  app.add_flag("--propose-spots,!--no-propose-spots", s.propose_spots,
-               "when point lights leave D̄ above 5%, look for spotlights without --spot-hints (default: on)")
-      ->group(kSolveAdvanced);
   app.add_option("--luminaire-spin", luminaire_spin, "turn the luminaire's C0 plane about its aim, degrees")
       ->check(CLI::Range(-360.0, 360.0))
       ->group(kSolveAdvanced);
@@ -185,50 +178,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       ->check(CLI::Range(1e-4, 1e6))
       ->group(kSolveAdvanced);
   add_criteria_options(app, criteria, "Lux criteria (a .json target)");
-  app.add_option("--evaluation-points", s.evaluation_points,
-                 "D̄ is measured on every target point up to this many, else on this many evenly spaced ones (an estimate; 0: every point)")
-      ->capture_default_str()
-      ->group(kSolveAdvanced);
-  app.add_option("--samples", s.samples, "surface samples used by the solve (default: target points / 14, within 3000-10000)")
-      ->check(CLI::Range(10, 10000000))
-      ->group(kSolveAdvanced);
-  app.add_flag("--no-residual-samples", [&](int64_t) { s.residual_samples = false; },
-               "no second polish with the worst-explained target points added as samples")
-      ->group(kSolveAdvanced);
-  app.add_option("--n-cut", s.n_cut, "N_cut: cuts refined")->check(CLI::Range(1, 1000))->capture_default_str()->group(kSolveAdvanced);
-  app.add_option("--eps-opt", s.eps_opt, "ε_opt: refine only cuts with D̄ below")->check(CLI::Range(0.0, 10.0))->capture_default_str()->group(kSolveAdvanced);
-  app.add_option("--eps-impro", s.eps_impro, "ε_impro: improvement ratio that justifies one more light")
-      ->check(CLI::Range(1.0, 1000.0))
-      ->capture_default_str()
-      ->group(kSolveAdvanced);
-  app.add_option("--weak-threshold", s.seeding.weak_threshold, "ε_w: weak-light deletion threshold")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str()
-      ->group(kSolveAdvanced);
-  app.add_option("--seed-cells", s.seeding.coarse_cells, "seeding cells along the longest axis")->check(CLI::Range(1, 16))->capture_default_str()->group(kSolveAdvanced);
-  app.add_option("--seed-iterations", s.seeding.iterations, "seeding levels")->check(CLI::Range(1, 6))->capture_default_str()->group(kSolveAdvanced);
-  app.add_option("--open-space-dbar", s.open_space_dbar,
-                 "when lights inside the scene's bounds leave D̄ above this, look again beyond its open sides (0: never)")
-      ->check(CLI::Range(0.0, 1e9))
-      ->capture_default_str()
-      ->group(kSolveAdvanced);
-  app.add_option("--optimizer", spec.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str()->group(kSolveAdvanced);
-  app.add_option("--opt", spec.optimizer_settings, "optimizer setting key=value (repeatable)")->group(kSolveAdvanced);
-  app.add_option("--sampler", spec.sampler, "surface sampling plugin (importance, uniform)")->capture_default_str()->group(kSolveAdvanced);
-  app.add_option("--seed", seed, "seed of sampling and of the renderer's sample streams")->capture_default_str()->group(kSolveAdvanced);
-  app.add_option("--cache", spec.cache, "light cache plugin (grid, adaptive) or none: every response from the renderer")
-      ->capture_default_str()
-      ->group(kSolveAdvanced);
-  app.add_option("--cache-setting", spec.cache_settings, "light cache setting key=value (repeatable; grid: cells, adaptive: cells depth tolerance nodes)")
-      ->group(kSolveAdvanced);
-  app.add_option_function<int>("--cache-cells", [&](int cells) { spec.cache_settings.push_back("cells=" + std::to_string(cells)); },
-                               "the same as --cache-setting cells=N")
-      ->group(kSolveAdvanced);
-  app.add_flag("--no-cache", no_cache, "the same as --cache none")->group(kSolveAdvanced);
-  app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)")->group(kSolveAdvanced);
+  solve.add_paper_parameters(app, kSolveAdvanced);
+  solve.add_plugins(app, kSolveAdvanced);
   if (auto code = parse_arguments(app, args)) return *code;
 
-  for (const auto& rule : place_rules) s.placement.add(rule);
+  s.placement = solve.placement();
   if (mount_offset >= 0.f && mount.empty()) throw InputError("--offset needs --mount ceiling");
   if (!mount.empty()) s.placement.add(mount_offset >= 0.f ? "ceiling:" + std::to_string(mount_offset) : "ceiling");
   if (mode != "solve" && initial_path.empty()) throw InputError("--mode " + mode + " needs --initial LIGHTS.json");
@@ -308,10 +262,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   };
   Lighting initial = initial_path.empty() ? Lighting{} : read_lights_file(initial_path, units);
   if (!hints_path.empty()) s.spot_hints = read_hints(nullptr);
-  if (no_cache) spec.cache = PluginDefaults::no_cache;
-  spec.renderer = ropts.name;
-  spec.renderer_settings = ropts.assignments(&registry);
-  SolveSession::check_names(registry, spec);  // unknown plugins fail before the scene loads
+  SolveSession::check_names(registry, solve.to_spec(registry));  // unknown plugins fail before the scene loads
 
   progress.start(quiet);
   set_thread_limit(ropts.threads);
@@ -327,14 +278,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   stage.emplace("reading the target");
   Target target = read_target(target_path, *scene, *rays);
   target_from_units(target, units, quantity);
-  s.seed = seed;
   // Settling renders the direct light hundreds of times: milliseconds each
   // where the renderer says so (Embree), a POV-Ray run or a GPU submission
   // each with the others. Direct light needs none (the polish's slopes
   // through it are clean: the lamps to 10⁻⁵ of the size after a turn).
   s.settle_fine_tune = ropts.bounce_count() != 0 && registry.renderer_traits(ropts.name).cheap_direct;
-  s.cache_dir = spec.cache == PluginDefaults::no_cache ? std::filesystem::path() : (cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir));
-  s.cache_cap_bytes = default_cache_cap_bytes();
+  const SolveSpec spec = solve.to_spec(registry);
 
   stage.emplace("preparing the renderers");
   SolveSession session(registry, spec, scene, rays);

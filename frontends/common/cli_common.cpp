@@ -26,7 +26,7 @@ const CLI::Validator BounceCount = bounce_count_validator();
 
 void RendererOptions::add_to(CLI::App& app, const std::string& tuning_group) {
   app.add_option("--bounces", bounces,
-                 "how many times light bounces off surfaces: all (as in reality, the default), 0 (direct light only), "
+                 "how many times light bounces off surfaces: all (as in reality), 0 (direct light only), "
                  "1 (the first bounce), or a count up to 1000")
       ->check(BounceCount)
       ->capture_default_str();

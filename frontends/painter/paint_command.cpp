@@ -3,6 +3,7 @@
 #include "paint_command.hpp"
 
 #include "cli_arguments.hpp"
+#include "solve_options.hpp"
 
 #include "hilight/error.hpp"
 #include "hilight/light_cache_store.hpp"
@@ -45,42 +46,21 @@ void check_image_path(const std::string& option, const std::filesystem::path& pa
 int run_paint(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Paint the illumination you want onto a scene; hilight finds the lights", "paint");
   PaintOptions o;
-  std::string scene, target, lights, script, screenshot, window_screenshot, record, timings, size = "1280x800", cache_dir;
-  int threads = 0, bounce_samples = 0;
-  std::string bounces = "1";
-  bool no_auto = false, no_cache = false;
+  std::string scene, target, lights, script, screenshot, window_screenshot, record, timings, size = "1280x800";
+  // The solve's options as hilight solve takes them (frontends/common/solve_options.hpp),
+  // with the painter's defaults: one bounce, and D̄ (reported only after a
+  // fine-tune) on fewer points, which costs less of the stroke's latency.
+  cli::SolveOptions solve;
+  solve.renderer.bounces = "1";
+  solve.spec.settings.evaluation_points = 256;
+  bool no_auto = false;
   app.add_option("scene", scene, "scene file (any format assimp reads)")->required();
   app.add_option("--max-edge", o.max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::Range(0.f, 1e30f));
   app.add_option("--target", target, "target PLY or glTF with vertex colours to start from (as `hilight solve --target` reads)");
   app.add_option("--lights", lights, "lights JSON or glTF (KHR_lights_punctual) to start from");
-  app.add_option("--renderer", o.job.renderer, "renderer plugin for the view and the solve")->capture_default_str();
-  app.add_option("--bounces", bounces, "diffuse bounces: all (every bounce), 0 (direct light only), 1, or a count up to 1000")
-      ->check(bounce_count_validator())
-      ->capture_default_str();
-  app.add_option("--bounce-samples", bounce_samples, "gather rays per point for the bounce (renderer default if 0)")
-      ->check(CLI::Range(0, 4096));
-  app.add_option("--set", o.job.renderer_settings, "renderer setting key=value (repeatable)");
-  app.add_option("--optimizer", o.job.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str();
-  app.add_option("--opt", o.job.optimizer_settings, "optimizer setting key=value (repeatable)");
-  app.add_option("--sampler", o.job.sampler, "surface sampling plugin")->capture_default_str();
-  app.add_option("--samples", o.job.settings.samples, "surface samples used by the solve (default: target points / 14, within 3000-10000)")
-      ->check(CLI::Range(10, 10000000));
-  // D̄ is only reported after a fine-tune; on fewer points it costs less of the stroke's latency.
-  o.job.settings.evaluation_points = 256;
-  app.add_option("--evaluation-points", o.job.settings.evaluation_points, "target points D-bar is reported on (0: all)")
-      ->check(CLI::Range(0, 100000000))
-      ->capture_default_str();
-  std::vector<std::string> place_rules;
-  app.add_option("--place", place_rules,
-                 "where lights may stand (repeatable): ceiling[:OFFSET], height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1, "
-                 "exclude:X0,Y0,Z0,X1,Y1,Z1 (as hilight solve)");
-  app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)");
-  app.add_option("--cache", o.job.cache, "light cache plugin (grid, adaptive) or none: every response from the renderer")
-      ->capture_default_str();
-  app.add_option("--cache-setting", o.job.cache_settings, "light cache setting key=value (repeatable, as hilight solve)");
-  app.add_option_function<int>("--cache-cells", [&](int cells) { o.job.cache_settings.push_back("cells=" + std::to_string(cells)); },
-                               "the same as --cache-setting cells=N");
-  app.add_flag("--no-cache", no_cache, "the same as --cache none");
+  solve.add_renderer(app);
+  solve.add_plugins(app);
+  solve.add_placement(app);
   app.add_option("--script", script, "session JSON to replay ({\"actions\": [...]}, docs/painter.md)");
   app.add_option("--screenshot", screenshot, "write the final frame (after the script) as PNG");
   app.add_option("--window-screenshot", window_screenshot, "the final frame with the panels, as PNG (for bug reports)");
@@ -94,7 +74,6 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--timings", timings, "write frame and stroke-to-fine-tune times as JSON ('-': stdout)");
   app.add_flag("--bench", o.bench, "after the script: timed orbit, strokes and fine-tunes (use with --timings)");
   app.add_flag("--no-auto-fine-tune", no_auto, "do not fine-tune the lights after each brush stroke");
-  app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   if (auto code = parse_arguments(app, args)) return *code;
   if (!std::isfinite(o.max_edge) || o.max_edge < 0.f) throw InputError("paint: --max-edge must be a finite number >= 0");
   parse_size(size, o.width, o.height);
@@ -107,15 +86,11 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   o.record = record;
   o.timings = timings;
   o.auto_fine_tune = !no_auto;
-  o.job.renderer_settings.push_back("bounces=" + bounces);
-  if (bounce_samples > 0) o.job.renderer_settings.push_back("bounce_samples=" + std::to_string(bounce_samples));
-  for (const auto& rule : place_rules) o.job.settings.placement.add(rule);
-  if (no_cache) o.job.cache = PluginDefaults::no_cache;
-  o.job.settings.cache_dir = o.job.cache == PluginDefaults::no_cache ? std::filesystem::path() : cache_dir.empty() ? default_cache_dir() : std::filesystem::path(cache_dir);
-  o.job.settings.cache_cap_bytes = default_cache_cap_bytes();
+  o.job = solve.to_spec(registry);
+  o.job.settings.placement = solve.placement();
   if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty() && window_screenshot.empty())
     throw InputError("paint: --exit without --script, --screenshot or --bench would do nothing");
-  set_thread_limit(threads);
+  set_thread_limit(solve.renderer.threads);
 
   // Output paths before anything runs: a script's save_* must not have
   // written files when the run then fails on a bad --screenshot.

@@ -1,0 +1,92 @@
+#include "solve_options.hpp"
+
+#include "hilight/light_cache_store.hpp"
+
+namespace hilight::cli {
+
+namespace {
+
+/// Puts each of `options` in `group` (none when it is empty).
+void group_all(std::initializer_list<CLI::Option*> options, const std::string& group) {
+  if (group.empty()) return;
+  for (CLI::Option* o : options) o->group(group);
+}
+
+} // namespace
+
+void SolveOptions::add_placement(CLI::App& app) {
+  app.add_option("--place", place,
+                 "where lights may go (repeatable): ceiling[:OFFSET] (hanging OFFSET below the ceiling, default 0.2), "
+                 "height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1 (inside one of the boxes), exclude:X0,Y0,Z0,X1,Y1,Z1, "
+                 "region:K (in room K, as hilight info numbers them), not-region:K, count:MIN:MAX or count:N (how many lights)");
+}
+
+void SolveOptions::add_renderer(CLI::App& app, const std::string& tuning_group) { renderer.add_to(app, tuning_group); }
+
+void SolveOptions::add_plugins(CLI::App& app, const std::string& group) {
+  SolveSettings& s = spec.settings;
+  group_all(
+      {app.add_option("--evaluation-points", s.evaluation_points,
+                      "D̄ is measured on every target point up to this many, else on this many evenly spaced ones (an estimate; 0: every point)")
+           ->check(CLI::Range(size_t(0), size_t(100000000)))
+           ->capture_default_str(),
+       app.add_option("--samples", s.samples, "surface samples used by the solve (default: target points / 14, within 3000-10000)")
+           ->check(CLI::Range(10, 10000000)),
+       app.add_option("--optimizer", spec.optimizer, "refinement plugin (varpro, nelder-mead)")->capture_default_str(),
+       app.add_option("--opt", spec.optimizer_settings, "optimizer setting key=value (repeatable)"),
+       app.add_option("--sampler", spec.sampler, "surface sampling plugin (importance, uniform)")->capture_default_str(),
+       app.add_option("--cache", spec.cache, "light cache plugin (grid, adaptive) or none: every response from the renderer")
+           ->capture_default_str(),
+       app.add_option("--cache-setting", spec.cache_settings,
+                      "light cache setting key=value (repeatable; grid: cells, adaptive: cells depth tolerance nodes)"),
+       app.add_option_function<int>("--cache-cells", [this](int cells) { spec.cache_settings.push_back("cells=" + std::to_string(cells)); },
+                                    "the same as --cache-setting cells=N"),
+       app.add_flag("--no-cache", no_cache, "the same as --cache none"),
+       app.add_option("--cache-dir", cache_dir, "where the light cache is kept (default: ~/.cache/hilight)")},
+      group);
+}
+
+void SolveOptions::add_paper_parameters(CLI::App& app, const std::string& group) {
+  SolveSettings& s = spec.settings;
+  group_all(
+      {app.add_flag("--propose-spots,!--no-propose-spots", s.propose_spots,
+                    "when point lights leave D̄ above 5%, look for spotlights without --spot-hints (default: on)"),
+       app.add_flag("--no-residual-samples", [&s](int64_t) { s.residual_samples = false; },
+                    "no second polish with the worst-explained target points added as samples"),
+       app.add_option("--n-cut", s.n_cut, "N_cut: cuts refined")->check(CLI::Range(1, 1000))->capture_default_str(),
+       app.add_option("--eps-opt", s.eps_opt, "ε_opt: refine only cuts with D̄ below")->check(CLI::Range(0.0, 10.0))->capture_default_str(),
+       app.add_option("--eps-impro", s.eps_impro, "ε_impro: improvement ratio that justifies one more light")
+           ->check(CLI::Range(1.0, 1000.0))
+           ->capture_default_str(),
+       app.add_option("--weak-threshold", s.seeding.weak_threshold, "ε_w: weak-light deletion threshold")
+           ->check(CLI::Range(0.0, 1.0))
+           ->capture_default_str(),
+       app.add_option("--seed-cells", s.seeding.coarse_cells, "seeding cells along the longest axis")->check(CLI::Range(1, 16))->capture_default_str(),
+       app.add_option("--seed-iterations", s.seeding.iterations, "seeding levels")->check(CLI::Range(1, 6))->capture_default_str(),
+       app.add_option("--open-space-dbar", s.open_space_dbar,
+                      "when lights inside the scene's bounds leave D̄ above this, look again beyond its open sides (0: never)")
+           ->check(CLI::Range(0.0, 1e9))
+           ->capture_default_str(),
+       app.add_option("--seed", s.seed, "seed of sampling and of the renderer's sample streams")->capture_default_str()},
+      group);
+}
+
+PlacementRules SolveOptions::placement() const {
+  PlacementRules rules;
+  for (const auto& rule : place) rules.add(rule);
+  return rules;
+}
+
+SolveSpec SolveOptions::to_spec(const Registry& registry) const {
+  SolveSpec out = spec;
+  if (no_cache) out.cache = PluginDefaults::no_cache;
+  out.renderer = renderer.name;
+  out.renderer_settings = renderer.assignments(&registry);
+  out.settings.cache_dir = out.cache == PluginDefaults::no_cache ? std::filesystem::path()
+                           : cache_dir.empty()                   ? default_cache_dir()
+                                                                 : std::filesystem::path(cache_dir);
+  out.settings.cache_cap_bytes = default_cache_cap_bytes();
+  return out;
+}
+
+} // namespace hilight::cli

@@ -1,0 +1,45 @@
+#pragma once
+/// The solve's options as `hilight solve` and `hilight paint` take them: each
+/// flag declared once, with its default and its help, and turned into the
+/// SolveSpec that SolveSession assembles the solve from.
+#include "cli_common.hpp"
+#include "hilight/solve/solve_session.hpp"
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+namespace hilight::cli {
+
+struct SolveOptions {
+  /// --renderer, --bounces, --bounce-samples, --set, --threads.
+  RendererOptions renderer;
+  /// The plugins and their settings; `spec.settings` holds the solve's own
+  /// (samples, evaluation points, the paper's parameters). A frontend sets
+  /// its defaults here before add_*() shows them in the help.
+  SolveSpec spec;
+  std::vector<std::string> place;  ///< --place rules as given
+  std::string cache_dir;           ///< --cache-dir ("": default_cache_dir())
+  bool no_cache = false;           ///< --no-cache
+
+  /// --place: where lights may stand.
+  void add_placement(CLI::App& app);
+  /// The renderer's options (RendererOptions::add_to), its tuning in `tuning_group`.
+  void add_renderer(CLI::App& app, const std::string& tuning_group = "");
+  /// --samples, --evaluation-points, the optimizer, sampler and light cache
+  /// plugins and their settings, --cache-dir; in `group` ("": the main options).
+  void add_plugins(CLI::App& app, const std::string& group = "");
+  /// The paper's parameters (N_cut, ε_opt, ε_impro, ε_w, the seeding's),
+  /// --seed, --propose-spots, --no-residual-samples, --open-space-dbar.
+  void add_paper_parameters(CLI::App& app, const std::string& group);
+
+  /// --place's rules (InputError names a bad one).
+  PlacementRules placement() const;
+  /// The spec to solve with: `spec` with --no-cache, the renderer and its
+  /// settings (--bounces within what it carries), the cache folder and cap.
+  /// Its placement is `spec.settings.placement`, as the frontend set it from
+  /// placement() (and moved into the scene's frame).
+  SolveSpec to_spec(const Registry& registry) const;
+};
+
+} // namespace hilight::cli
