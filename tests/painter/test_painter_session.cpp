@@ -142,6 +142,55 @@ TEST_CASE("painter: a replayed script paints a bright patch, solves and lights i
   }
 }
 
+TEST_CASE("painter: the shadow and spotlight tools keep the painter's placement rules", "[painter][placement]") {
+  auto world = painter_test::floor_with_boxes({{{-0.5f, 0.f, -0.5f}, {0.5f, 1.f, 0.5f}}});
+  auto doc = world.document();
+  SolveJob job(test::registry(), world.scene, world.rays, painter_test::quick_options());
+  SessionPlayer player(*doc, job, {}, {});
+  const nlohmann::json shadow = {{"pairs", {{{"occluder", {0.5, 0.5, 0.0}},
+                                             {"world", {{-1.0, 0.0, 0.0}, {-1.4, 0.0, 0.2}, {-1.2, 0.0, -0.2}, {-0.8, 0.0, 0.1}}}}}}};
+  const nlohmann::json spot = {{"world", {{2.0, 0.0, 2.0}, {2.5, 0.0, 2.4}}}, {"eye", {2.0, 2.5, 0.0}}, {"direction", {0.1, -1.0, 0.8}}};
+  constexpr float kTop = 1.5f;  // the rule: lights at most this high
+  auto highest = [](const std::vector<Vec3>& points) {
+    float y = -std::numeric_limits<float>::infinity();
+    for (const Vec3& p : points) y = std::max(y, p.y);
+    return y;
+  };
+
+  // Without a rule, the shadow's candidates and the spotlight's apex (the eye) stand higher.
+  player.apply({"shadow", shadow}, 0);
+  REQUIRE(player.last_shadow_estimate());
+  REQUIRE(player.last_shadow_estimate()->requests.size() == 1);
+  CHECK(highest(player.last_shadow_estimate()->requests[0].casting) > kTop);
+  player.apply({"spot_region", spot}, 1);
+  CHECK(doc->state().lights.back().position.y == Approx(2.5f));
+  doc->undo();
+  doc->undo();
+
+  // With `place height:0:1.5`, every candidate, the estimated light and the spotlight keep it.
+  player.apply({"place", {{"rules", "height:0:" + std::to_string(kTop)}}}, 2);
+  player.apply({"shadow", shadow}, 3);
+  const auto& estimate = *player.last_shadow_estimate();
+  REQUIRE(estimate.requests.size() == 1);
+  REQUIRE_FALSE(estimate.requests[0].casting.empty());
+  CHECK(highest(estimate.requests[0].casting) <= kTop);
+  REQUIRE(doc->state().lights.size() == 1);
+  const Light estimated = doc->state().lights[0];
+  CHECK(estimated.position.y <= kTop);
+  CHECK(estimated.position.x > 0.5f);  // still on the side the shadow says
+  player.apply({"spot_region", spot}, 4);
+  REQUIRE(doc->state().lights.size() == 2);
+  const Light& spotlight = doc->state().lights[1];
+  INFO("spot at " << spotlight.position.x << " " << spotlight.position.y << " " << spotlight.position.z);
+  CHECK(spotlight.type == LightType::Spot);
+  CHECK(spotlight.position.y <= kTop);
+  CHECK(player.light_space().admissible(spotlight.position));
+
+  // A rule no place between the camera and the region keeps: the tool says so, naming the rule.
+  player.apply({"place", {{"rules", "height:0:0.01"}}}, 5);
+  CHECK_THROWS_WITH(player.apply({"spot_region", spot}, 6), Contains("height:0:0.01"));
+}
+
 TEST_CASE("painter: replayed shadow, spotlight, adjust and erase-shadow actions", "[painter]") {
   auto world = painter_test::floor_with_boxes({{{-0.5f, 0.f, -0.5f}, {0.5f, 1.f, 0.5f}}});
   auto doc = world.document();

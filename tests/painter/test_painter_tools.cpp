@@ -91,7 +91,7 @@ TEST_CASE("painter: a shadow drawn behind an occluder points to the light", "[pa
   for (const Vec3& light : {truth, Vec3(-1.f, 2.f, 2.f)}) {
     const std::vector<Vec3> shadow = floor_shadow(objects, *world.rays, box, light);
     REQUIRE(shadow.size() > 10);
-    ShadowEstimate estimate = estimate_shadow_lights(objects, *world.rays, {{box, shadow}});
+    ShadowEstimate estimate = estimate_shadow_lights(objects, LightSpace(*world.rays), {{box, shadow}});
     REQUIRE(estimate.requests.size() == 1);
     const RequestCandidates& r = estimate.requests[0];
     CHECK(r.in_cone.size() >= 8);
@@ -112,15 +112,15 @@ TEST_CASE("painter: a shadow drawn behind an occluder points to the light", "[pa
   // candidate sets overlap and are reduced to their intersection (one light).
   auto two = floor_with_boxes({{{-0.5f, 0.f, -0.5f}, {0.5f, 1.f, 0.5f}}, {{-1.f, 0.f, 2.5f}, {0.f, 1.2f, 3.5f}}});
   SceneObjects objects2(*two.scene);
-  ShadowEstimate both = estimate_shadow_lights(objects2, *two.rays,
+  ShadowEstimate both = estimate_shadow_lights(objects2, LightSpace(*two.rays),
                                                {{1, floor_shadow(objects2, *two.rays, 1, truth)},
                                                 {2, floor_shadow(objects2, *two.rays, 2, truth)}});
   REQUIRE(both.lights.size() == 1);
   CHECK(both.kept_sets[0].size() <= std::min(both.requests[0].in_cone.size(), both.requests[1].in_cone.size()));
   CHECK(angle_between_deg(both.lights[0].position - objects2.centre(1), truth - objects2.centre(1)) < 18.0);
 
-  CHECK_THROWS_AS(estimate_shadow_lights(objects, *world.rays, {{7, {Vec3(0.f)}}}), InputError);
-  CHECK_THROWS_AS(estimate_shadow_lights(objects, *world.rays, {{box, {}}}), InputError);
+  CHECK_THROWS_AS(estimate_shadow_lights(objects, LightSpace(*world.rays), {{7, {Vec3(0.f)}}}), InputError);
+  CHECK_THROWS_AS(estimate_shadow_lights(objects, LightSpace(*world.rays), {{box, {}}}), InputError);
 }
 
 TEST_CASE("painter: clicking a shadow finds and erases the right occluder-light pair", "[painter]") {
@@ -197,7 +197,7 @@ TEST_CASE("painter: a spotlight from a camera outside the room moves inside", "[
   const std::vector<Vec3> region = {{2.f, 0.f, 2.f}, {2.4f, 0.f, 2.3f}, {1.7f, 0.f, 2.2f}};
   const Vec3 eye(2.f, 2.f, 7.f);  // behind the wall z = 4
   const Vec3 direction = glm::normalize(Vec3(2.f, 0.f, 2.1f) - eye);
-  const Light spot = spot_for_region_in_scene(*world.rays, eye, direction, region);
+  const Light spot = spot_for_region_in_scene(LightSpace(*world.rays), eye, direction, region);
   INFO(spot.position.x << ", " << spot.position.y << ", " << spot.position.z);
   CHECK(spot.position.z < 4.f);
   CHECK(world.scene->light_bounds().contains(spot.position));
@@ -207,5 +207,5 @@ TEST_CASE("painter: a spotlight from a camera outside the room moves inside", "[
   CHECK(double(spot.cutoff_deg) == Approx(max_angle_deg(spot.position, direction, region)).margin(2e-3));
   // A camera already inside stays where it is.
   const Vec3 inside(2.f, 2.5f, 3.5f);
-  CHECK(spot_for_region_in_scene(*world.rays, inside, Vec3(0.f, -1.f, -0.5f), region).position == inside);
+  CHECK(spot_for_region_in_scene(LightSpace(*world.rays), inside, Vec3(0.f, -1.f, -0.5f), region).position == inside);
 }

@@ -224,10 +224,17 @@ void SessionPlayer::run(const FocusAction& a, const Action&, const std::string& 
   log("focus on region " + names);
 }
 
-void SessionPlayer::apply_placement() {
+PlacementRules SessionPlayer::placement() const {
   PlacementRules rules = m_place_rules;
   if (!m_focus.empty()) rules.regions = m_focus;
-  m_job.set_placement(std::move(rules));
+  return rules;
+}
+
+void SessionPlayer::apply_placement() { m_job.set_placement(placement()); }
+
+LightSpace SessionPlayer::light_space() const {
+  regions();  // found once, shared with the focus
+  return LightSpace(m_document.rays(), placement(), std::nullopt, m_regions);
 }
 
 void SessionPlayer::continue_from(const SessionPlayer& other) {
@@ -280,7 +287,7 @@ void SessionPlayer::run(const ShadowAction& a, const Action&, const std::string&
     points_only.normals.clear();
     requests.push_back({m_objects.object_of_triangle(hit.triangle), world_points(points_only, where)});
   }
-  ShadowEstimate estimate = estimate_shadow_lights(m_objects, m_document.rays(), requests);
+  ShadowEstimate estimate = estimate_shadow_lights(m_objects, light_space(), requests);
   if (estimate.lights.empty()) throw InputError(where + ": no light position casts these shadows");
   // The estimate proposes the point lights; the designer's spotlights stay.
   m_document.apply("lights from shadows", [&](PaintState& s) {
@@ -323,7 +330,7 @@ void SessionPlayer::run(const SpotRegionAction& a, const Action&, const std::str
   const std::vector<Vec3> region = world_points(a.points, where);
   SpotRegionSettings settings;
   if (a.falloff_deg) settings.falloff_deg = *a.falloff_deg;
-  Light spot = spot_for_region_in_scene(m_document.rays(), pose.eye, pose.direction, region, settings);
+  Light spot = spot_for_region_in_scene(light_space(), pose.eye, pose.direction, region, settings);
   const float d = glm::length(centroid(region) - spot.position);
   spot.intensity = a.intensity ? *a.intensity : Rgb(d * d);  // about irradiance 1 at the region
   m_document.apply("spotlight for a region", [&](PaintState& s) {

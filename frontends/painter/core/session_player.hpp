@@ -124,6 +124,11 @@ public:
   /// The focused rooms (`focus` action); empty: none. Solves then fit only
   /// the painted points in them and place lights only in them.
   const std::vector<int>& focus() const { return m_focus; }
+  /// The `place` rules with the focused rooms' (the job's placement).
+  PlacementRules placement() const;
+  /// Where the tools may put a light: free space under placement(), as the
+  /// solve sees it (the shadow and spot-region tools ask it).
+  LightSpace light_space() const;
   /// The room a surface point looks into (stepped a voxel off the surface
   /// along its normal, so a wall's two faces belong to their own rooms); -1: none.
   int room_of(const Vec3& position, const Vec3& normal) const;
@@ -166,7 +171,7 @@ private:
   void run(const LoadTargetAction& a, const Action& action, const std::string& where);
   void run(const LoadLightsAction& a, const Action& action, const std::string& where);
   void run(const ScreenshotAction& a, const Action& action, const std::string& where);
-  /// The `place` rules with the focused rooms' (the job's placement).
+  /// Gives the job placement().
   void apply_placement();
   /// The painted target, only its points in the focused rooms when there are some.
   Target focused_target(const std::string& where) const;

@@ -5,16 +5,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace hilight::painter {
 
 namespace {
 
-/// Admissible candidate positions: grid cell centres in light_bounds() that
-/// are not inside solids (computed once per estimate).
-std::vector<Vec3> candidate_grid(const RayScene& rays, int cells_along_longest) {
-  const Bounds b = rays.scene().light_bounds();
+/// Candidate positions: the centres of a grid over the light bounds, each
+/// where a light for it stands (LightSpace::place: on the ceiling mount under
+/// a ceiling rule) if `space` admits it there (free, and the designer's rules
+/// kept); each position once (computed once per estimate).
+std::vector<Vec3> candidate_grid(const LightSpace& space, int cells_along_longest) {
+  const Bounds b = space.light_bounds();
   const Vec3 extent = b.extent();
   const float longest = std::max({extent.x, extent.y, extent.z});
   const float cell = longest / float(std::max(cells_along_longest, 1));
@@ -26,7 +29,9 @@ std::vector<Vec3> candidate_grid(const RayScene& rays, int cells_along_longest) 
       for (int k = 0; k < counts[2]; ++k) {
         Vec3 p = b.lo + extent * Vec3((float(i) + 0.5f) / float(counts[0]), (float(j) + 0.5f) / float(counts[1]),
                                       (float(k) + 0.5f) / float(counts[2]));
-        if (!rays.inside_solid(p)) grid.push_back(p);
+        const std::optional<Vec3> at = space.place(p);
+        // A column's cells share one ceiling place: the first stands for them.
+        if (at && space.admissible(*at) && (*at == p || std::find(grid.begin(), grid.end(), *at) == grid.end())) grid.push_back(*at);
       }
   return grid;
 }
@@ -66,7 +71,7 @@ double angle_deg(const Vec3& a, const Vec3& b) {
 
 } // namespace
 
-ShadowEstimate estimate_shadow_lights(const SceneObjects& objects, const RayScene& rays,
+ShadowEstimate estimate_shadow_lights(const SceneObjects& objects, const LightSpace& space,
                                       const std::vector<ShadowRequest>& requests, const ShadowCandidateSettings& settings) {
   const std::string what = "shadow lights";
   for (size_t r = 0; r < requests.size(); ++r) {
@@ -75,7 +80,8 @@ ShadowEstimate estimate_shadow_lights(const SceneObjects& objects, const RayScen
     if (requests[r].shadow_points.empty())
       throw InputError(what, "request " + std::to_string(r) + ": no shadow points");
   }
-  const std::vector<Vec3> grid = candidate_grid(rays, settings.grid_cells);
+  const RayScene& rays = space.rays();
+  const std::vector<Vec3> grid = candidate_grid(space, settings.grid_cells);
   ShadowEstimate estimate;
   std::vector<std::vector<uint32_t>> sets;  // grid indices per request, sorted
   std::vector<Vec3> set_shadow_centres;

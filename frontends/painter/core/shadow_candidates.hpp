@@ -3,8 +3,9 @@
 ///
 /// Each request is an occluder (an object of SceneObjects) and a stroked
 /// shadow region on a receiver (world points). Candidate light positions are
-/// the cells of a grid over Scene::light_bounds() that are not inside solids
-/// and from which the occluder really shadows the stroke: shadow rays from at
+/// the cells of a grid over the light space's light bounds where a light may
+/// stand (LightSpace::place and admissible: out of solids, and the designer's
+/// placement rules kept; under a ceiling rule, on its mount) and from which the occluder really shadows the stroke: shadow rays from at
 /// least `shadow_fraction` of the stroke's points toward the candidate first
 /// hit the occluder. Per request, the candidates inside a cone — apex at the
 /// occluder centre, axis from the shadow centre through the occluder centre,
@@ -18,6 +19,7 @@
 /// that irradiance before a solve fits intensities properly.
 #include "core/scene_objects.hpp"
 #include "hilight/lighting.hpp"
+#include "hilight/light_space.hpp"
 #include "hilight/ray_scene.hpp"
 
 #include <cstdint>
@@ -57,7 +59,7 @@ struct ShadowEstimate {
 
 /// InputError when an occluder id is out of range or a request has no points.
 /// Requests whose shadow no candidate can cast contribute no set.
-ShadowEstimate estimate_shadow_lights(const SceneObjects& objects, const RayScene& rays,
+ShadowEstimate estimate_shadow_lights(const SceneObjects& objects, const LightSpace& space,
                                       const std::vector<ShadowRequest>& requests,
                                       const ShadowCandidateSettings& settings = {});
 

@@ -9,6 +9,7 @@
 /// width (`falloff_deg`) so every region point gets the full intensity
 /// (α ≤ cutoff − falloff), plus 1e-3° so rounding keeps the farthest point in.
 #include "hilight/lighting.hpp"
+#include "hilight/light_space.hpp"
 #include "hilight/ray_scene.hpp"
 
 #include <vector>
@@ -27,12 +28,15 @@ Light spot_for_region(const Vec3& eye, const Vec3& direction, const std::vector<
                       const SpotRegionSettings& settings = {});
 
 /// The same, for a camera that may stand where no light may (outside the
-/// room, inside a wall, outside Scene::light_bounds()): the apex slides along
-/// the view direction, past each surface in the way, to the first point that
-/// is admissible (in light_bounds(), not inside a solid) and from which the
-/// region's centroid is unblocked; the cutoff is then the least for that
-/// apex. InputError when no such point lies before the region.
-Light spot_for_region_in_scene(const RayScene& rays, const Vec3& eye, const Vec3& direction,
+/// room, inside a wall, outside the light bounds, where the designer's
+/// placement rules forbid): the apex slides along the view direction, past
+/// each surface in the way, to the first point where `space` lets a light
+/// stand (LightSpace::place and admissible: free, and every rule kept) and
+/// from which the region's centroid is unblocked; the cutoff is then the
+/// least for that apex. Under a ceiling rule the apex is on the ceiling mount
+/// above that point, aimed at the region's centroid. InputError when no such
+/// point lies before the region.
+Light spot_for_region_in_scene(const LightSpace& space, const Vec3& eye, const Vec3& direction,
                                const std::vector<Vec3>& region, const SpotRegionSettings& settings = {});
 
 /// Largest angle (degrees) between `direction` and eye→point over the region.
