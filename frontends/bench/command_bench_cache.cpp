@@ -6,6 +6,7 @@
 #include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/light_bounds.hpp"
 #include "hilight/light_cache_file.hpp"
+#include "hilight/light_space.hpp"
 #include "hilight/solve/solve_renderers.hpp"
 #include "hilight/fixtures/real_model_scenes.hpp"
 #include "hilight/fixtures/scene_builders.hpp"
@@ -47,7 +48,7 @@ std::vector<Vec3> probe_positions(const RayScene& rays, const Bounds& bounds, si
   std::vector<Vec3> out;
   for (size_t tries = 0; out.size() < count && tries < 100 * count; ++tries) {
     const Vec3 p = bounds.lo + Vec3(u(rng), u(rng), u(rng)) * bounds.extent();
-    if (!rays.inside_solid(p) && !rays.closest_point(p, clearance).valid() && (near <= 0 || rays.closest_point(p, near).valid()))
+    if (LightSpace::free_at(rays, p, clearance) && (near <= 0 || rays.closest_point(p, near).valid()))
       out.push_back(p);
   }
   return out;

@@ -84,7 +84,8 @@ private:
 };
 
 /// A node can hold a light when it is in free space: not inside a solid and
-/// not within `clearance` of a surface (there the bounce is singular).
+/// not within `clearance` of a surface (there the bounce is singular):
+/// LightSpace::free_at, the one test of free space.
 bool node_is_free(const RayScene& rays, const Vec3& position, float clearance);
 
 } // namespace hilight

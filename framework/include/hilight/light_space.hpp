@@ -64,6 +64,13 @@ public:
   const std::shared_ptr<const Regions>& shared_regions() const { return m_regions; }
   /// `p` satisfies every rule and is free (in the light bounds, out of solids).
   bool admissible(const Vec3& p) const;
+  /// Free space with room to spare, the light bounds and the rules aside:
+  /// out of solids, and no surface nearer than `clearance`. What the light
+  /// cache's nodes (node_is_free), the bench's probes and the fixtures'
+  /// random lights ask; admissible() adds the bounds and the rules.
+  static bool free_at(const RayScene& rays, const Vec3& p, float clearance) {
+    return !rays.inside_solid(p) && !rays.closest_point(p, clearance).valid();
+  }
 
 private:
   bool satisfies_boxes_and_height(const Vec3& p) const;

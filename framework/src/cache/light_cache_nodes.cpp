@@ -1,4 +1,5 @@
 #include "hilight/light_cache_nodes.hpp"
+#include "hilight/light_space.hpp"
 #include "hilight/progress.hpp"
 
 #include <algorithm>
@@ -238,8 +239,6 @@ void NodeSampleTable::add_blend(const uint32_t* slots, const float* weights, int
   }
 }
 
-bool node_is_free(const RayScene& rays, const Vec3& position, float clearance) {
-  return !rays.inside_solid(position) && !rays.closest_point(position, clearance).valid();
-}
+bool node_is_free(const RayScene& rays, const Vec3& position, float clearance) { return LightSpace::free_at(rays, position, clearance); }
 
 } // namespace hilight
