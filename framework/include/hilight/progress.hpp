@@ -83,10 +83,6 @@ public:
   void advance(double units = 1) {
     if (m_active) m_done.fetch_add(units, std::memory_order_relaxed);
   }
-  /// The size, once it is known (any thread).
-  void set_total(double total) {
-    if (m_active) m_total.store(total, std::memory_order_relaxed);
-  }
   /// What it is doing now, for a stage whose steps are not stages of their
   /// own (a Solver's, said from whichever thread reaches them; any thread).
   void rename(std::string name);

@@ -88,13 +88,8 @@ void Document::redo() {
   ++m_revision;
 }
 
-void Document::set_history_limit(size_t steps) {
-  m_history_limit = std::max<size_t>(steps, 1);
-  trim_history();
-}
-
 void Document::trim_history() {
-  while (m_undo.size() > m_history_limit) m_undo.pop_front();
+  while (m_undo.size() > kHistoryLimit) m_undo.pop_front();
 }
 
 size_t Document::painted_count() const {

@@ -34,9 +34,7 @@ public:
   Document(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays);
 
   const Scene& scene() const { return *m_scene; }
-  const std::shared_ptr<const Scene>& scene_ptr() const { return m_scene; }
   const RayScene& rays() const { return *m_rays; }
-  const std::shared_ptr<const RayScene>& rays_ptr() const { return m_rays; }
 
   const PaintState& state() const { return m_state; }
   /// Increases on every change of state() (edits, undo, redo): the UI
@@ -71,8 +69,6 @@ public:
   /// Restores the state before the last step (commits an open edit first).
   void undo();
   void redo();
-  /// Steps kept; the oldest are dropped beyond it (snapshots are whole states).
-  void set_history_limit(size_t steps);
 
   // --- Target and files --------------------------------------------------
   /// Number of vertices with weight > 0.
@@ -107,7 +103,7 @@ private:
   bool m_editing = false;
   std::deque<Step> m_undo;
   std::vector<Step> m_redo;  ///< each holds the state to restore on redo
-  size_t m_history_limit = 200;
+  static constexpr size_t kHistoryLimit = 200;  ///< steps kept; the oldest are dropped beyond it (snapshots are whole states)
   uint64_t m_revision = 1;
 };
 

@@ -14,15 +14,6 @@ std::optional<SurfacePick> pick_near(const RayScene& rays, const Vec3& p, const 
   return SurfacePick{position, rays.hit_normal(hit)};
 }
 
-std::optional<SurfacePick> pick_ray(const RayScene& rays, const Vec3& origin, const Vec3& direction) {
-  Hit hit = rays.intersect(origin, glm::normalize(direction));
-  if (!hit.valid()) return std::nullopt;
-  Vec3 normal = rays.hit_normal(hit);
-  // The side the ray came from: two-sided surfaces are painted on the side seen.
-  if (glm::dot(normal, direction) > 0.f) normal = -normal;
-  return SurfacePick{rays.hit_position(hit), normal};
-}
-
 std::vector<VertexDistance> vertices_in_dab(const Scene& scene, const SurfacePick& centre, float radius) {
   std::vector<VertexDistance> result;
   const float r2 = radius * radius;

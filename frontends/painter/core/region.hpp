@@ -26,8 +26,6 @@ std::optional<SurfacePick> pick_near(const RayScene& rays, const Vec3& p);
 /// As above, nullopt too when that nearest surface point is hidden by the view (`visible`, if given).
 std::optional<SurfacePick> pick_near(const RayScene& rays, const Vec3& p, const Visibility* visible);
 
-/// The first surface hit along a ray (the UI's mouse picking), nullopt on a miss.
-std::optional<SurfacePick> pick_ray(const RayScene& rays, const Vec3& origin, const Vec3& direction);
 
 /// Vertices within `radius` of `centre` whose normals face the same side as
 /// `normal` (dot > 0), each with its distance to the centre.

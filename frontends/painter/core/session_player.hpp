@@ -107,7 +107,6 @@ public:
   void start_in_background(JobKind kind);
 
   Tool tool() const { return m_tool; }
-  void set_tool(Tool tool) { m_tool = tool; }
   const BrushSettings& brush() const { return m_brush; }
   void set_brush(const BrushSettings& brush) { m_brush = brush; }
   /// The section and cutaway (`section`, `cutaway` actions): view state, like the tool.

@@ -91,9 +91,4 @@ void Window::render_imgui() {
 
 void Window::present() { glfwSwapBuffers(m_window); }
 
-void Window::end_frame() {
-  render_imgui();
-  present();
-}
-
 } // namespace hilight::painter::ui

@@ -25,8 +25,6 @@ public:
   void framebuffer_size(int& width, int& height) const;
   /// Starts an ImGui frame (after polling events).
   void begin_frame();
-  /// Draws ImGui on top of the scene and presents the frame.
-  void end_frame();
   /// Draws ImGui into the back buffer without presenting (screenshots read it).
   void render_imgui();
   void present();
