@@ -1,5 +1,6 @@
 // The `hilight` launcher: loads every plugin module, then hands the command to
 // the frontend module that owns it. It knows no command itself.
+#include "hilight/edit_distance.hpp"
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
 #include "hilight/registry.hpp"
@@ -27,18 +28,8 @@ std::string nearest_command(hilight::Registry& registry, const std::string& give
   std::string best;
   size_t best_distance = 3;
   for (const auto& c : registry.all_commands()) {
-    // Edits (insert, delete, replace, swap two neighbours) from given to c.name.
-    const std::string& a = given;
-    const std::string& b = c.name;
-    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
-    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-    for (size_t i = 1; i <= a.size(); ++i)
-      for (size_t j = 1; j <= b.size(); ++j) {
-        d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
-        if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-      }
-    if (d[a.size()][b.size()] < best_distance) best_distance = d[a.size()][b.size()], best = c.name;
+    const size_t distance = hilight::edit_distance(given, c.name);
+    if (distance < best_distance) best_distance = distance, best = c.name;
   }
   return best.empty() || best_distance * 3 > std::max<size_t>(3, given.size()) ? "" : "; did you mean '" + best + "'?";
 }
