@@ -13,6 +13,7 @@
 #include "hilight/io/photometry_io.hpp"
 #include "hilight/units.hpp"
 #include "hilight/scene_origin.hpp"
+#include "hilight/solve/judge.hpp"
 #include "hilight/solve/solve_session.hpp"
 #include "hilight/threads.hpp"
 #include "progress_display.hpp"
@@ -27,8 +28,9 @@ namespace hilight::cli {
 
 namespace {
 
-/// D̄ above which the result is called a poor fit (the paper's solves end below 1.5%).
-constexpr double kPoorFit = 0.05;
+/// D̄ above which the result is called a poor fit (the paper's solves end
+/// below 1.5%): the Judge's, so the warning and the solve's diagnosis agree.
+constexpr double kPoorFit = Judge::kPoorFitDbar;
 
 nlohmann::json report_json(const SolveReport& r, const std::string& renderer, const std::string& optimizer, const std::string& sampler,
                            const std::string& mode) {
@@ -40,6 +42,15 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
       j["lights_refined"] = c.refined_lights.size();  // weak lights pruned after refinement
     }
     cuts.push_back(j);
+  }
+  // The solve's stages in the order they ran: what each cost and did.
+  nlohmann::json stages = nlohmann::json::array();
+  for (const auto& st : r.stages) {
+    nlohmann::json j = {{"name", st.name},       {"seconds", st.seconds}, {"dbar_before", st.dbar_before},
+                        {"dbar_after", st.dbar_after}, {"dbar_over", st.target ? "target points" : "samples"},
+                        {"kept", st.kept}};
+    if (!st.skipped.empty()) j["skipped"] = st.skipped;
+    stages.push_back(j);
   }
   return {{"mode", mode},
           {"poor_fit", r.dbar > kPoorFit},
@@ -53,6 +64,7 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
           {"cuts", cuts},
           {"improvement_ratios", r.improvement},
           {"seconds", r.seconds},
+          {"stages", stages},
           {"samples", r.samples},
           {"target_points", r.target_points},
           {"seed_lights", r.seed_lights},

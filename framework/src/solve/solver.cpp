@@ -48,6 +48,18 @@ Lighting lights_of_cut(const LightHierarchy& h, size_t k, const Lighting& spots,
 
 } // namespace
 
+JudgeSettings judge_settings(const SolveSettings& settings) {
+  JudgeSettings j;
+  j.eps_impro = settings.eps_impro;
+  j.eps_w = settings.seeding.weak_threshold;
+  j.eps_opt = settings.eps_opt;
+  j.n_cut = settings.n_cut;
+  j.fixed_count = settings.fixed_count;
+  j.min_count = settings.placement.min_count;
+  j.max_count = settings.placement.max_count;
+  return j;
+}
+
 size_t sample_count_for(size_t target_points) { return std::clamp<size_t>((target_points + 7) / 14, 3000, 10000); }
 
 Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays, Renderer& renderer,
@@ -62,11 +74,31 @@ Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScen
       m_renderer(m_stoppable_renderer),
       m_reference(m_stoppable_reference), m_sampler(sampler),
       m_optimizer(optimizer), m_cache_builder(cache),
-      m_settings(std::move(settings)), m_progress(std::move(progress)) {}
+      m_settings(std::move(settings)), m_judge(judge_settings(m_settings)), m_progress(std::move(progress)) {}
 
 void Solver::stage(const std::string& name) const {
   if (m_stop.stop_requested()) throw SolveCancelled();
   if (m_progress) m_progress(name);
+}
+
+namespace {
+/// The stage log and timings of `from` carried into `to` (the answer of a
+/// tried alternative replaces a report, but what was tried stays logged).
+void carry_log(SolveReport& to, const SolveReport& from) {
+  to.seconds = from.seconds;
+  to.stages = from.stages;
+}
+} // namespace
+
+Fit Solver::logged(SolveReport& report, const std::string& name, const std::string& seconds_key, const Fit& before,
+                   const std::function<Fit(const Fit&)>& body) {
+  Stopwatch watch;
+  Fit after = body(before);
+  const double seconds = watch.seconds();
+  if (!seconds_key.empty()) report.seconds[seconds_key] += seconds;
+  const bool changed = after.lights != before.lights || after.dbar != before.dbar;
+  report.stages.push_back({name, seconds, before.dbar, after.dbar, false, changed, {}});
+  return after;
 }
 
 float Solver::neighbourhood_radius() const {
@@ -144,9 +176,10 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   if (n_points == 0) {  // only the requested spotlights: no hierarchy, refine them alone
     Stopwatch refine_watch;
     ResponseModel exact(m_renderer, samples, nullptr);
-    Lighting spots_only = refine_anchored(model, exact, seed.lights, report.dbar_samples);
+    Fit spots_only = refine_anchored(model, exact, seed.lights);
+    report.dbar_samples = spots_only.dbar;
     report.seconds["refinement"] += refine_watch.seconds();
-    return spots_only;
+    return std::move(spots_only.lights);
   }
 
   stage("building the light hierarchy");
@@ -184,9 +217,7 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
   // Which cuts to refine and how many lights (solve/cuts.cpp).
   // A count the seeding cannot reach (--lights N, count:MIN) takes every
   // seeded light here; add_missing_lights() adds the rest where the fit is worst.
-  CountRule rule{std::min(m_settings.fixed_count, n_points), m_settings.n_cut, m_settings.eps_opt, m_settings.eps_impro, kVisibleDbar};
-  rule.min_count = std::min(min_lights(), n_points);
-  rule.max_count = max_lights();
+  const CountRule rule = m_judge.count_rule(n_points);
   std::vector<double> initial;
   for (const auto& c : report.cuts) initial.push_back(c.dbar_initial);
   const std::vector<size_t> chosen = choose_cuts(initial, rule);
@@ -197,7 +228,9 @@ Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
     if (report.cuts[k - 1].refined) return;
     stage("refining the cut with " + std::to_string(k) + " lights");
     CutRecord& rec = report.cuts[k - 1];
-    rec.refined_lights = refine_anchored(model, exact, starts[k - 1], rec.dbar_refined);
+    Fit refined = refine_anchored(model, exact, starts[k - 1]);
+    rec.refined_lights = std::move(refined.lights);
+    rec.dbar_refined = refined.dbar;
     rec.refined = true;
   };
   auto dbar_of = [&](size_t k) { return report.cuts[k - 1].refined ? report.cuts[k - 1].dbar_refined : report.cuts[k - 1].dbar_initial; };
@@ -267,8 +300,6 @@ double Solver::measure_dbar(const Target& target, const Lighting& lights) {
   return normalized_difference(m_reference.illuminate(measured.points, lights), measured);
 }
 
-size_t Solver::min_lights() const { return m_settings.fixed_count ? m_settings.fixed_count : m_settings.placement.min_count; }
-size_t Solver::max_lights() const { return m_settings.fixed_count ? m_settings.fixed_count : m_settings.placement.max_count; }
 
 void Solver::finish_report(const Target& target, const Lighting& lights, SolveReport& report) {
   report.chosen = lights.size();
@@ -316,7 +347,7 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
   open_space_for(m_settings.spot_hints);
   require_admissible(m_settings.spot_hints, "spot hints");
   Lighting lights = solve_in_space(target, report);
-  if (m_settings.luminaire && m_settings.luminaire->profile && distinct_spins(*m_settings.luminaire->profile).size() > 1 && report.dbar > kTurnDbar)
+  if (m_settings.luminaire && m_settings.luminaire->profile && distinct_spins(*m_settings.luminaire->profile).size() > 1 && m_judge.try_turns(report.dbar))
     lights = solve_each_spin(target, std::move(lights), report);
   // Lights inside cannot explain the target: perhaps it is lit from outside
   // (a product, a facade). Look again beyond the open sides; keep the better.
@@ -325,56 +356,63 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
   if (m_settings.open_space_dbar > 0 && report.dbar > m_settings.open_space_dbar && can_open &&
       !m_settings.placement.ceiling_offset) {
     stage("looking beyond the scene's bounds");
+    Stopwatch watch;
     SolveReport open_report;
-    open_report.seconds = report.seconds;
+    carry_log(open_report, report);
     open_space(true);
     Lighting open_lights = solve_in_space(target, open_report);
-    if (open_report.dbar < 0.8 * report.dbar) {
+    const bool wins = m_judge.open_space_wins(open_report.dbar, report.dbar);
+    const StageRecord record{"open space", watch.seconds(), report.dbar, open_report.dbar, true, wins, {}};
+    if (wins) {
       open_report.dbar_closed = report.dbar;
       open_report.open_space = true;
       report = std::move(open_report);
       lights = std::move(open_lights);
     } else {
-      report.seconds = open_report.seconds;
+      carry_log(report, open_report);
       report.dbar_closed = report.dbar;
       open_space(false);
     }
+    report.stages.push_back(record);
   }
   // Point lights cannot explain the target, inside or beyond: spotlights
   // from nothing (point lights beside them where they pay) compete; the
   // fewer lights win unless the others improve D̄ by ε_impro (eq. 9).
-  if (m_settings.propose_spots && report.dbar > kSpotDbar && m_settings.spot_hints.empty() && m_settings.fixed_count == 0 &&
-      !m_settings.luminaire) {  // the designer chose the luminaire: no spots instead
+  const bool may_look_for_spots = m_settings.propose_spots && m_settings.spot_hints.empty() && m_settings.fixed_count == 0 &&
+                                  !m_settings.luminaire;  // the designer chose the luminaire: no spots instead
+  if (may_look_for_spots && !m_judge.look_for_spots(report.dbar)) {
+    report.stages.push_back({"spot search", 0, report.dbar, report.dbar, true, false, "the point lights fit (D̄ at most kSpotDbar)"});
+  } else if (may_look_for_spots) {
     stage("looking for spotlights");
+    Stopwatch watch;
     SolveReport spot_report;
-    spot_report.seconds = report.seconds;
+    carry_log(spot_report, report);
     spot_report.open_space = report.open_space;
     spot_report.dbar_closed = report.dbar_closed;
     Lighting spots = spots_in_space(target, report.dbar_samples, spot_report);
-    const size_t n_spots = spots.size(), n_points = lights.size();
-    const double d_spots = spot_report.dbar, d_points = report.dbar, eps = m_settings.eps_impro;
-    const bool counts = n_spots >= min_lights() && (max_lights() == 0 || n_spots <= max_lights());
-    const bool spots_win = !spots.empty() && counts && (n_spots == n_points ? d_spots < d_points
-                                              : n_spots < n_points ? d_spots < eps * d_points  // the extra point lights do not pay
-                                                                   : d_points >= eps * d_spots);  // the extra lights pay
-    if (spots_win) {
+    const bool wins = m_judge.spots_win(spots.size(), spot_report.dbar, lights.size(), report.dbar);
+    const StageRecord record{"spot search", watch.seconds(), report.dbar, spots.empty() ? report.dbar : spot_report.dbar, true, wins, {}};
+    if (wins) {
       report = std::move(spot_report);
       lights = std::move(spots);
     } else {
-      report.seconds = spot_report.seconds;
+      carry_log(report, spot_report);
     }
+    report.stages.push_back(record);
   }
   drop_idle_lights(lights);
   if (m_settings.luminaire && m_settings.luminaire->profile && distinct_spins(*m_settings.luminaire->profile).size() > 1 && !lights.empty()) {
     // An asymmetric luminaire: each one's turn about its aim, then measured again.
     stage("aiming the luminaires");
     Stopwatch watch;
+    const double before = report.dbar_samples;
     lights = aim_luminaires(m_reference, sample(target, report), to_output(std::move(lights)), report.dbar_samples);
     report.dbar_points = 0;
     report.seconds["aim"] += watch.seconds();
+    report.stages.push_back({"luminaire aim", watch.seconds(), before, report.dbar_samples, false, true, {}});
   }
   finish_report(target, lights, report);
-  if (report.dbar > kPoorFitDbar) report.unreachable = unreachable_share(target, *m_space);
+  if (m_judge.poor_fit(report.dbar)) report.unreachable = unreachable_share(target, *m_space);
   report.seconds["total"] = total.seconds();
   return to_output(std::move(lights));
 }
@@ -410,12 +448,15 @@ void Solver::open_space_for(const Lighting& lights) {
 Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {
   ensure_cache(report);
   SampleSet samples = sample(target, report);
-  Lighting found = solve_samples(samples, report);
-  Stopwatch polish_watch;
-  Lighting lights = polish_with_reference(samples, found, false, report.dbar_samples);
-  lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
-  report.seconds["reference polish"] += polish_watch.seconds();
-  return finish_in_space(target, std::move(samples), std::move(lights), report);
+  Fit fit = logged(report, "seeding and cuts", "", Fit{}, [&](const Fit&) {
+    Lighting found = solve_samples(samples, report);
+    return Fit{std::move(found), report.dbar_samples};
+  });
+  fit = logged(report, "reference polish", "reference polish", fit,
+               [&](const Fit& f) { return polish_with_reference(samples, f.lights, false); });
+  fit = logged(report, "add missing lights", "reference polish", fit, [&](const Fit& f) { return add_missing_lights(samples, f); });
+  report.dbar_samples = fit.dbar;
+  return finish_in_space(target, std::move(samples), std::move(fit), report);
 }
 
 Lighting Solver::solve_each_spin(const Target& target, Lighting lights, SolveReport& report) {
@@ -425,16 +466,21 @@ Lighting Solver::solve_each_spin(const Target& target, Lighting lights, SolveRep
     if (spin == 0.f) continue;  // solved already
     stage("solving with the luminaire turned " + std::to_string(int(spin)) + "°");
     turn_luminaire(std::fmod(base + spin, 360.f));
+    Stopwatch watch;
     SolveReport turned;
-    turned.seconds = report.seconds;
+    carry_log(turned, report);
     Lighting found = solve_in_space(target, turned);
-    if (turned.dbar < report.dbar) {
+    const bool better = turned.dbar < report.dbar;
+    const StageRecord record{"luminaire turned " + std::to_string(int(spin)) + "°", watch.seconds(), report.dbar, turned.dbar, true,
+                             better, {}};
+    if (better) {
       report = std::move(turned);
       lights = std::move(found);
       best = m_settings.luminaire->spin_deg;
     } else {
-      report.seconds = turned.seconds;
+      carry_log(report, turned);
     }
+    report.stages.push_back(record);
   }
   turn_luminaire(best);
   return lights;
@@ -453,24 +499,26 @@ void Solver::turn_luminaire(float spin_deg) {
 Lighting Solver::spots_in_space(const Target& target, double points_dbar, SolveReport& report) {
   ensure_cache(report);
   SampleSet samples = sample(target, report);
-  Stopwatch watch;
-  Lighting lights = add_spots(samples, points_dbar, report.dbar_samples);
-  if (!lights.empty()) lights = add_missing_lights(samples, std::move(lights), report.dbar_samples);
-  report.seconds["spots"] += watch.seconds();
-  if (lights.empty()) return lights;
-  return finish_in_space(target, std::move(samples), std::move(lights), report);
+  Fit fit = logged(report, "spots", "spots", Fit{}, [&](const Fit&) { return add_spots(samples, points_dbar); });
+  if (fit.lights.empty()) return {};
+  fit = logged(report, "add missing lights", "spots", fit, [&](const Fit& f) { return add_missing_lights(samples, f); });
+  report.dbar_samples = fit.dbar;
+  return finish_in_space(target, std::move(samples), std::move(fit), report);
 }
 
-Lighting Solver::finish_in_space(const Target& target, SampleSet samples, Lighting lights, SolveReport& report) {
-  Stopwatch merge_watch;
-  lights = merge_close_pairs(samples, std::move(lights), report.dbar_samples);
-  for (int round = 0; round < 4; ++round) {  // each split must pay (eq. 9)
-    const size_t before = lights.size();
-    lights = split_lamps(samples, std::move(lights), report.dbar_samples);
-    if (lights.size() == before) break;
-  }
-  report.seconds["reference polish"] += merge_watch.seconds();
-  lights = polish_residuals(target, std::move(samples), lights, false, report);
+Lighting Solver::finish_in_space(const Target& target, SampleSet samples, Fit fit, SolveReport& report) {
+  fit = logged(report, "merge pairs", "reference polish", fit, [&](const Fit& f) { return merge_close_pairs(samples, f); });
+  fit = logged(report, "split lamps", "reference polish", fit, [&](const Fit& start) {
+    Fit f = start;
+    for (int round = 0; round < 4; ++round) {  // each split must pay (eq. 9)
+      const size_t before = f.lights.size();
+      f = split_lamps(samples, std::move(f));
+      if (f.lights.size() == before) break;
+    }
+    return f;
+  });
+  report.dbar_samples = fit.dbar;
+  Lighting lights = polish_residuals(target, std::move(samples), fit.lights, false, report);
   finish_report(target, lights, report);
   return lights;
 }
@@ -486,18 +534,23 @@ Lighting Solver::fine_tune(const Target& target, const Lighting& given, SolveRep
   // Anchored at the reference from the start: lights that already produce
   // the target have a zero objective and stay exactly where they are. One
   // round, and no residual polish: fine-tune follows the painter's strokes.
-  Stopwatch refine_watch;
-  Lighting refined = polish_with_reference(samples, lights, true, report.dbar_samples, 1);
-  if (m_settings.settle_fine_tune && report.dbar_samples > kSettledDbar) {
-    double model_dbar = 0, settled_dbar = 0;
-    Lighting settled = settle_lights(samples, *m_space, m_renderer, m_reference, refined, model_dbar);
-    settled = polish_with_reference(samples, settled, true, settled_dbar, 0);  // the reference's D̄, intensities fitted
-    if (settled_dbar < report.dbar_samples) refined = std::move(settled), report.dbar_samples = settled_dbar;
+  Fit fit = logged(report, "reference polish", "refinement", Fit{lights, 1.0},
+                   [&](const Fit& f) { return polish_with_reference(samples, f.lights, true, 1); });
+  if (!m_settings.settle_fine_tune) {
+    report.stages.push_back({"settle", 0, fit.dbar, fit.dbar, false, false, "off (the bounce is off, or the renderer's direct light is not cheap)"});
+  } else if (m_judge.settled(fit.dbar)) {
+    report.stages.push_back({"settle", 0, fit.dbar, fit.dbar, false, false, "settled already (D̄ at most kSettledDbar)"});
+  } else {
+    fit = logged(report, "settle", "refinement", fit, [&](const Fit& f) {
+      const Fit settled = settle_lights(samples, *m_space, m_renderer, m_reference, f.lights);
+      Fit polished = polish_with_reference(samples, settled.lights, true, 0);  // the reference's D̄, intensities fitted
+      return polished.dbar < f.dbar ? polished : f;
+    });
   }
-  report.seconds["refinement"] += refine_watch.seconds();
-  finish_report(target, refined, report);
+  report.dbar_samples = fit.dbar;
+  finish_report(target, fit.lights, report);
   report.seconds["total"] = total.seconds();
-  return to_output(std::move(refined));
+  return to_output(std::move(fit.lights));
 }
 
 Lighting Solver::add_lights(const Target& target, const Lighting& given, SolveReport& report, std::stop_token stop) {
@@ -516,13 +569,19 @@ Lighting Solver::add_lights(const Target& target, const Lighting& given, SolveRe
   Target missing = target;
   for (size_t i = 0; i < missing.size(); ++i) missing.value[i] = glm::max(target.value[i] - current[i], Rgb(0.f));
   // What is left below ε_w of the target is model noise, not a missing light.
-  if (!(missing.norm() > m_settings.seeding.weak_threshold * target.norm()))
+  if (!(missing.norm() > m_judge.eps_w() * target.norm()))
     throw InputError(target.source, "the given lights already produce the target to within " +
-                                        std::to_string(int(std::round(100 * m_settings.seeding.weak_threshold))) + "%: nothing to add");
+                                        std::to_string(int(std::round(100 * m_judge.eps_w()))) + "%: nothing to add");
   SampleSet samples = sample(missing, report);
-  Lighting added = polish_with_reference(samples, solve_samples(samples, report), false, report.dbar_samples);
+  Fit added = logged(report, "seeding and cuts", "", Fit{}, [&](const Fit&) {
+    Lighting found = solve_samples(samples, report);
+    return Fit{std::move(found), report.dbar_samples};
+  });
+  added = logged(report, "reference polish", "", added,
+                 [&](const Fit& f) { return polish_with_reference(samples, f.lights, false); });
+  report.dbar_samples = added.dbar;
   Lighting all = lights;
-  all.insert(all.end(), added.begin(), added.end());
+  all.insert(all.end(), added.lights.begin(), added.lights.end());
   finish_report(target, all, report);
   report.seconds["total"] = total.seconds();
   return to_output(std::move(all));

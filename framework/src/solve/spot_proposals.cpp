@@ -5,10 +5,7 @@
 #include "hilight/solve/spot_screening.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
 #include <optional>
-#include <cstdlib>
 
 namespace hilight {
 
@@ -164,13 +161,11 @@ struct Model {
     std::vector<Rgb> best_bounce, best_residual, residual, estimate, intensities;
     double best_dbar = 1e300;
     std::optional<SampleSet> despiked;  // the samples the rounds fit, once without the spikes
-    static const bool debug = std::getenv("HILIGHT_SPOT_DEBUG");
     bool moved = true, despiking = false;
     for (int round = 0, rounds_without_gain = 0;; ++round) {  // rounds counted in each phase
       if (moved) {
         estimate = bounce_of(lights);
         const double d = fit(responses(lights, estimate), lights.size(), &residual, &intensities);
-        if (debug) std::fprintf(stderr, "settling, round %d%s: D̄ %.4e\n", round, despiking ? " without spikes" : "", d);
         rounds_without_gain = d < 0.98 * best_dbar ? 0 : rounds_without_gain + 1;
         if (best.empty() || d < best_dbar) {
           best = lights, best_bounce = estimate, best_residual = residual, best_dbar = d;
@@ -217,15 +212,6 @@ struct Model {
   }
 };
 
-void show(const char* what, const Lighting& spots, double dbar) {
-  static const bool debug = std::getenv("HILIGHT_SPOT_DEBUG");
-  if (!debug) return;
-  static auto t0 = std::chrono::steady_clock::now();
-  std::fprintf(stderr, "%s: D̄ %.4f at %.2f s\n", what, dbar, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  for (const auto& l : spots)
-    std::fprintf(stderr, "  (%.3f %.3f %.3f) dir (%.3f %.3f %.3f) cutoff %.2f falloff %.2f I %.2f\n", l.position.x, l.position.y,
-                 l.position.z, l.direction.x, l.direction.y, l.direction.z, l.cutoff_deg, l.falloff_deg, l.intensity.g);
-}
 
 /// The best of the screening's candidates for what `base` (responses
 /// `base_phi`, with bounce) leaves, each refined with the base held; `dbar`
@@ -248,7 +234,6 @@ std::optional<Light> best_candidate(const Model& model, const SpotScreen& screen
   for (const Light& start : screen.candidates(residual, kStarts)) {
     double d = 1.0;
     const Lighting one = model.refine({start}, base_phi, base_count, kCandidate, d);
-    if (std::getenv("HILIGHT_SPOT_DEBUG")) std::fprintf(stderr, "   start (%.2f %.2f %.2f) dir (%.2f %.2f %.2f) c %.1f -> (%.2f %.2f %.2f) c %.1f f %.1f: %.4f\n", start.position.x, start.position.y, start.position.z, start.direction.x, start.direction.y, start.direction.z, start.cutoff_deg, one[0].position.x, one[0].position.y, one[0].position.z, one[0].cutoff_deg, one[0].falloff_deg, d);
     if (d < dbar) dbar = d, best = one[0];
   }
   return best;
@@ -257,8 +242,8 @@ std::optional<Light> best_candidate(const Model& model, const SpotScreen& screen
 /// Each of `spots` in turn replaced by the best candidate for what the
 /// others leave, all then refined together; kept where D̄ falls.
 void replace_each(const Model& model, const SpotScreen& screen, Lighting& spots, std::vector<Rgb>& bounce, double& dbar,
-                  double visible_dbar) {
-  for (size_t s = 0; s < spots.size() && dbar > visible_dbar; ++s) {
+                  const Judge& judge) {
+  for (size_t s = 0; s < spots.size() && judge.light_more_visible(dbar); ++s) {
     std::vector<Rgb> trial_bounce;
     Lighting trial = without(spots, bounce, s, model.samples.size(), trial_bounce);
     double d = 1.0;
@@ -268,7 +253,6 @@ void replace_each(const Model& model, const SpotScreen& screen, Lighting& spots,
     trial = model.refine(std::move(trial), {}, 0, kJoint, d, &trial_bounce);
     if (!(d < dbar)) continue;
     spots = std::move(trial), bounce = std::move(trial_bounce), dbar = d;
-    show("swapped", spots, dbar);
   }
 }
 
@@ -309,7 +293,7 @@ Lighting split(const Model& model, const SpotScreen& screen, const Lighting& spo
 /// models with the bounce: their spot 10 cm low, D̄ 2.9%). Only once the
 /// set is built: while it is, a wide cone may be the first spot over two
 /// pools, and a point light, once there, is never a spot again.
-void wide_spots_as_points(const Model& model, double eps_impro, Lighting& spots, std::vector<Rgb>& bounce, double& dbar) {
+void wide_spots_as_points(const Model& model, const Judge& judge, Lighting& spots, std::vector<Rgb>& bounce, double& dbar) {
   for (size_t j = 0; j < spots.size(); ++j) {
     if (spots[j].type != LightType::Spot || spots[j].cutoff_deg < kWideSpotDeg) continue;
     Lighting trial = spots;
@@ -317,58 +301,53 @@ void wide_spots_as_points(const Model& model, double eps_impro, Lighting& spots,
     std::vector<Rgb> trial_bounce;
     double d = 1.0;
     trial = model.settle(std::move(trial), d, &trial_bounce);
-    if (!(d <= eps_impro * dbar)) continue;
+    if (!judge.fewer_will_do(dbar, d)) continue;  // the point light is the simpler light: "fewer" parameters
     spots = std::move(trial), bounce = std::move(trial_bounce), dbar = d;
-    show("as a point", spots, dbar);
   }
 }
 
 } // namespace
 
-Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference,
-                       const SpotProposalSettings& settings, double& dbar) {
+Fit propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference,
+                  const SpotProposalSettings& settings) {
   const size_t m = samples.size();
   const Model model{samples, space, renderer, reference};
-  show("start", {}, 1.0);
   const SpotScreen screen(samples, space, renderer);
-  show("screen", {}, 1.0);
   Lighting spots;
   std::vector<Rgb> bounce;
-  dbar = 1.0;  // no light: all of Ψ is missing
+  double dbar = 1.0;  // no light: all of Ψ is missing
   // One spot a round for what the others leave (eq. 9 forward, as the point
   // lights' add_missing_lights): each of the screening's candidates refined
   // with the others held, the best kept, then all refined together.
-  while (spots.size() < settings.max_spots && dbar > settings.visible_dbar) {
+  const Judge& judge = settings.judge;
+  while (spots.size() < judge.max_spots() && judge.light_more_visible(dbar)) {
     double one_dbar = 1.0;
     const auto best = best_candidate(model, screen, spots.empty() ? std::vector<Rgb>{} : model.responses(spots, bounce), spots.size(), one_dbar);
     if (!best) break;
-    show("candidates", {}, one_dbar);
     Lighting more = spots;
     more.push_back(*best);
     std::vector<Rgb> more_bounce;
     double more_dbar = one_dbar;
     more = model.refine(std::move(more), {}, 0, kJoint, more_dbar, &more_bounce);
-    show("added", more, more_dbar);
-    bool pays = dbar >= settings.eps_impro * more_dbar || dbar - more_dbar >= settings.weak_threshold;
+    bool pays = judge.light_more_pays(dbar, more_dbar);
     if (!pays && more.size() > 1) {
       // Re-placed given the others, each spot may do better: the first spot
       // over pools that overlap is one wide cone; once others hold some of
       // them, its best place is one pool. Then the spot more may pay.
-      replace_each(model, screen, more, more_bounce, more_dbar, settings.visible_dbar);
-      pays = dbar >= settings.eps_impro * more_dbar || dbar - more_dbar >= settings.weak_threshold;
+      replace_each(model, screen, more, more_bounce, more_dbar, judge);
+      pays = judge.light_more_pays(dbar, more_dbar);
     }
     if (!pays) break;
     spots = std::move(more), bounce = std::move(more_bounce), dbar = more_dbar;
   }
-  if (spots.empty()) return spots;
+  if (spots.empty()) return {spots, dbar};
   // Poorly explained still: a spot may hold two pools that overlap. Each
   // spot tried as two, kept if the spot more pays (eq. 9).
-  for (size_t s = 0; dbar > settings.split_dbar && s < spots.size() && spots.size() < settings.max_spots; ++s) {
+  for (size_t s = 0; judge.split_spots(dbar) && s < spots.size() && spots.size() < judge.max_spots(); ++s) {
     std::vector<Rgb> split_bounce;
     double split_dbar = 1.0;
     Lighting two = split(model, screen, spots, bounce, s, split_bounce, split_dbar);
-    show("split", two, split_dbar);
-    if (two.empty() || !(dbar >= settings.eps_impro * split_dbar || dbar - split_dbar >= settings.weak_threshold)) continue;
+    if (two.empty() || !judge.light_more_pays(dbar, split_dbar)) continue;
     spots = std::move(two), bounce = std::move(split_bounce), dbar = split_dbar;
   }
   // The set is built: every edge free, plain least squares.
@@ -376,8 +355,7 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
   // From here on each D̄ is with the bounce re-taken where the lights stand,
   // as the settling's is (the rounds' own is with the bounce they held).
   dbar = model.dbar_with(spots, bounce);
-  show("freed", spots, dbar);
-  wide_spots_as_points(model, settings.eps_impro, spots, bounce, dbar);
+  wide_spots_as_points(model, judge, spots, bounce, dbar);
   // Eq. 9 backwards: the spot whose loss the others bear best (intensities
   // re-fitted) goes if, the others refined without it, the loss is less
   // than ε_impro (and less than ε_w of ‖Ψ‖), or invisible.
@@ -397,22 +375,20 @@ Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Render
     double fewer_dbar = least;
     fewer = model.refine(std::move(fewer), {}, 0, kFree, fewer_dbar, &fewer_bounce);
     fewer_dbar = model.dbar_with(fewer, fewer_bounce);
-    const bool pays = fewer_dbar >= settings.eps_impro * dbar || fewer_dbar - dbar >= settings.weak_threshold;
-    if (pays && fewer_dbar > settings.visible_dbar) break;
+    if (judge.light_more_pays(fewer_dbar, dbar) && judge.light_more_visible(fewer_dbar)) break;  // the spot pays: it stays
     spots = std::move(fewer), bounce = std::move(fewer_bounce), dbar = fewer_dbar;
-    show("pruned", spots, dbar);
   }
   // The last word: past the slopes' stop, a simplex over every light's
   // geometry (spot_refinement.hpp).
   spots = model.settle(std::move(spots), dbar, &bounce, true);
-  show("settled", spots, dbar);
-  return spots;
+  return {std::move(spots), dbar};
 }
 
-Lighting settle_lights(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference, Lighting lights,
-                       double& dbar) {
+Fit settle_lights(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference, Lighting lights) {
   const Model model{samples, space, renderer, reference};
-  return model.settle(std::move(lights), dbar, nullptr, true);
+  Fit fit;
+  fit.lights = model.settle(std::move(lights), fit.dbar, nullptr, true);
+  return fit;
 }
 
 } // namespace hilight

@@ -9,6 +9,14 @@
 
 namespace hilight {
 
+/// What every move of the solve takes and gives: lights and their D̄ at the
+/// samples (the solve's own objective; which renderer measured it is the
+/// move's to say). A move returns a new Fit, or the one it was given.
+struct Fit {
+  Lighting lights;
+  double dbar = 1.0;  ///< no light: all of Ψ is missing
+};
+
 /// Best non-negative intensities (per channel) for lights with responses
 /// `phi` (light-major, m per light) against the samples' target. `scale`
 /// (one per sample, or empty) multiplies the samples' weights per channel.

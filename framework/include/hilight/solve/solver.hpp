@@ -6,7 +6,9 @@
 #include "hilight/light_space.hpp"
 #include "hilight/optimizer.hpp"
 #include "hilight/sampler.hpp"
+#include "hilight/solve/fit.hpp"
 #include "hilight/solve/hierarchy.hpp"
+#include "hilight/solve/judge.hpp"
 #include "hilight/solve/seeder.hpp"
 #include "hilight/solve/luminaire_renderer.hpp"
 #include "hilight/solve/stoppable_renderer.hpp"
@@ -72,12 +74,26 @@ struct SolveSettings {
 /// lamp 2–4 cm off, 8000 found it), a small one is covered by 3000.
 size_t sample_count_for(size_t target_points);
 
+/// The judge's settings from the solve's: ε_impro, ε_w, ε_opt, N_cut and the count bounds.
+JudgeSettings judge_settings(const SolveSettings& settings);
+
 struct CutRecord {
   size_t lights = 0;        ///< point lights of the cut (spots are added to every cut)
   double dbar_initial = 0;  ///< D̄ at the samples, intensities re-fitted by NNLS
   bool refined = false;
   double dbar_refined = 0;
   Lighting refined_lights;  ///< may hold fewer lights: weak ones are pruned after refinement
+};
+
+/// One stage of a solve (a move of its plan, or a whole alternative such as
+/// the open space or the spot search): what it cost and what it did.
+struct StageRecord {
+  std::string name;
+  double seconds = 0;
+  double dbar_before = 0, dbar_after = 0;  ///< D̄ at the samples (target: over the target points, as SolveReport::dbar)
+  bool target = false;  ///< D̄ measured over the target points, not the samples
+  bool kept = false;    ///< the stage changed the answer (its proposal won)
+  std::string skipped;  ///< why it did not run (its premise failed); empty when it ran
 };
 
 struct SolveReport {
@@ -95,6 +111,7 @@ struct SolveReport {
   double dbar_closed = -1;           ///< when that was tried: D̄ of the best answer inside the bounds
   double unreachable = 0;            ///< poor fits: share of the target no allowed light position sees (diagnosis.hpp)
   std::map<std::string, double> seconds;
+  std::vector<StageRecord> stages;   ///< in the order they ran, skipped ones included
 };
 
 using ProgressFn = std::function<void(const std::string& stage)>;
@@ -131,10 +148,11 @@ public:
   /// `hilight render` uses): intensities re-fitted, lights the fit switches
   /// off dropped (unless `keep_count` or --lights N), then a polish anchored
   /// at the reference, kept only if the reference says it helps. So lights
-  /// that made the target are a fixed point. `dbar` gets D̄ at the samples;
+  /// that made the target are a fixed point. The Fit's D̄ is at the samples;
   /// `rounds`: Gauss–Newton rounds, each re-anchored (one reference φ each).
-  Lighting polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, double& dbar,
-                                 int rounds = 3);
+  Fit polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, int rounds = 3);
+  /// The one judge of every count decision and threshold (judge.hpp).
+  const Judge& judge() const { return m_judge; }
   /// InputError unless every light may stand where it is (in bounds, out of solids).
   void require_admissible(const Lighting& lights, const std::string& what) const;
   /// The hierarchy of the last solve (for moving between cuts).
@@ -165,7 +183,7 @@ private:
   /// lights they compete with).
   Lighting spots_in_space(const Target& target, double points_dbar, SolveReport& report);
   /// Both: nearby point pairs merged, the residual polish, the report.
-  Lighting finish_in_space(const Target& target, SampleSet samples, Lighting lights, SolveReport& report);
+  Lighting finish_in_space(const Target& target, SampleSet samples, Fit fit, SolveReport& report);
   /// Lights may stand beyond the scene's open sides from now on (its own
   /// light cache); `open_space(false)` goes back.
   /// Removes lights with (almost) zero intensity, unless the count is fixed or at its minimum.
@@ -182,34 +200,34 @@ private:
   /// The light cache restricted to `samples` (nullptr without a cache).
   std::unique_ptr<LightCacheView> cache_view(const SampleSet& samples) const;
   /// The count bounds: --lights N, else the placement's count:MIN:MAX (0: none).
-  size_t min_lights() const;
-  size_t max_lights() const;
+  size_t min_lights() const { return m_judge.min_lights(); }
+  size_t max_lights() const { return m_judge.max_lights(); }
   SampleSet sample(const Target& target, SolveReport& report);
   Lighting solve_samples(const SampleSet& samples, SolveReport& report);
   /// Refines `start`, anchored at it, then re-anchored at the result and polished.
-  Lighting refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar,
-                           RefineEffort effort = RefineEffort::Full);
+  Fit refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start,
+                      RefineEffort effort = RefineEffort::Full);
   void finish_report(const Target& target, const Lighting& lights, SolveReport& report);
   /// Eq. 9 upward on the final lights: one light more where the target is
   /// least explained, polished, kept while it improves D̄ by ε_impro or
   /// lowers it by ε_w (lamps the hierarchy merged away).
-  Lighting add_missing_lights(const SampleSet& samples, Lighting lights, double& dbar);
+  Fit add_missing_lights(const SampleSet& samples, Fit fit);
   /// Spotlights alone for the target (solve/spot_proposals.hpp),
   /// polished by the reference; empty when none helps or when they leave
   /// D̄ at or above `give_up_dbar` before the polish.
-  Lighting add_spots(const SampleSet& samples, double give_up_dbar, double& dbar);
+  Fit add_spots(const SampleSet& samples, double give_up_dbar);
   /// Each spot at least kWideSpotDeg wide tried as a point light where it
   /// stands, polished by the reference; kept unless the spot's D̄ is better
   /// by ε_impro.
-  Lighting wide_spots_as_points(const SampleSet& samples, Lighting lights, double& dbar);
+  Fit wide_spots_as_points(const SampleSet& samples, Fit fit);
   /// Eq. 9 once more on the final lights: the nearest two point lights merged
   /// (eq. 7) and polished, kept while D̄ grows by less than ε_impro (a lamp
   /// the hierarchy left split in two).
-  Lighting merge_close_pairs(const SampleSet& samples, Lighting lights, double& dbar);
+  Fit merge_close_pairs(const SampleSet& samples, Fit fit);
   /// The inverse of a merge: the point light whose share of the target is
   /// worst explained split in two (along each axis), polished, kept when eq.
   /// 9 says the light more pays (two close lamps the seeding found as one).
-  Lighting split_lamps(const SampleSet& samples, Lighting lights, double& dbar);
+  Fit split_lamps(const SampleSet& samples, Fit fit);
   /// Polishes again with the worst-explained target points added to the samples.
   Lighting polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
                             SolveReport& report);
@@ -218,6 +236,10 @@ private:
   float neighbourhood_radius() const;
   /// Reports a stage to the progress callback; SolveCancelled if stop was requested.
   void stage(const std::string& name) const;
+  /// Runs `body` on `before` as the stage `name`: timed (also into
+  /// report.seconds[`seconds_key`]) and logged in report.stages.
+  Fit logged(SolveReport& report, const std::string& name, const std::string& seconds_key, const Fit& before,
+             const std::function<Fit(const Fit&)>& body);
 
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
@@ -232,6 +254,7 @@ private:
   Optimizer& m_optimizer;
   const LightCacheBuilder* m_cache_builder;
   SolveSettings m_settings;
+  Judge m_judge;  ///< from m_settings
   ProgressFn m_progress;
   bool m_open = false;  ///< lights are sought in the open space (beyond the scene's open sides)
   std::unique_ptr<LightCache> m_cache, m_other_cache;  ///< the current space's light cache, the other's

@@ -20,9 +20,9 @@ namespace hilight {
 
 using namespace solver_detail;
 
-Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, double& dbar) {
+Fit Solver::add_missing_lights(const SampleSet& samples, Fit fit) {
   const size_t least = min_lights(), most = max_lights();
-  if (m_settings.fixed_count != 0 && lights.size() >= least) return lights;
+  if (m_judge.count_fixed() && fit.lights.size() >= least) return fit;
   const size_t m = samples.size();
   const auto view = cache_view(samples);
   ResponseModel model(m_renderer, samples, view.get()), exact(m_renderer, samples, nullptr);
@@ -32,7 +32,7 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
   // leaves unexplained (by NNLS with the rest), refined and polished.
   // `quick`: the light is only placed and fitted (below the count asked for,
   // lights are added regardless; one polish follows).
-  auto with_best_candidate = [&](const Lighting& base, double& result_dbar, bool quick) -> std::optional<Lighting> {
+  auto with_best_candidate = [&](const Lighting& base, bool quick) -> std::optional<Fit> {
     std::vector<Rgb> phi = model.responses(base);
     const std::vector<Rgb> l0 = fit_intensities(phi, base.size(), samples);
     const Lighting candidates = residual_candidates(combine(phi, l0, m), samples, *m_space, cell, 8);
@@ -52,47 +52,38 @@ Lighting Solver::add_missing_lights(const SampleSet& samples, Lighting lights, d
     if (quick) {
       const std::vector<Rgb> l = fit_intensities(model.responses(more), more.size(), samples);
       for (size_t j = 0; j < more.size(); ++j) more[j].intensity = l[j];
-      result_dbar = best_dbar;
-      return more;
+      return Fit{std::move(more), best_dbar};
     }
-    more = refine_anchored(model, exact, more, result_dbar);
-    return polish_with_reference(samples, more, false, result_dbar);
+    return polish_with_reference(samples, refine_anchored(model, exact, more).lights, false);
   };
-  for (int round = 0; round < 8 + int(least) && (dbar > kVisibleDbar || lights.size() < least) && (most == 0 || lights.size() < most);
+  for (int round = 0; round < 8 + int(least) && (m_judge.light_more_visible(fit.dbar) || fit.lights.size() < least) &&
+                      (most == 0 || fit.lights.size() < most);
        ++round) {
     // One light more, kept by eq. 9 — or, when several lamps are missing and
     // each explains only its share, by eq. 6's measure: it takes away at
     // least ε_w of ‖Ψ‖ from the residual. Below the count asked for it is
     // kept anyway.
-    double more_dbar = 0;
-    const bool forced = lights.size() < least;
-    auto more = with_best_candidate(lights, more_dbar, forced && lights.size() + 1 < least);
-    const bool pays = more && more->size() > lights.size() &&
-                      (lights.size() < least || dbar >= m_settings.eps_impro * more_dbar ||
-                       dbar - more_dbar >= m_settings.seeding.weak_threshold);
-    if (!pays) return lights;
-    lights = std::move(*more);
-    dbar = more_dbar;
+    const bool forced = fit.lights.size() < least;
+    auto more = with_best_candidate(fit.lights, forced && fit.lights.size() + 1 < least);
+    const bool pays = more && more->lights.size() > fit.lights.size() &&
+                      (fit.lights.size() < least || m_judge.light_more_pays(fit.dbar, more->dbar));
+    if (!pays) return fit;
+    fit = std::move(*more);
   }
-  return lights;
+  return fit;
 }
 
-Lighting Solver::add_spots(const SampleSet& samples, double give_up_dbar, double& dbar) {
+Fit Solver::add_spots(const SampleSet& samples, double give_up_dbar) {
   stage("screening spotlights");
-  SpotProposalSettings settings;
-  settings.max_spots = max_lights() ? std::min<size_t>(kMaxSpots, max_lights()) : kMaxSpots;  // the count rule
-  settings.weak_threshold = m_settings.seeding.weak_threshold;
-  settings.eps_impro = m_settings.eps_impro;
-  settings.visible_dbar = kVisibleDbar;
-  const Lighting spots = propose_spots(samples, *m_space, m_renderer, m_reference, settings, dbar);
+  const Fit spots = propose_spots(samples, *m_space, m_renderer, m_reference, {m_judge});
   // Spots that explain less than the point lights did are not what the
   // target lacks (a painted patch no light makes): the reference polish and
   // the point lights beside them would cost 5x the proposal to lose.
-  if (spots.empty() || dbar >= give_up_dbar) return {};
-  return wide_spots_as_points(samples, polish_with_reference(samples, spots, false, dbar), dbar);
+  if (spots.lights.empty() || spots.dbar >= give_up_dbar) return {};
+  return wide_spots_as_points(samples, polish_with_reference(samples, spots.lights, false));
 }
 
-Lighting Solver::wide_spots_as_points(const SampleSet& samples, Lighting lights, double& dbar) {
+Fit Solver::wide_spots_as_points(const SampleSet& samples, Fit fit) {
   // Spots are proposed from nothing, so a bare lamp comes back as a spot as
   // wide as a cone may be; its cone then cuts what a point light lights
   // above its rim (measured: D̄ 0.5% on the curved models, their own lamp
@@ -101,19 +92,20 @@ Lighting Solver::wide_spots_as_points(const SampleSet& samples, Lighting lights,
   // improves D̄ by ε_impro (eq. 9), so that where the two fit about as well
   // a rounding difference does not decide (the models at ×1000 kept the
   // spot while at ×1 the point light won).
-  for (size_t j = 0; j < lights.size(); ++j) {
-    if (lights[j].type != LightType::Spot || lights[j].cutoff_deg < kWideSpotDeg) continue;
-    Lighting trial = lights;
-    trial[j] = Light::point(lights[j].position, lights[j].intensity);
-    double trial_dbar = 0;
-    trial = polish_with_reference(samples, trial, true, trial_dbar);
-    if (trial_dbar <= m_settings.eps_impro * dbar) lights = std::move(trial), dbar = trial_dbar;
+  for (size_t j = 0; j < fit.lights.size(); ++j) {
+    const Light& light = fit.lights[j];
+    if (light.type != LightType::Spot || light.cutoff_deg < kWideSpotDeg) continue;
+    Lighting trial = fit.lights;
+    trial[j] = Light::point(light.position, light.intensity);
+    Fit as_point = polish_with_reference(samples, trial, true);
+    if (m_judge.fewer_will_do(fit.dbar, as_point.dbar)) fit = std::move(as_point);
   }
-  return lights;
+  return fit;
 }
 
-Lighting Solver::merge_close_pairs(const SampleSet& samples, Lighting lights, double& dbar) {
-  if (m_settings.fixed_count != 0) return lights;
+Fit Solver::merge_close_pairs(const SampleSet& samples, Fit fit) {
+  if (m_judge.count_fixed()) return fit;
+  Lighting& lights = fit.lights;
   auto weight = [](const Light& l) { return double(l.intensity.r + l.intensity.g + l.intensity.b); };
   while (lights.size() > min_lights()) {
     size_t a = 0, b = 0;
@@ -123,27 +115,26 @@ Lighting Solver::merge_close_pairs(const SampleSet& samples, Lighting lights, do
         if (lights[i].type == LightType::Point && lights[j].type == LightType::Point &&
             glm::length(lights[i].position - lights[j].position) < nearest)
           nearest = glm::length(lights[i].position - lights[j].position), a = i, b = j;
-    if (nearest > 0.08f * m_scene->diagonal()) return lights;  // far apart: different lamps, not a split one
+    if (nearest > 0.08f * m_scene->diagonal()) return fit;  // far apart: different lamps, not a split one
     const double wa = weight(lights[a]), wb = weight(lights[b]);
-    if (!(wa + wb > 0)) return lights;
+    if (!(wa + wb > 0)) return fit;
     Lighting merged;
     for (size_t i = 0; i < lights.size(); ++i)
       if (i != a && i != b) merged.push_back(lights[i]);
     const Vec3 position = Vec3((wa * DVec3(lights[a].position) + wb * DVec3(lights[b].position)) / (wa + wb));
-    if (!m_space->admissible(position)) return lights;
+    if (!m_space->admissible(position)) return fit;
     merged.insert(merged.begin() + std::ptrdiff_t(std::min(a, merged.size())), Light::point(position, lights[a].intensity + lights[b].intensity));
-    double merged_dbar = 0;
-    merged = polish_with_reference(samples, merged, false, merged_dbar);
-    if (!(merged_dbar <= m_settings.eps_impro * dbar)) return lights;
-    lights = std::move(merged);
-    dbar = merged_dbar;
+    Fit polished = polish_with_reference(samples, merged, false);
+    if (!m_judge.fewer_will_do(fit.dbar, polished.dbar)) return fit;
+    fit = std::move(polished);
   }
-  return lights;
+  return fit;
 }
 
-Lighting Solver::split_lamps(const SampleSet& samples, Lighting lights, double& dbar) {
+Fit Solver::split_lamps(const SampleSet& samples, Fit fit) {
   const size_t most = max_lights();
-  if (m_settings.fixed_count != 0 || dbar <= kSplitDbar || (most != 0 && lights.size() >= most)) return lights;
+  const Lighting& lights = fit.lights;
+  if (m_judge.count_fixed() || !m_judge.split_lamps(fit.dbar) || (most != 0 && lights.size() >= most)) return fit;
   const size_t m = samples.size();
   const auto view = cache_view(samples);
   ResponseModel model(m_renderer, samples, view.get()), exact(m_renderer, samples, nullptr);
@@ -165,12 +156,11 @@ Lighting Solver::split_lamps(const SampleSet& samples, Lighting lights, double& 
     share[owner] += r, total += r;
   }
   const size_t j = size_t(std::max_element(share.begin(), share.end()) - share.begin());
-  if (lights[j].type != LightType::Point || !(share[j] > 0.25 * total)) return lights;
+  if (lights[j].type != LightType::Point || !(share[j] > 0.25 * total)) return fit;
   // Two halves a quarter of a seeding cell to either side, along each axis.
   const Vec3 extent = m_space->bounds().extent();
   const float offset = 0.25f * std::max({extent.x, extent.y, extent.z}) / float(2 * std::max(1, m_settings.seeding.coarse_cells));
-  Lighting best;
-  double best_dbar = dbar;
+  Fit best{{}, fit.dbar};
   for (int axis = 0; axis < 3; ++axis) {
     Vec3 step(0.f);
     step[axis] = offset;
@@ -183,13 +173,14 @@ Lighting Solver::split_lamps(const SampleSet& samples, Lighting lights, double& 
       trial.push_back(Light::point(p, 0.5f * lights[j].intensity));
     }
     if (trial.size() != lights.size() + 1) continue;
-    double trial_dbar = 0;
-    trial = refine_anchored(model, exact, trial, trial_dbar, RefineEffort::Polish);
-    trial = polish_with_reference(samples, trial, false, trial_dbar);
-    if (trial.size() == lights.size() + 1 && trial_dbar < best_dbar) best = std::move(trial), best_dbar = trial_dbar;
+    Fit polished = polish_with_reference(samples, refine_anchored(model, exact, trial, RefineEffort::Polish).lights, false);
+    if (polished.lights.size() == lights.size() + 1 && polished.dbar < best.dbar) best = std::move(polished);
   }
-  if (best.empty() || !(dbar >= m_settings.eps_impro * best_dbar)) return lights;  // eq. 9: the light more must pay
-  dbar = best_dbar;
+  // Eq. 9: the light more must pay — by the ratio clause alone, as the
+  // split has always been judged (its sweeps were measured so); not ε_w's
+  // share of light_more_pays: two halves of one light always share its
+  // light, so the share says nothing about a second lamp.
+  if (best.lights.empty() || !m_judge.ratio_pays(fit.dbar, best.dbar)) return fit;
   return best;
 }
 

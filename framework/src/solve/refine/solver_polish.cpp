@@ -19,8 +19,7 @@ namespace hilight {
 
 using namespace solver_detail;
 
-Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, double& dbar,
-                                 RefineEffort effort) {
+Fit Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start, RefineEffort effort) {
   SampleRefineProblem problem(model, *m_space, m_cache ? &exact : nullptr);
   const SampleSet& samples = model.samples();
   const double norm = samples.target_norm();
@@ -50,7 +49,7 @@ Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, con
   Lighting kept;
   for (size_t j = 0; j < refined.size(); ++j)
     if (refined[j].type == LightType::Spot ||
-        contribution(phi, j, refined[j].intensity, samples) >= m_settings.seeding.weak_threshold * norm)
+        !m_judge.weak(contribution(phi, j, refined[j].intensity, samples), norm))
       kept.push_back(refined[j]);
   // With the count fixed by the user (--lights N) every light stays.
   if (m_settings.fixed_count == 0 && effort == RefineEffort::Full && !kept.empty() && kept.size() < refined.size() &&
@@ -63,12 +62,10 @@ Lighting Solver::refine_anchored(ResponseModel& model, ResponseModel& exact, con
   // Each value is accurate at its own anchor, so the two compare fairly.
   double value = problem.objective(refined);
   if (value > start_value) refined = start, value = start_value;  // refinement may only help
-  dbar = std::sqrt(std::max(0.0, value)) / norm;
-  return refined;
+  return {std::move(refined), std::sqrt(std::max(0.0, value)) / norm};
 }
 
-Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, double& dbar,
-                                       int rounds) {
+Fit Solver::polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, int rounds) {
   // The fast model (fast twin, light cache) found the positions; the
   // reference decides. Anchoring makes the model equal to the reference at
   // the lights it is anchored at, so every value compared below is exact.
@@ -96,8 +93,8 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
   // lights are already near), re-anchored after each round — the anchor's
   // correction is exact only where it was taken, so each round's value is
   // the reference's own, and the next round starts anchored at `fitted`.
-  // Below 0.01% D̄ at the samples nothing is left that anyone could see.
-  for (int round = 0; round < rounds && norm > 0 && std::sqrt(best) > 1e-4 * norm; ++round) {
+  // Settled (D̄ 0.01% at the samples): nothing is left that anyone could see.
+  for (int round = 0; round < rounds && norm > 0 && !m_judge.settled(std::sqrt(best) / norm); ++round) {
     GaussNewtonSettings settings;
     settings.move_spots = true;
     Lighting stepped = gauss_newton_polish(problem, fitted, settings);
@@ -111,8 +108,7 @@ Lighting Solver::polish_with_reference(const SampleSet& samples, const Lighting&
     fitted = std::move(stepped), best = value;
     if (small_gain) break;
   }
-  dbar = norm > 0 ? std::sqrt(std::max(0.0, best)) / norm : 0.0;
-  return fitted;
+  return {std::move(fitted), norm > 0 ? std::sqrt(std::max(0.0, best)) / norm : 0.0};
 }
 
 Lighting Solver::polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
@@ -126,7 +122,11 @@ Lighting Solver::polish_residuals(const Target& target, SampleSet samples, const
   // Below 0.2% D̄ there is nothing a designer would see; and where the whole
   // target is explained about as well as the samples, the samples saw what
   // matters (an infeasible target stays infeasible with more of them).
-  if (!m_settings.residual_samples || report.dbar <= 2e-3 || report.dbar <= 1.25 * report.dbar_samples) return lights;
+  if (!m_settings.residual_samples || !m_judge.add_residual_samples(report.dbar, report.dbar_samples)) {
+    report.stages.push_back({"residual polish", 0, report.dbar, report.dbar, true, false,
+                             !m_settings.residual_samples ? "turned off" : "the samples saw what the target lacks"});
+    return lights;
+  }
   // The points that hold most of the remaining squared error — often a few
   // hot spots under lamps that the samples barely touch — join the samples.
   std::vector<double> residual(measured.size());
@@ -154,18 +154,19 @@ Lighting Solver::polish_residuals(const Target& target, SampleSet samples, const
   }
   if (added == 0) return lights;
   Stopwatch polish_watch;
-  double dbar_samples = 0;
-  Lighting polished = polish_with_reference(samples, lights, keep_count, dbar_samples);
+  Fit polished = polish_with_reference(samples, lights, keep_count);
   report.seconds["residual polish"] += polish_watch.seconds();
   Stopwatch again;
-  const double dbar = normalized_difference(m_reference.illuminate(measured.points, polished), measured);
+  const double dbar = normalized_difference(m_reference.illuminate(measured.points, polished.lights), measured);
   report.seconds["evaluation"] += again.seconds();
+  StageRecord record{"residual polish", polish_watch.seconds(), report.dbar, dbar, true, dbar < report.dbar, {}};
+  report.stages.push_back(record);
   if (!(dbar < report.dbar)) return lights;
   report.dbar = dbar;
-  report.dbar_samples = dbar_samples;
+  report.dbar_samples = polished.dbar;
   report.residual_samples = added;
   report.samples = samples.size();
-  return polished;
+  return std::move(polished.lights);
 }
 
 } // namespace hilight

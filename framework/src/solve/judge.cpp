@@ -1,0 +1,29 @@
+#include "hilight/solve/judge.hpp"
+
+#include <algorithm>
+
+namespace hilight {
+
+bool Judge::spots_win(size_t n_spots, double d_spots, size_t n_points, double d_points) const {
+  if (n_spots == 0 || !count_allowed(n_spots)) return false;
+  if (n_spots == n_points) return d_spots < d_points;
+  // Fewer spots than point lights: the extra point lights do not pay. Strict
+  // here (fewer_will_do's tie goes to the fewer lights): the competition has
+  // always been strict, and the point answer is the one already polished.
+  if (n_spots < n_points) return d_spots < m_settings.eps_impro * d_points;
+  return ratio_pays(d_points, d_spots);  // the extra lights pay
+}
+
+size_t Judge::max_spots() const { return max_lights() ? std::min(kMaxSpots, max_lights()) : kMaxSpots; }
+
+CountRule Judge::count_rule(size_t leaves) const {
+  // A count the seeding cannot reach (--lights N, count:MIN) takes every
+  // seeded light here; the add-missing move adds the rest.
+  CountRule rule{std::min(m_settings.fixed_count, leaves), m_settings.n_cut, m_settings.eps_opt, m_settings.eps_impro,
+                 m_settings.visible_dbar};
+  rule.min_count = std::min(min_lights(), leaves);
+  rule.max_count = max_lights();
+  return rule;
+}
+
+} // namespace hilight
