@@ -10,6 +10,8 @@
 #include "hilight/solve/fit.hpp"
 #include "hilight/solve/gauss_newton.hpp"
 #include "hilight/solve/refine_problem.hpp"
+#include "hilight/solve/solve_context.hpp"
+#include "hilight/solve/solve_plans.hpp"
 #include "hilight/solve/spot_proposals.hpp"
 #include "solver_internal.hpp"
 
@@ -31,19 +33,6 @@ std::string hex(uint64_t v) {
   char buf[17];
   std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(v));
   return buf;
-}
-
-/// Lights of cut `k` (positions and summed intensities) followed by the spots.
-Lighting lights_of_cut(const LightHierarchy& h, size_t k, const Lighting& spots, std::vector<Rgb>& phi) {
-  Lighting lights;
-  phi.clear();
-  for (int node : h.cut(k)) {
-    const Cluster& c = h.nodes()[node];
-    lights.push_back(Light::point(c.position, c.intensity));
-    phi.insert(phi.end(), c.phi.begin(), c.phi.end());
-  }
-  lights.insert(lights.end(), spots.begin(), spots.end());
-  return lights;
 }
 
 } // namespace
@@ -76,6 +65,12 @@ Solver::Solver(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScen
       m_optimizer(optimizer), m_cache_builder(cache),
       m_settings(std::move(settings)), m_judge(judge_settings(m_settings)), m_progress(std::move(progress)) {}
 
+Fit Solver::run(const Plan& plan, const Target& target, const SampleSet& samples, SolveReport& report, Fit start) {
+  SolveContext ctx{*m_scene, target,   samples, *m_space, m_renderer, m_reference, m_cache.get(), m_optimizer,
+                   m_judge,  m_settings, m_stop,  m_progress, report,   m_products};
+  return run_plan(plan, ctx, std::move(start));
+}
+
 void Solver::stage(const std::string& name) const {
   if (m_stop.stop_requested()) throw SolveCancelled();
   if (m_progress) m_progress(name);
@@ -89,17 +84,6 @@ void carry_log(SolveReport& to, const SolveReport& from) {
   to.stages = from.stages;
 }
 } // namespace
-
-Fit Solver::logged(SolveReport& report, const std::string& name, const std::string& seconds_key, const Fit& before,
-                   const std::function<Fit(const Fit&)>& body) {
-  Stopwatch watch;
-  Fit after = body(before);
-  const double seconds = watch.seconds();
-  if (!seconds_key.empty()) report.seconds[seconds_key] += seconds;
-  const bool changed = after.lights != before.lights || after.dbar != before.dbar;
-  report.stages.push_back({name, seconds, before.dbar, after.dbar, false, changed, {}});
-  return after;
-}
 
 float Solver::neighbourhood_radius() const {
   // Two tessellation edges, within [diagonal/1000, diagonal/20]: a coarse
@@ -151,121 +135,9 @@ void Solver::ensure_cache(SolveReport& report) {
   report.seconds["cache"] += watch.seconds();
 }
 
-std::unique_ptr<LightCacheView> Solver::cache_view(const SampleSet& samples) const {
-  return m_cache ? m_cache->view(*m_scene, samples) : nullptr;
-}
-
-Lighting Solver::solve_samples(const SampleSet& samples, SolveReport& report) {
-  const size_t m = samples.size();
-  m_cuts.clear();
-  m_hierarchy.reset();
-  const auto view = cache_view(samples);
-  ResponseModel model(m_renderer, samples, view.get());
-
-  stage("seeding");
-  Stopwatch seed_watch;
-  SeedResult seed = seed_lights(model, *m_space, m_settings.spot_hints, m_settings.seeding);
-  report.seconds["seeding"] += seed_watch.seconds();
-  const size_t n_points = seed.lights.size() - seed.spot_count;
-  report.seed_lights = n_points;
-  report.seeds_tried = seed.lights_tried;
-  if (n_points == 0 && seed.spot_count == 0)
-    throw InputError(m_space->rules().any() ? "--place " + m_space->rules().describe() +
-                                                 ": no light allowed there brightens the target (the rules exclude the lit region, or no place satisfies them)"
-                                           : std::string("the seeding found no light that brightens the target"));
-  if (n_points == 0) {  // only the requested spotlights: no hierarchy, refine them alone
-    Stopwatch refine_watch;
-    ResponseModel exact(m_renderer, samples, nullptr);
-    Fit spots_only = refine_anchored(model, exact, seed.lights);
-    report.dbar_samples = spots_only.dbar;
-    report.seconds["refinement"] += refine_watch.seconds();
-    return std::move(spots_only.lights);
-  }
-
-  stage("building the light hierarchy");
-  Stopwatch hierarchy_watch;
-  Lighting leaves(seed.lights.begin(), seed.lights.begin() + std::ptrdiff_t(n_points));
-  std::vector<Rgb> leaf_phi(seed.phi.begin(), seed.phi.begin() + std::ptrdiff_t(n_points * m));
-  std::vector<Rgb> spot_phi(seed.phi.begin() + std::ptrdiff_t(n_points * m), seed.phi.end());
-  Lighting spots(seed.lights.begin() + std::ptrdiff_t(n_points), seed.lights.end());
-  std::vector<Rgb> spot_l;
-  for (const auto& s : spots) spot_l.push_back(s.intensity);
-  // A merged light stands in free space, in the room of one of the two.
-  const LightSpace& space = *m_space;
-  auto may_stand_at = [&space](const Vec3& x, const Vec3& a, const Vec3& b) {
-    if (!space.admissible(x)) return false;
-    const int room = space.regions().at(x);
-    return room == space.regions().at(a) || room == space.regions().at(b);
-  };
-  m_hierarchy = LightHierarchy::build(model, leaves, leaf_phi, spot_phi, spot_l, m_settings.hierarchy, may_stand_at);
-  report.seconds["hierarchy"] += hierarchy_watch.seconds();
-
-  // Every cut's D̄ with intensities re-fitted (a better start than the sums).
-  report.cuts.assign(n_points, {});
-  std::vector<Lighting> starts(n_points);
-  for (size_t k = 1; k <= n_points; ++k) {
-    std::vector<Rgb> phi;
-    Lighting lights = lights_of_cut(*m_hierarchy, k, spots, phi);
-    phi.insert(phi.end(), spot_phi.begin(), spot_phi.end());
-    std::vector<Rgb> l = fit_intensities(phi, lights.size(), samples);
-    for (size_t j = 0; j < lights.size(); ++j) lights[j].intensity = l[j];
-    report.cuts[k - 1].lights = k;
-    report.cuts[k - 1].dbar_initial = normalized_difference(combine(phi, l, m), samples);
-    starts[k - 1] = std::move(lights);
-  }
-
-  // Which cuts to refine and how many lights (solve/cuts.cpp).
-  // A count the seeding cannot reach (--lights N, count:MIN) takes every
-  // seeded light here; add_missing_lights() adds the rest where the fit is worst.
-  const CountRule rule = m_judge.count_rule(n_points);
-  std::vector<double> initial;
-  for (const auto& c : report.cuts) initial.push_back(c.dbar_initial);
-  const std::vector<size_t> chosen = choose_cuts(initial, rule);
-
-  Stopwatch refine_watch;
-  ResponseModel exact(m_renderer, samples, nullptr);
-  auto refine_cut = [&](size_t k) {
-    if (report.cuts[k - 1].refined) return;
-    stage("refining the cut with " + std::to_string(k) + " lights");
-    CutRecord& rec = report.cuts[k - 1];
-    Fit refined = refine_anchored(model, exact, starts[k - 1]);
-    rec.refined_lights = std::move(refined.lights);
-    rec.dbar_refined = refined.dbar;
-    rec.refined = true;
-  };
-  auto dbar_of = [&](size_t k) { return report.cuts[k - 1].refined ? report.cuts[k - 1].dbar_refined : report.cuts[k - 1].dbar_initial; };
-  {
-    // The walk always needs a neighbour of the first cut: refine both at
-    // once (each refinement has serial stretches; two fill both cores).
-    const size_t first = chosen.front();
-    const FirstNeighbour neighbour = first_neighbour(initial, chosen, rule);
-    tbb::task_group group;
-    group.run([&] { refine_cut(first); });
-    if (neighbour == FirstNeighbour::Below) group.run([&] { refine_cut(first - 1); });
-    if (neighbour == FirstNeighbour::Above) group.run([&] { refine_cut(first + 1); });
-    group.wait();
-  }
-  // Cuts are refined lazily, only as the walk needs them.
-  const size_t count = walk_count(initial, chosen, rule, [&](size_t k) {
-    refine_cut(k);
-    return report.cuts[k - 1].dbar_refined;
-  });
-  report.seconds["refinement"] += refine_watch.seconds();
-  for (size_t k = 1; k < n_points; ++k) {
-    double next = dbar_of(k + 1);
-    report.improvement.push_back(next > 0 ? dbar_of(k) / next : 0.0);
-  }
-  report.dbar_samples = report.cuts[count - 1].dbar_refined;
-  // Kept for cut_lights(): every cut, refined where the solve refined it.
-  m_cuts.clear();
-  for (size_t k = 1; k <= n_points; ++k)
-    m_cuts.push_back(report.cuts[k - 1].refined ? report.cuts[k - 1].refined_lights : starts[k - 1]);
-  return report.cuts[count - 1].refined_lights;
-}
-
 Lighting Solver::cut_lights(size_t k) const {
-  if (m_cuts.empty()) throw std::logic_error("Solver::cut_lights: no solve yet");
-  return to_output(m_cuts[std::clamp<size_t>(k, 1, m_cuts.size()) - 1]);
+  if (m_products.cuts.empty()) throw std::logic_error("Solver::cut_lights: no solve yet");
+  return to_output(m_products.cuts[std::clamp<size_t>(k, 1, m_products.cuts.size()) - 1]);
 }
 
 Lighting Solver::to_points(const Lighting& lights) const {
@@ -280,23 +152,8 @@ std::vector<Rgb> Solver::illumination(const Target& target, const Lighting& ligh
   return m_reference.illuminate(target.points, lights);
 }
 
-SampleSet Solver::evaluation_set(const Target& target) const {
-  const size_t want = m_settings.evaluation_points;
-  if (want == 0 || want >= target.size()) return all_samples(target);
-  // Evenly spaced target points estimate the whole target's D̄ at a fixed
-  // cost — unless the target's light is concentrated where the spacing does
-  // not look (a small painted patch): then every point is measured.
-  const size_t n = target.size();
-  SampleSet measured;
-  for (size_t k = 0; k < want; ++k) measured.add(target, uint32_t(std::min(n - 1, k * n / want)));
-  const double share = double(measured.size()) / double(n);
-  const double energy = measured.target_norm() * measured.target_norm(), total = target.norm() * target.norm();
-  if (!(energy > 0.5 * share * total && energy < 2.0 * share * total)) return all_samples(target);
-  return measured;
-}
-
 double Solver::measure_dbar(const Target& target, const Lighting& lights) {
-  SampleSet measured = evaluation_set(target);
+  SampleSet measured = evaluation_set(target, m_settings.evaluation_points);
   return normalized_difference(m_reference.illuminate(measured.points, lights), measured);
 }
 
@@ -306,7 +163,7 @@ void Solver::finish_report(const Target& target, const Lighting& lights, SolveRe
   report.target_points = target.size();
   if (report.dbar_points > 0) return;  // measured by polish_residuals
   Stopwatch watch;
-  const SampleSet measured = evaluation_set(target);
+  const SampleSet measured = evaluation_set(target, m_settings.evaluation_points);
   report.dbar = normalized_difference(m_reference.illuminate(measured.points, lights), measured);
   report.dbar_points = measured.size();
   report.seconds["evaluation"] += watch.seconds();
@@ -436,8 +293,8 @@ void Solver::open_space(bool open) {
   m_space.emplace(*m_rays, m_settings.placement, open ? m_open_bounds : m_closed_bounds, std::move(regions));
   m_open = open;
   std::swap(m_cache, m_other_cache);
-  m_hierarchy.reset();
-  m_cuts.clear();
+  m_products.hierarchy.reset();
+  m_products.cuts.clear();
 }
 
 void Solver::open_space_for(const Lighting& lights) {
@@ -447,16 +304,10 @@ void Solver::open_space_for(const Lighting& lights) {
 
 Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {
   ensure_cache(report);
-  SampleSet samples = sample(target, report);
-  Fit fit = logged(report, "seeding and cuts", "", Fit{}, [&](const Fit&) {
-    Lighting found = solve_samples(samples, report);
-    return Fit{std::move(found), report.dbar_samples};
-  });
-  fit = logged(report, "reference polish", "reference polish", fit,
-               [&](const Fit& f) { return polish_with_reference(samples, f.lights, false); });
-  fit = logged(report, "add missing lights", "reference polish", fit, [&](const Fit& f) { return add_missing_lights(samples, f); });
-  report.dbar_samples = fit.dbar;
-  return finish_in_space(target, std::move(samples), std::move(fit), report);
+  const SampleSet samples = sample(target, report);
+  Fit fit = run(point_plan(m_settings), target, samples, report, Fit{});
+  finish_report(target, fit.lights, report);
+  return std::move(fit.lights);
 }
 
 Lighting Solver::solve_each_spin(const Target& target, Lighting lights, SolveReport& report) {
@@ -498,29 +349,11 @@ void Solver::turn_luminaire(float spin_deg) {
 
 Lighting Solver::spots_in_space(const Target& target, double points_dbar, SolveReport& report) {
   ensure_cache(report);
-  SampleSet samples = sample(target, report);
-  Fit fit = logged(report, "spots", "spots", Fit{}, [&](const Fit&) { return add_spots(samples, points_dbar); });
+  const SampleSet samples = sample(target, report);
+  Fit fit = run(spot_plan(m_settings, points_dbar), target, samples, report, Fit{});
   if (fit.lights.empty()) return {};
-  fit = logged(report, "add missing lights", "spots", fit, [&](const Fit& f) { return add_missing_lights(samples, f); });
-  report.dbar_samples = fit.dbar;
-  return finish_in_space(target, std::move(samples), std::move(fit), report);
-}
-
-Lighting Solver::finish_in_space(const Target& target, SampleSet samples, Fit fit, SolveReport& report) {
-  fit = logged(report, "merge pairs", "reference polish", fit, [&](const Fit& f) { return merge_close_pairs(samples, f); });
-  fit = logged(report, "split lamps", "reference polish", fit, [&](const Fit& start) {
-    Fit f = start;
-    for (int round = 0; round < 4; ++round) {  // each split must pay (eq. 9)
-      const size_t before = f.lights.size();
-      f = split_lamps(samples, std::move(f));
-      if (f.lights.size() == before) break;
-    }
-    return f;
-  });
-  report.dbar_samples = fit.dbar;
-  Lighting lights = polish_residuals(target, std::move(samples), fit.lights, false, report);
-  finish_report(target, lights, report);
-  return lights;
+  finish_report(target, fit.lights, report);
+  return std::move(fit.lights);
 }
 
 Lighting Solver::fine_tune(const Target& target, const Lighting& given, SolveReport& report, std::stop_token stop) {
@@ -534,20 +367,7 @@ Lighting Solver::fine_tune(const Target& target, const Lighting& given, SolveRep
   // Anchored at the reference from the start: lights that already produce
   // the target have a zero objective and stay exactly where they are. One
   // round, and no residual polish: fine-tune follows the painter's strokes.
-  Fit fit = logged(report, "reference polish", "refinement", Fit{lights, 1.0},
-                   [&](const Fit& f) { return polish_with_reference(samples, f.lights, true, 1); });
-  if (!m_settings.settle_fine_tune) {
-    report.stages.push_back({"settle", 0, fit.dbar, fit.dbar, false, false, "off (the bounce is off, or the renderer's direct light is not cheap)"});
-  } else if (m_judge.settled(fit.dbar)) {
-    report.stages.push_back({"settle", 0, fit.dbar, fit.dbar, false, false, "settled already (D̄ at most kSettledDbar)"});
-  } else {
-    fit = logged(report, "settle", "refinement", fit, [&](const Fit& f) {
-      const Fit settled = settle_lights(samples, *m_space, m_renderer, m_reference, f.lights);
-      Fit polished = polish_with_reference(samples, settled.lights, true, 0);  // the reference's D̄, intensities fitted
-      return polished.dbar < f.dbar ? polished : f;
-    });
-  }
-  report.dbar_samples = fit.dbar;
+  Fit fit = run(fine_tune_plan(m_settings), target, samples, report, Fit{lights, 1.0});
   finish_report(target, fit.lights, report);
   report.seconds["total"] = total.seconds();
   return to_output(std::move(fit.lights));
@@ -573,13 +393,7 @@ Lighting Solver::add_lights(const Target& target, const Lighting& given, SolveRe
     throw InputError(target.source, "the given lights already produce the target to within " +
                                         std::to_string(int(std::round(100 * m_judge.eps_w()))) + "%: nothing to add");
   SampleSet samples = sample(missing, report);
-  Fit added = logged(report, "seeding and cuts", "", Fit{}, [&](const Fit&) {
-    Lighting found = solve_samples(samples, report);
-    return Fit{std::move(found), report.dbar_samples};
-  });
-  added = logged(report, "reference polish", "", added,
-                 [&](const Fit& f) { return polish_with_reference(samples, f.lights, false); });
-  report.dbar_samples = added.dbar;
+  Fit added = run(add_plan(m_settings), missing, samples, report, Fit{});
   Lighting all = lights;
   all.insert(all.end(), added.lights.begin(), added.lights.end());
   finish_report(target, all, report);

@@ -1,7 +1,6 @@
 #pragma once
-// What the Solver's translation units share (solver.cpp orchestrates;
-// refine/solver_polish.cpp and refine/solver_count_edits.cpp refine and
-// edit the count): a stopwatch. Every threshold is the Judge's
+// What the solve's translation units share (solver.cpp, move.cpp and the
+// moves in moves/): a stopwatch. Every threshold is the Judge's
 // (hilight/solve/judge.hpp). Not installed.
 #include <chrono>
 

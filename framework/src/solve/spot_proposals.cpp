@@ -1,6 +1,7 @@
 #include "hilight/solve/spot_proposals.hpp"
 
 #include "hilight/solve/fit.hpp"
+#include "hilight/solve/moves.hpp"
 #include "hilight/solve/spot_refinement.hpp"
 #include "hilight/solve/spot_screening.hpp"
 
@@ -212,10 +213,6 @@ struct Model {
   }
 };
 
-
-/// The best of the screening's candidates for what `base` (responses
-/// `base_phi`, with bounce) leaves, each refined with the base held; `dbar`
-/// its D̄ beside them. Nothing when the screening has no candidate.
 /// `spots` without spot `s`; `kept_bounce` gets the others' bounce.
 Lighting without(const Lighting& spots, const std::vector<Rgb>& bounce, size_t s, size_t m, std::vector<Rgb>& kept_bounce) {
   Lighting kept = spots;
@@ -225,6 +222,9 @@ Lighting without(const Lighting& spots, const std::vector<Rgb>& bounce, size_t s
   return kept;
 }
 
+/// The best of the screening's candidates for what `base` (responses
+/// `base_phi`, with bounce) leaves, each refined with the base held; `dbar`
+/// its D̄ beside them. Nothing when the screening has no candidate.
 std::optional<Light> best_candidate(const Model& model, const SpotScreen& screen, const std::vector<Rgb>& base_phi, size_t base_count,
                                     double& dbar) {
   std::vector<Rgb> residual;
@@ -286,24 +286,21 @@ Lighting split(const Model& model, const SpotScreen& screen, const Lighting& spo
 }
 
 /// Each spot at least kWideSpotDeg wide tried as a point light, all then
-/// settled together; kept unless the cone improves D̄ by ε_impro (eq. 9:
-/// the simpler light wins a near tie). Spots are proposed from cones, so a
-/// bare lamp arrives as the widest cone, which cuts what the lamp lights
-/// above its rim; the spots beside it bend to make up for that (the curved
-/// models with the bounce: their spot 10 cm low, D̄ 2.9%). Only once the
-/// set is built: while it is, a wide cone may be the first spot over two
-/// pools, and a point light, once there, is never a spot again.
+/// settled together (the trial shared with the solve's move,
+/// moves/wide_spots_as_points.cpp). Only once the set is built: while it
+/// is, a wide cone may be the first spot over two pools, and a point light,
+/// once there, is never a spot again.
 void wide_spots_as_points(const Model& model, const Judge& judge, Lighting& spots, std::vector<Rgb>& bounce, double& dbar) {
-  for (size_t j = 0; j < spots.size(); ++j) {
-    if (spots[j].type != LightType::Spot || spots[j].cutoff_deg < kWideSpotDeg) continue;
-    Lighting trial = spots;
-    trial[j] = Light::point(spots[j].position, spots[j].intensity);
-    std::vector<Rgb> trial_bounce;
-    double d = 1.0;
-    trial = model.settle(std::move(trial), d, &trial_bounce);
-    if (!judge.fewer_will_do(dbar, d)) continue;  // the point light is the simpler light: "fewer" parameters
-    spots = std::move(trial), bounce = std::move(trial_bounce), dbar = d;
-  }
+  std::vector<Rgb> trial_bounce;
+  Fit fit = hilight::wide_spots_as_points(
+      judge, Fit{spots, dbar},
+      [&](const Lighting& trial) {
+        Fit settled;
+        settled.lights = model.settle(trial, settled.dbar, &trial_bounce);
+        return settled;
+      },
+      [&] { bounce = trial_bounce; });
+  spots = std::move(fit.lights), dbar = fit.dbar;
 }
 
 } // namespace
@@ -317,7 +314,7 @@ Fit propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& r
   std::vector<Rgb> bounce;
   double dbar = 1.0;  // no light: all of Ψ is missing
   // One spot a round for what the others leave (eq. 9 forward, as the point
-  // lights' add_missing_lights): each of the screening's candidates refined
+  // lights' add-missing move): each of the screening's candidates refined
   // with the others held, the best kept, then all refined together.
   const Judge& judge = settings.judge;
   while (spots.size() < judge.max_spots() && judge.light_more_visible(dbar)) {

@@ -11,6 +11,7 @@
 #include "hilight/solve/judge.hpp"
 #include "hilight/solve/seeder.hpp"
 #include "hilight/solve/luminaire_renderer.hpp"
+#include "hilight/solve/move.hpp"
 #include "hilight/solve/stoppable_renderer.hpp"
 #include "hilight/target.hpp"
 
@@ -116,6 +117,15 @@ struct SolveReport {
 
 using ProgressFn = std::function<void(const std::string& stage)>;
 
+/// What a solve leaves for later calls: the hierarchy and every cut (the
+/// painter's count control moves along them without a new solve).
+struct SolveProducts {
+  std::optional<LightHierarchy> hierarchy;
+  std::vector<Lighting> cuts;  ///< index k-1: the cut with k point lights
+};
+
+
+
 /// A solve session over one scene: keeps the ray scene, renderer and light
 /// cache alive so later edits (fine-tune, add) reuse them.
 class Solver {
@@ -144,21 +154,14 @@ public:
   std::vector<Rgb> illumination(const Target& target, const Lighting& lights);
   /// D̄ of `lights` on the target, measured with the reference renderer.
   double measure_dbar(const Target& target, const Lighting& lights);
-  /// The solve's last word on `lights`, against the reference renderer (what
-  /// `hilight render` uses): intensities re-fitted, lights the fit switches
-  /// off dropped (unless `keep_count` or --lights N), then a polish anchored
-  /// at the reference, kept only if the reference says it helps. So lights
-  /// that made the target are a fixed point. The Fit's D̄ is at the samples;
-  /// `rounds`: Gauss–Newton rounds, each re-anchored (one reference φ each).
-  Fit polish_with_reference(const SampleSet& samples, const Lighting& lights, bool keep_count, int rounds = 3);
   /// The one judge of every count decision and threshold (judge.hpp).
   const Judge& judge() const { return m_judge; }
   /// InputError unless every light may stand where it is (in bounds, out of solids).
   void require_admissible(const Lighting& lights, const std::string& what) const;
   /// The hierarchy of the last solve (for moving between cuts).
-  const std::optional<LightHierarchy>& hierarchy() const { return m_hierarchy; }
+  const std::optional<LightHierarchy>& hierarchy() const { return m_products.hierarchy; }
   /// Number of cuts of the last solve (point lights of its largest cut).
-  size_t cut_count() const { return m_cuts.size(); }
+  size_t cut_count() const { return m_products.cuts.size(); }
   /// The lights of the last solve's (or add's: the added lights') cut with
   /// `k` point lights (k clamped to [1, cut_count()]), refined if the solve
   /// refined it — refinement may have pruned weak lights, so a refined cut
@@ -182,8 +185,6 @@ private:
   /// alone explain less than `points_dbar`, D̄ at the samples of the point
   /// lights they compete with).
   Lighting spots_in_space(const Target& target, double points_dbar, SolveReport& report);
-  /// Both: nearby point pairs merged, the residual polish, the report.
-  Lighting finish_in_space(const Target& target, SampleSet samples, Fit fit, SolveReport& report);
   /// Lights may stand beyond the scene's open sides from now on (its own
   /// light cache); `open_space(false)` goes back.
   /// Removes lights with (almost) zero intensity, unless the count is fixed or at its minimum.
@@ -197,49 +198,17 @@ private:
   /// pipeline works with, and its results as luminaires; otherwise as they are.
   Lighting to_points(const Lighting& lights) const;
   Lighting to_output(Lighting lights) const;
-  /// The light cache restricted to `samples` (nullptr without a cache).
-  std::unique_ptr<LightCacheView> cache_view(const SampleSet& samples) const;
   /// The count bounds: --lights N, else the placement's count:MIN:MAX (0: none).
   size_t min_lights() const { return m_judge.min_lights(); }
   size_t max_lights() const { return m_judge.max_lights(); }
   SampleSet sample(const Target& target, SolveReport& report);
-  Lighting solve_samples(const SampleSet& samples, SolveReport& report);
-  /// Refines `start`, anchored at it, then re-anchored at the result and polished.
-  Fit refine_anchored(ResponseModel& model, ResponseModel& exact, const Lighting& start,
-                      RefineEffort effort = RefineEffort::Full);
   void finish_report(const Target& target, const Lighting& lights, SolveReport& report);
-  /// Eq. 9 upward on the final lights: one light more where the target is
-  /// least explained, polished, kept while it improves D̄ by ε_impro or
-  /// lowers it by ε_w (lamps the hierarchy merged away).
-  Fit add_missing_lights(const SampleSet& samples, Fit fit);
-  /// Spotlights alone for the target (solve/spot_proposals.hpp),
-  /// polished by the reference; empty when none helps or when they leave
-  /// D̄ at or above `give_up_dbar` before the polish.
-  Fit add_spots(const SampleSet& samples, double give_up_dbar);
-  /// Each spot at least kWideSpotDeg wide tried as a point light where it
-  /// stands, polished by the reference; kept unless the spot's D̄ is better
-  /// by ε_impro.
-  Fit wide_spots_as_points(const SampleSet& samples, Fit fit);
-  /// Eq. 9 once more on the final lights: the nearest two point lights merged
-  /// (eq. 7) and polished, kept while D̄ grows by less than ε_impro (a lamp
-  /// the hierarchy left split in two).
-  Fit merge_close_pairs(const SampleSet& samples, Fit fit);
-  /// The inverse of a merge: the point light whose share of the target is
-  /// worst explained split in two (along each axis), polished, kept when eq.
-  /// 9 says the light more pays (two close lamps the seeding found as one).
-  Fit split_lamps(const SampleSet& samples, Fit fit);
-  /// Polishes again with the worst-explained target points added to the samples.
-  Lighting polish_residuals(const Target& target, SampleSet samples, const Lighting& lights, bool keep_count,
-                            SolveReport& report);
-  /// Points D̄ is measured on (all, or evenly spaced when evaluation_points is set).
-  SampleSet evaluation_set(const Target& target) const;
   float neighbourhood_radius() const;
   /// Reports a stage to the progress callback; SolveCancelled if stop was requested.
   void stage(const std::string& name) const;
-  /// Runs `body` on `before` as the stage `name`: timed (also into
-  /// report.seconds[`seconds_key`]) and logged in report.stages.
-  Fit logged(SolveReport& report, const std::string& name, const std::string& seconds_key, const Fit& before,
-             const std::function<Fit(const Fit&)>& body);
+  /// Runs `plan` (solve_plans.hpp) on `samples` of `target` from `start`,
+  /// its moves given exactly what a SolveContext holds.
+  Fit run(const Plan& plan, const Target& target, const SampleSet& samples, SolveReport& report, Fit start);
 
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
@@ -258,8 +227,7 @@ private:
   ProgressFn m_progress;
   bool m_open = false;  ///< lights are sought in the open space (beyond the scene's open sides)
   std::unique_ptr<LightCache> m_cache, m_other_cache;  ///< the current space's light cache, the other's
-  std::optional<LightHierarchy> m_hierarchy;
-  std::vector<Lighting> m_cuts;  ///< index k-1: the cut with k point lights
+  SolveProducts m_products;  ///< the last solve's hierarchy and cuts
 };
 
 } // namespace hilight
