@@ -172,4 +172,5 @@ TEST_CASE("moves: the plans are data, decided from the settings", "[moves]") {
   s.settle_fine_tune = true;  // the bounce on and a renderer whose direct light is cheap
   CHECK(names(fine_tune_plan(s)) == std::vector<std::string>{"reference polish", "settle"});
   CHECK(names(add_plan(s)) == std::vector<std::string>{"seeding and cuts", "reference polish"});
+  CHECK(aim_plan(s).steps.empty());  // no luminaire: nothing to turn
 }

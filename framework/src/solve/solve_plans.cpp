@@ -1,6 +1,7 @@
 // The solve's plans as data: every choice of which moves run, in one place.
 #include "hilight/solve/solve_plans.hpp"
 
+#include "hilight/photometry.hpp"
 #include "hilight/solve/moves.hpp"
 
 namespace hilight {
@@ -54,6 +55,14 @@ Plan add_plan(const SolveSettings&) {
   Plan plan{"add", {}};
   plan.steps.push_back({seed_and_cut_move(), ""});
   plan.steps.push_back({reference_polish_move(false, 3), ""});
+  return plan;
+}
+
+Plan aim_plan(const SolveSettings& settings) {
+  Plan plan{"luminaire aim", {}};
+  const bool turns_apart =
+      settings.luminaire && settings.luminaire->profile && distinct_spins(*settings.luminaire->profile).size() > 1;
+  if (turns_apart) plan.steps.push_back({luminaire_aim_move(), "aim"});
   return plan;
 }
 

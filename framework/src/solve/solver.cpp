@@ -258,15 +258,14 @@ Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_toke
     report.stages.push_back(record);
   }
   drop_idle_lights(lights);
-  if (m_settings.luminaire && m_settings.luminaire->profile && distinct_spins(*m_settings.luminaire->profile).size() > 1 && !lights.empty()) {
-    // An asymmetric luminaire: each one's turn about its aim, then measured again.
+  if (const Plan aim = aim_plan(m_settings); !aim.steps.empty() && !lights.empty()) {
+    // An asymmetric luminaire: each one's turn about its aim, on samples of
+    // their own, then measured again.
     stage("aiming the luminaires");
-    Stopwatch watch;
-    const double before = report.dbar_samples;
-    lights = aim_luminaires(m_reference, sample(target, report), to_output(std::move(lights)), report.dbar_samples);
+    const SampleSet samples = sample(target, report);
+    Fit aimed = run(aim, target, samples, report, Fit{to_output(std::move(lights)), report.dbar_samples});
+    lights = std::move(aimed.lights);
     report.dbar_points = 0;
-    report.seconds["aim"] += watch.seconds();
-    report.stages.push_back({"luminaire aim", watch.seconds(), before, report.dbar_samples, false, true, {}});
   }
   finish_report(target, lights, report);
   if (m_judge.poor_fit(report.dbar)) report.unreachable = unreachable_share(target, *m_space);

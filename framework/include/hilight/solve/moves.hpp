@@ -38,6 +38,9 @@ Fit wide_spots_as_points(const Judge& judge, Fit fit, const std::function<Fit(co
                          const std::function<void()>& kept = {});
 /// Fine-tune's settling (settle_lights), kept where the reference says it fits better.
 std::shared_ptr<Move> settle_move();
+/// Each luminaire of the fit turned about its aim to the spin that fits
+/// best (luminaire_aim.hpp); the fit's lights are luminaires.
+std::shared_ptr<Move> luminaire_aim_move();
 /// The worst-explained target points joined to the samples, polished again;
 /// sets the report's D̄ over the target.
 std::shared_ptr<Move> residual_polish_move(bool keep_count);

@@ -18,5 +18,8 @@ Plan spot_plan(const SolveSettings& settings, double points_dbar);
 Plan fine_tune_plan(const SolveSettings& settings);
 /// Add: the missing light from nothing (seeding and cuts) and the reference polish.
 Plan add_plan(const SolveSettings& settings);
+/// After the solve, with a luminaire whose profile tells turns apart
+/// (distinct_spins): each luminaire's own turn. Empty otherwise.
+Plan aim_plan(const SolveSettings& settings);
 
 } // namespace hilight
