@@ -86,15 +86,6 @@ bool get(std::istream& in, T* data, size_t count) {
   return bool(in.read(reinterpret_cast<char*>(data), std::streamsize(count * sizeof(T))));
 }
 
-/// Vertices [begin, end) of `all`.
-SurfacePoints vertex_range(const SurfacePoints& all, size_t begin, size_t end) {
-  SurfacePoints points;
-  points.positions.assign(all.positions.begin() + std::ptrdiff_t(begin), all.positions.begin() + std::ptrdiff_t(end));
-  points.normals.assign(all.normals.begin() + std::ptrdiff_t(begin), all.normals.begin() + std::ptrdiff_t(end));
-  points.albedo.assign(all.albedo.begin() + std::ptrdiff_t(begin), all.albedo.begin() + std::ptrdiff_t(end));
-  return points;
-}
-
 } // namespace
 
 float NodeResponses::half_to_float(uint16_t h) { return glm::unpackHalf1x16(h); }
@@ -134,34 +125,32 @@ void NodeResponses::trace(const Scene& scene, Renderer& renderer, const std::vec
   const size_t first = count();
   m_nodes.resize(first + positions.size(), std::vector<Block>(blocks()));
   const SurfacePoints all = SurfacePoints::from_vertices(scene);
-  // A block of vertices at a time, every node over it, then the next: the
-  // renderer's bounce gathers over one block are made once and dropped after
-  // it. A few nodes a call keep the float responses small.
-  constexpr size_t kBatch = 16;
-  const size_t batches = (positions.size() + kBatch - 1) / kBatch;
-  ProgressStage progress("building the light cache", double(blocks() * batches));
-  for (size_t block = 0; block < blocks(); ++block) {
-    const size_t lo = block * kBlock, n = std::min(kBlock, m_vertex_count - lo);
-    const SurfacePoints points = vertex_range(all, lo, lo + n);
-    for (size_t begin = 0; begin < positions.size(); begin += kBatch) {
-      Lighting lights;
-      for (size_t k = begin; k < std::min(positions.size(), begin + kBatch); ++k) lights.push_back(Light::point(positions[k], Rgb(1.f)));
-      const std::vector<Rgb> traced = renderer.unit_responses(points, lights, Transport::IndirectOnly);
-      tbb::parallel_for(size_t(0), lights.size(), [&](size_t k) {
-        const Rgb* node = traced.data() + k * n;
-        float scale = 0.f;
-        for (size_t v = 0; v < n; ++v) scale = std::max({scale, node[v].r, node[v].g, node[v].b});
-        const float inverse = scale > 0.f ? 1.f / scale : 0.f;
-        std::vector<uint16_t> h(3 * n);
-        for (size_t v = 0; v < n; ++v)
-          for (int c = 0; c < 3; ++c) h[3 * v + c] = uint16_t(glm::packHalf1x16(std::max(0.f, node[v][c]) * inverse));
-        m_nodes[first + begin + k][block] = pack_block(scale, h.data(), n);
-      });
-      progress.advance();
-    }
-    // With one block its gathers serve the next call too (the adaptive
-    // cache traces in rounds); with several they would only pile up.
-    if (blocks() > 1) renderer.release_scratch();
+  // A few nodes a call, at every vertex at once, cut into blocks after: a
+  // renderer with further bounces transports each light over the whole
+  // scene whatever points it is asked about, so a call per block of vertices
+  // transported every node's light once per block (8 times in a furnished
+  // flat of 258k vertices; issue 33). The batch keeps the float responses
+  // under about 64 MB.
+  const size_t batch = std::clamp<size_t>(size_t(64e6 / (sizeof(Rgb) * double(m_vertex_count))), 1, 16);
+  const size_t batches = (positions.size() + batch - 1) / batch;
+  ProgressStage progress("building the light cache", double(batches));
+  for (size_t begin = 0; begin < positions.size(); begin += batch) {
+    Lighting lights;
+    for (size_t k = begin; k < std::min(positions.size(), begin + batch); ++k) lights.push_back(Light::point(positions[k], Rgb(1.f)));
+    const std::vector<Rgb> traced = renderer.unit_responses(all, lights, Transport::IndirectOnly);
+    tbb::parallel_for(size_t(0), lights.size() * blocks(), [&](size_t task) {
+      const size_t k = task / blocks(), block = task % blocks();
+      const size_t lo = block * kBlock, n = std::min(kBlock, m_vertex_count - lo);
+      const Rgb* node = traced.data() + k * m_vertex_count + lo;
+      float scale = 0.f;
+      for (size_t v = 0; v < n; ++v) scale = std::max({scale, node[v].r, node[v].g, node[v].b});
+      const float inverse = scale > 0.f ? 1.f / scale : 0.f;
+      std::vector<uint16_t> h(3 * n);
+      for (size_t v = 0; v < n; ++v)
+        for (int c = 0; c < 3; ++c) h[3 * v + c] = uint16_t(glm::packHalf1x16(std::max(0.f, node[v][c]) * inverse));
+      m_nodes[first + begin + k][block] = pack_block(scale, h.data(), n);
+    });
+    progress.advance();
   }
 }
 

@@ -144,6 +144,14 @@ std::vector<Vec3> free_grid_points(const LightSpace& space, int along_longest) {
   return out;
 }
 
+std::vector<Vec3> free_places_in_every_room(const LightSpace& space, int along_longest) {
+  std::vector<Cell> cells = free_cells(coarse_cells(space.bounds(), along_longest), space);
+  add_region_cells(cells, space, along_longest);
+  std::vector<Vec3> out;
+  for (const auto& c : cells) out.push_back(c.centre);
+  return out;
+}
+
 SeedResult seed_lights(ResponseModel& model, const LightSpace& space, const Lighting& spots, const SeedSettings& settings) {
   const SampleSet& samples = model.samples();
   const size_t m = samples.size();

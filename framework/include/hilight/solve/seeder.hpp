@@ -36,6 +36,10 @@ Lighting residual_candidates(const std::vector<Rgb>& lit, const SampleSet& sampl
 /// space's bounds) where a light may stand: placed, admissible, clear of
 /// surfaces. Candidate apexes for spotlights.
 std::vector<Vec3> free_grid_points(const LightSpace& space, int along_longest);
+/// free_grid_points() and, in each room (Regions) that grid barely reaches,
+/// places of its own at half that density across the room (as the seeding
+/// adds them): a small closed room of a large building gets some.
+std::vector<Vec3> free_places_in_every_room(const LightSpace& space, int along_longest);
 
 /// `spots`: spotlights the target asked for (fixed positions/directions);
 /// they join every NNLS and are never deleted.
