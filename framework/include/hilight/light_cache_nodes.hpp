@@ -15,9 +15,7 @@ namespace hilight {
 
 class NodeResponses {
 public:
-  /// Vertices traced together and kept under one scale: the renderer keeps
-  /// the bounce gathers of one block at a time (a building's every vertex at
-  /// once would be hundreds of MB), and a dim corner of the scene keeps its
+  /// Vertices kept under one scale: a dim corner of the scene keeps its
   /// precision beside a bright one.
   static constexpr size_t kBlock = 32768;
 
@@ -25,7 +23,8 @@ public:
   explicit NodeResponses(size_t vertex_count) : m_vertex_count(vertex_count) {}
 
   /// Appends the bounce of a unit light at each of `positions` over every
-  /// vertex (a block of vertices at a time, a few lights a renderer call),
+  /// vertex (a few lights a renderer call, each over every vertex: a
+  /// renderer with further bounces transports a light over the whole scene),
   /// rounded as the disk keeps it so that a solve that built a cache and one
   /// that loaded it see the same numbers.
   void trace(const Scene& scene, Renderer& renderer, const std::vector<Vec3>& positions);

@@ -7,9 +7,10 @@
 namespace hilight {
 
 double unreachable_share(const Target& target, const LightSpace& space, size_t max_points) {
-  // Every room's own places too: an 8-cell grid over a flat of several rooms
-  // can miss a small room, and its lit points would be blamed (issue 33).
-  const std::vector<Vec3> places = free_places_in_every_room(space, 8);
+  // A 16-cell grid (0.75 m in a 12 m flat) and every room's own places: an
+  // 8-cell grid over a flat of several rooms can miss a small room, and its
+  // lit points would be blamed (issue 33).
+  const std::vector<Vec3> places = free_places_in_every_room(space, 16);
   const RayScene& rays = space.rays();
   const size_t n = target.size(), stride = std::max<size_t>(1, n / std::max<size_t>(1, max_points));
   std::vector<size_t> points;

@@ -7,7 +7,7 @@
 namespace hilight {
 
 /// Share of the target's weighted squared radiance on points that see no
-/// place a light may stand (the free points of an 8-cell grid over the light
+/// place a light may stand (the free points of a 16-cell grid over the light
 /// space, and places of their own in rooms that grid misses, under the
 /// placement rules): light painted inside closed solids,
 /// behind walls the rules keep lights out of. Up to `max_points` target
