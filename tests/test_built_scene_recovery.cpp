@@ -116,6 +116,10 @@ Outcome recovery_trials(builders::BuiltScene (*make)(), uint64_t first_seed, siz
       std::cout << " ";
       for (const auto& [stage, secs] : report.seconds) std::cout << " " << stage << " " << secs << " s;";
       std::cout << "\n";
+      for (const StageRecord& r : report.stages)
+        std::cout << "  stage " << r.name << ": " << (r.skipped.empty() ? "" : "skipped (" + r.skipped + "), ") << 100 * r.dbar_before
+                  << "% -> " << 100 * r.dbar_after << "%" << (r.kept ? ", kept" : "") << ", " << r.seconds << " s\n";
+      std::cout << "  seeds " << report.seed_lights << " of " << report.seeds_tried << " tried\n";
       for (const auto& l : truth) show("true ", l);
       for (const auto& l : found) show("found", l);
     }
