@@ -1,5 +1,6 @@
 #include "support.hpp"
 
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/io/ply_reader.hpp"
 
 #include <cstdlib>
@@ -79,6 +80,14 @@ std::unique_ptr<hilight::Renderer> make_renderer(const std::string& name, std::s
 
 std::shared_ptr<const hilight::Scene> finish(hilight::Scene raw, float max_edge) {
   return std::make_shared<const hilight::Scene>(hilight::finish_scene(std::move(raw), {max_edge}));
+}
+
+std::shared_ptr<const hilight::Scene> open_corner() {
+  hilight::Scene raw;
+  hilight::builders::add_quad(raw, {0, 0, 0}, {0, 0, 10}, {10, 0, 10}, {10, 0, 0}, hilight::Rgb(0.7f), "floor");
+  hilight::builders::add_quad(raw, {0, 0, 0}, {10, 0, 0}, {10, 5, 0}, {0, 5, 0}, hilight::Rgb(0.6f, 0.65f, 0.7f), "back wall");
+  hilight::builders::add_quad(raw, {0, 0, 0}, {0, 5, 0}, {0, 5, 10}, {0, 0, 10}, hilight::Rgb(0.5f), "side wall");
+  return finish(std::move(raw), 0.4f);
 }
 
 std::vector<hilight::Rgb> ply_colours(const fs::path& path) {

@@ -30,6 +30,9 @@ std::unique_ptr<hilight::Renderer> make_renderer(const std::string& name, std::s
 
 /// Tessellates a builder scene the way load_scene would.
 std::shared_ptr<const hilight::Scene> finish(hilight::Scene raw, float max_edge);
+/// A 10 x 10 floor with two 5 m walls meeting behind it (an open corner),
+/// tessellated at 0.4: the analytic renderer's scene for the solve's stages.
+std::shared_ptr<const hilight::Scene> open_corner();
 
 struct RunResult {
   int exit_code = -1;

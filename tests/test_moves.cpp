@@ -3,7 +3,6 @@
 // occludes), each given a fit it should repair and the exact SolveContext a
 // plan gives it; and the plan runner's log, and the plans as data.
 #include "analytic_renderer.hpp"
-#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/light_space.hpp"
 #include "hilight/solve/moves.hpp"
 #include "hilight/solve/solve_context.hpp"
@@ -33,11 +32,7 @@ struct World {
   ProgressFn progress;
 
   explicit World(const Lighting& truth, SolveSettings s = {}) : settings(std::move(s)) {
-    Scene raw;
-    builders::add_quad(raw, {0, 0, 0}, {0, 0, 10}, {10, 0, 10}, {10, 0, 0}, Rgb(0.7f), "floor");
-    builders::add_quad(raw, {0, 0, 0}, {10, 0, 0}, {10, 5, 0}, {0, 5, 0}, Rgb(0.6f, 0.65f, 0.7f), "back wall");
-    builders::add_quad(raw, {0, 0, 0}, {0, 5, 0}, {0, 5, 10}, {0, 0, 10}, Rgb(0.5f), "side wall");
-    scene = test::finish(std::move(raw), 0.4f);
+    scene = test::open_corner();
     rays = std::make_shared<const RayScene>(*scene);
     renderer.set_scene(scene);
     space.emplace(*rays, settings.placement, scene->light_bounds());

@@ -9,7 +9,6 @@
 #include "hilight/solve/responses.hpp"
 #include "hilight/solve/seeder.hpp"
 #include "hilight/solve/solver.hpp"
-#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/target.hpp"
 #include "support.hpp"
 
@@ -28,11 +27,7 @@ struct Corner {
   test::AnalyticRenderer renderer;
 
   Corner() {
-    Scene raw;
-    builders::add_quad(raw, {0, 0, 0}, {0, 0, 10}, {10, 0, 10}, {10, 0, 0}, Rgb(0.7f), "floor");
-    builders::add_quad(raw, {0, 0, 0}, {10, 0, 0}, {10, 5, 0}, {0, 5, 0}, Rgb(0.6f, 0.65f, 0.7f), "back wall");
-    builders::add_quad(raw, {0, 0, 0}, {0, 5, 0}, {0, 5, 10}, {0, 0, 10}, Rgb(0.5f), "side wall");
-    scene = test::finish(std::move(raw), 0.4f);
+    scene = test::open_corner();
     rays = std::make_shared<const RayScene>(*scene);
     renderer.set_scene(scene);
   }

@@ -63,16 +63,15 @@ int run_info(const std::vector<std::string>& args) {
     const glm::dvec3 a = world(box.lo), c = world(box.hi);
     std::printf("%s[%.9g, %.9g, %.9g] .. [%.9g, %.9g, %.9g]%s", label, a.x, a.y, a.z, c.x, c.y, c.z, tail);
   };
-  const Bounds inside = scene.light_bounds(), outside = open_light_bounds(scene);
-  print_box("lights in  ", inside, "\n");
+  print_box("lights in  ", scene.light_bounds(), "\n");
   const auto open = side_openness(scene);
   std::printf("open sides -x %.2f +x %.2f -y %.2f +y %.2f -z %.2f +z %.2f (lights may go beyond a side from %.2f)\n", open[0], open[1], open[2],
               open[3], open[4], open[5], kOpenSide);
   // Where a solve looks when the lights inside explain the target poorly
   // (docs/solve.md, "Lit from outside"): only beyond open sides.
-  if (std::none_of(open.begin(), open.end(), [](float o) { return o >= kOpenSide; }))
+  if (std::none_of(open.begin(), open.end(), [](float side) { return side >= kOpenSide; }))
     std::printf("open space none (closed on every side: a target is never solved as lit from outside)\n");
-  else print_box("open space ", outside, " (where a target lit from outside is solved)\n");
+  else print_box("open space ", open_light_bounds(scene), " (where a target lit from outside is solved)\n");
   std::printf("max edge   %g\n", scene.max_edge);
   // The connected parts of free space: what --place region:K / not-region:K name.
   stage.emplace("finding the rooms");

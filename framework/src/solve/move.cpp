@@ -11,10 +11,7 @@ namespace hilight {
 
 using solver_detail::Stopwatch;
 
-void SolveContext::stage(const std::string& name) const {
-  if (stop.stop_requested()) throw SolveCancelled();
-  if (progress) progress(name);
-}
+void SolveContext::stage(const std::string& name) const { solver_detail::announce_stage(stop, progress, name); }
 
 std::unique_ptr<LightCacheView> SolveContext::cache_view(const SampleSet& on) const {
   return cache ? cache->view(scene, on) : nullptr;

@@ -71,10 +71,7 @@ Fit Solver::run(const Plan& plan, const Target& target, const SampleSet& samples
   return run_plan(plan, ctx, std::move(start));
 }
 
-void Solver::stage(const std::string& name) const {
-  if (m_stop.stop_requested()) throw SolveCancelled();
-  if (m_progress) m_progress(name);
-}
+void Solver::stage(const std::string& name) const { announce_stage(m_stop, m_progress, name); }
 
 namespace {
 /// The stage log and timings of `from` carried into `to` (the answer of a
