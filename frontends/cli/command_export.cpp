@@ -6,6 +6,7 @@
 #include "cli_common.hpp"
 #include "hilight/scene_origin.hpp"
 #include "commands.hpp"
+#include "hilight/default_view.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/gltf.hpp"
@@ -88,9 +89,11 @@ int run_export(const std::vector<std::string>& args, Registry& registry) {
   settings.bounces = parse_bounces(bounces, "--bounces");
   if (settings.bounces > kPovMaxBounces)
     throw InputError("--bounces: a POV-Ray scene carries at most " + std::to_string(kPovMaxBounces) + " bounces (say all)");
+  // No --camera: the view `hilight render` takes (default_view.hpp).
+  if (!camera) camera = default_view(RayScene(*scene), lights, float(width) / float(height));
   write_atomically(output, [&](std::ostream& out) {
     write_pov_scene(out, *scene, lights, settings);
-    write_pov_camera(out, camera ? *camera : Camera::framing(scene->bounds, float(width) / float(height)), width, height);
+    write_pov_camera(out, *camera, width, height);
   });
   stage.reset();
   std::fprintf(stderr, "wrote %s in %s (render: povray +W%d +H%d +FE %s)\n", output.c_str(), progress.time_summary().c_str(), width,

@@ -3,6 +3,7 @@
 #include "hilight/scene_origin.hpp"
 #include "commands.hpp"
 #include "hilight/shadow_refinement.hpp"
+#include "hilight/default_view.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/image_io.hpp"
 #include "hilight/io/gltf.hpp"
@@ -59,7 +60,8 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("-o,--output", outputs, "what to write: OUT.png, OUT.exr, OUT.ply, or OUT for OUT.ply and OUT.png (repeatable)")->required();
   SceneLoadOptions scene_options;
   add_scene_options(app, scene_options, kAdvanced);
-  app.add_option("--camera", camera_text, "where the picture is taken from: eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg");
+  app.add_option("--camera", camera_text, "where the picture is taken from: eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_deg (default: inside the "
+                 "largest lit room of a building or closed box, at eye height; else from outside)");
   app.add_option("--width", width, "image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--height", height, "image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   app.add_option("--refine-shadows", refine_text,
@@ -132,6 +134,13 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
   stage.emplace("preparing the renderer");
   auto renderer = ropts.create(registry, scene);
   stage.reset();
+  const bool any_picture = std::any_of(paths.begin(), paths.end(), [](const fs::path& p) { return p.extension() != ".ply"; });
+  if (any_picture && !camera) {
+    // No --camera: inside the largest lit room of a building or box, else from outside (default_view.hpp).
+    stage.emplace("choosing the view");
+    camera = default_view(*RayScene::shared(scene), lights, float(width) / float(height));
+    stage.reset();
+  }
 
   for (const auto& path : paths) {
     stage.emplace("rendering " + path.filename().string());
@@ -139,8 +148,7 @@ int run_render(const std::vector<std::string>& args, Registry& registry) {
       std::vector<Rgb> radiance = renderer->illuminate(SurfacePoints::from_vertices(*scene), lights);
       write_illuminated_ply(path, *scene, radiance_to_units(std::move(radiance), units));
     } else {
-      Camera cam = camera ? *camera : Camera::framing(scene->bounds, float(width) / float(height));
-      Image image = renderer->render_image(cam, lights, width, height);
+      Image image = renderer->render_image(*camera, lights, width, height);
       if (path.extension() == ".exr") image.pixels = radiance_to_units(std::move(image.pixels), units);  // PNG: exposed for display
       write_image(path, image, exposure);
     }

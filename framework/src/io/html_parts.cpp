@@ -39,14 +39,6 @@ std::string png_img(const Image& image, float exposure, const std::string& alt) 
          base64(encode_png(image, exposure)) + "\">";
 }
 
-float exposure_for(const Image& image) {
-  std::vector<float> lum;
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    if (image.covered[i]) lum.push_back(0.2126f * image.pixels[i].r + 0.7152f * image.pixels[i].g + 0.0722f * image.pixels[i].b);
-  if (lum.empty()) return 1.f;
-  const size_t k = std::min(lum.size() - 1, size_t(0.99 * double(lum.size())));
-  std::nth_element(lum.begin(), lum.begin() + std::ptrdiff_t(k), lum.end());
-  return lum[k] > 0.f ? 0.9f / lum[k] : 1.f;
-}
+float exposure_for(const Image& image) { return auto_exposure(image); }
 
 } // namespace hilight

@@ -11,7 +11,7 @@ namespace hilight {
 std::string html_escape(const std::string& text);
 /// An <img> holding `image` as base64 PNG data, scaled by `exposure`.
 std::string png_img(const Image& image, float exposure, const std::string& alt);
-/// 0.9 over the 99th percentile of the covered pixels' luminance (1 when dark).
+/// auto_exposure (image_io.hpp): each view its own.
 float exposure_for(const Image& image);
 
 } // namespace hilight

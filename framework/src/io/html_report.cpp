@@ -1,5 +1,5 @@
-// The solve's HTML report (io/html_report.hpp). Views: inside an enclosed
-// scene (a room) from three of its upper corners; outside one, around it.
+// The solve's HTML report (io/html_report.hpp). Views: three of the default
+// views (default_view.hpp): inside the largest lit room, or around the scene.
 #include "hilight/io/html_report.hpp"
 
 #include "html_lux_maps.hpp"
@@ -8,6 +8,7 @@
 #include "hilight/scene_origin.hpp"
 
 #include "hilight/camera.hpp"
+#include "hilight/default_view.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "hilight/io/image_io.hpp"
 #include "hilight/units.hpp"
@@ -22,36 +23,6 @@
 namespace hilight {
 
 namespace {
-
-/// Three views: from three upper corners inside an enclosed scene, else from around it.
-std::vector<Camera> views(const Scene& scene, const RayScene& rays, float aspect) {
-  const Bounds& b = scene.bounds;
-  const Vec3 c = b.center(), e = b.extent();
-  const Vec3 inside = b.lo + Vec3(0.92f, 0.85f, 0.92f) * e;
-  bool enclosed = !rays.inside_solid(inside);
-  for (const Vec3& d : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)})
-    enclosed = enclosed && rays.intersect(inside, d).valid();
-  std::vector<Camera> out;
-  if (enclosed) {
-    for (const Vec3& corner : {Vec3(0.92f, 0.85f, 0.92f), Vec3(0.08f, 0.85f, 0.92f), Vec3(0.92f, 0.85f, 0.08f)}) {
-      Camera cam;
-      cam.eye = b.lo + corner * e;
-      cam.target = Vec3(2.f * c.x - cam.eye.x, b.lo.y + 0.2f * e.y, 2.f * c.z - cam.eye.z);
-      cam.fov_deg = 75.f;
-      out.push_back(cam);
-    }
-    return out;
-  }
-  const Camera base = Camera::framing(b, aspect);
-  for (int k = 0; k < 3; ++k) {
-    Camera cam = base;
-    const float a = float(k) * 2.f * float(kPi) / 3.f;
-    const Vec3 r = base.eye - c;
-    cam.eye = c + Vec3(r.x * std::cos(a) - r.z * std::sin(a), r.y, r.x * std::sin(a) + r.z * std::cos(a));
-    out.push_back(cam);
-  }
-  return out;
-}
 
 /// Red where the result is brighter than the target, blue where darker.
 Image difference_image(const Image& result, const Image& target, float exposure) {
@@ -146,7 +117,7 @@ void write_html_report(const std::filesystem::path& path, const HtmlReport& page
   const bool painted = page.criteria == nullptr;  // criteria have no painted target to show
   html << (painted ? "<h2>Target, result, difference</h2>" : "<h2>Result</h2>") << "<div class=\"views\">\n";
   int view_number = 0;
-  for (const Camera& cam : views(scene, *page.rays, float(width) / float(height))) {
+  for (const Camera& cam : default_views(*page.rays, page.lights, float(width) / float(height), 3)) {
     ++view_number;
     const Image target = vertex_value_image(scene, *page.rays, cam, painted ? page.target : page.result, width, height);
     const Image result = vertex_value_image(scene, *page.rays, cam, page.result, width, height);

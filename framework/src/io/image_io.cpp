@@ -25,17 +25,25 @@ float srgb_encode(float linear) {
   return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.f / 2.4f) - 0.055f;
 }
 
+} // namespace
+
 float auto_exposure(const Image& image) {
   std::vector<float> lum;
   for (size_t i = 0; i < image.pixels.size(); ++i)
     if (image.covered[i]) lum.push_back(luminance(image.pixels[i]));
   if (lum.empty()) return 1.f;
-  size_t k = std::min(lum.size() - 1, size_t(0.99 * double(lum.size())));
-  std::nth_element(lum.begin(), lum.begin() + k, lum.end());
-  return lum[k] > 0.f ? 0.9f / lum[k] : 1.f;
+  auto quantile = [&](double q) {
+    const size_t k = std::min(lum.size() - 1, size_t(q * double(lum.size())));
+    std::nth_element(lum.begin(), lum.begin() + std::ptrdiff_t(k), lum.end());
+    return lum[k];
+  };
+  const float top = quantile(0.99), high = quantile(0.95), median = quantile(0.5);
+  if (!(top > 0.f)) return 1.f;
+  float exposure = 0.9f / top;
+  // A bright few (the ceiling over a lamp) must not leave the room black.
+  if (median > 0.f && median * exposure < 0.1f) exposure = std::max(exposure, std::min(0.1f / median, 1.f / high));
+  return exposure;
 }
-
-} // namespace
 
 std::vector<unsigned char> encode_png(const Image& image, float exposure) {
   if (exposure <= 0.f) exposure = auto_exposure(image);
@@ -103,6 +111,22 @@ void write_image(const fs::path& path, const Image& image, float exposure) {
   } else {
     write_atomically(path, encode_exr(path, image));
   }
+}
+
+PngPixels read_png(const fs::path& path) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&image, path.c_str())) throw InputError(path.string(), std::string("cannot read PNG: ") + image.message);
+  image.format = PNG_FORMAT_RGB;
+  PngPixels out;
+  out.width = int(image.width);
+  out.height = int(image.height);
+  out.rgb.resize(PNG_IMAGE_SIZE(image));
+  if (!png_image_finish_read(&image, nullptr, out.rgb.data(), 0, nullptr)) {
+    png_image_free(&image);
+    throw InputError(path.string(), std::string("cannot read PNG: ") + image.message);
+  }
+  return out;
 }
 
 Image read_exr(const fs::path& path) {

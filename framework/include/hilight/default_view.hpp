@@ -1,0 +1,30 @@
+#pragma once
+/// The views a picture takes when the user names none (issue 36): `hilight
+/// render` and `export` without `--camera`, the HTML report's views and the
+/// painter's opening view. A building or a closed box is seen from inside
+/// its largest lit room, at eye height, across the room; a scene with no
+/// enclosed room (a product, a landscape) from outside (Camera::framing).
+#include "hilight/camera.hpp"
+#include "hilight/lighting.hpp"
+#include "hilight/ray_scene.hpp"
+
+#include <vector>
+
+namespace hilight {
+
+/// Up to `count` views (at least one), best first. Inside a room: the eyes
+/// and directions that see the most lit surface the farthest, each later one
+/// from elsewhere in the room or looking another way. Outside: the framing
+/// view turned about the vertical by 360°/count each. With no lights every
+/// surface counts as lit.
+std::vector<Camera> default_views(const RayScene& rays, const Lighting& lights, float aspect, size_t count = 1);
+
+/// The first of default_views.
+Camera default_view(const RayScene& rays, const Lighting& lights, float aspect);
+
+/// The room default_views looks into: the index in Regions(rays).list() of
+/// the largest enclosed region holding a light (with no lit one, the largest
+/// enclosed one); -1 when no region is enclosed (the view is from outside).
+int default_view_room(const RayScene& rays, const Lighting& lights);
+
+} // namespace hilight

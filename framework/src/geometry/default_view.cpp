@@ -1,0 +1,229 @@
+// The views pictures take when none is given (default_view.hpp). Rooms are
+// the scene's regions (regions.hpp); one is enclosed when rays from points in
+// it almost never leave the scene. Inside it, eyes stand at eye height over
+// its floors, and each looks where a fan of rays meets the most lit surface
+// the farthest away: across the room, toward its lights' pools, not into a
+// wall or out of a window.
+#include "hilight/default_view.hpp"
+
+#include "hilight/regions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tbb/parallel_for.h>
+
+namespace hilight {
+
+namespace {
+
+constexpr float kEyeHeight = 1.6f;      ///< metres over the floor (or 60% of a lower room's height)
+constexpr float kFovDeg = 65.f;         ///< vertical: with 4:3 about 80° across, a room photographer's lens
+constexpr float kPitchDeg = -10.f;      ///< a little down: more floor and furniture, less ceiling
+constexpr float kMostEscaping = 0.15f;  ///< an enclosed region lets out at most this fraction of rays
+constexpr size_t kMostLights = 32;      ///< lights tried for whether a surface is lit
+constexpr int kAzimuths = 16;
+
+/// `n` directions spread evenly over the sphere (a Fibonacci lattice).
+std::vector<Vec3> sphere_directions(int n) {
+  std::vector<Vec3> out;
+  const float golden = float(kPi) * (3.f - std::sqrt(5.f));
+  for (int i = 0; i < n; ++i) {
+    const float y = 1.f - 2.f * (float(i) + 0.5f) / float(n), r = std::sqrt(std::max(0.f, 1.f - y * y));
+    out.emplace_back(r * std::cos(golden * float(i)), y, r * std::sin(golden * float(i)));
+  }
+  return out;
+}
+
+/// Points on an even grid over the region's box that lie in the region.
+std::vector<Vec3> region_points(const Regions& regions, const Region& region, glm::ivec3 cells) {
+  std::vector<Vec3> out;
+  const Vec3 lo = region.box.lo, extent = region.box.extent();
+  for (int z = 0; z < cells.z; ++z)
+    for (int y = 0; y < cells.y; ++y)
+      for (int x = 0; x < cells.x; ++x) {
+        const Vec3 p = lo + (Vec3(float(x), float(y), float(z)) + 0.5f) / Vec3(cells) * extent;
+        if (regions.at(p) == region.id) out.push_back(p);
+      }
+  return out;
+}
+
+/// The fraction of rays from the region's points that meet nothing.
+float escaping(const RayScene& rays, const Regions& regions, const Region& region) {
+  std::vector<Vec3> points = region_points(regions, region, {6, 4, 6});
+  if (points.size() < 8) points = region_points(regions, region, {16, 8, 16});
+  if (points.empty()) return 1.f;
+  static const std::vector<Vec3> directions = sphere_directions(32);
+  const size_t step = std::max<size_t>(1, points.size() / 24);
+  size_t sent = 0, lost = 0;
+  for (size_t i = 0; i < points.size(); i += step)
+    for (const Vec3& d : directions) {
+      ++sent;
+      if (!rays.intersect(points[i], d).valid()) ++lost;
+    }
+  return float(lost) / float(sent);
+}
+
+/// The room to look into, or nullptr (see default_view_room).
+const Region* choose_room(const RayScene& rays, const Regions& regions, const Lighting& lights) {
+  const double scene_volume = [&] {
+    const Vec3 e = rays.scene().light_bounds().extent();
+    return double(e.x) * e.y * e.z;
+  }();
+  const Region* lit = nullptr;
+  const Region* any = nullptr;
+  for (const Region& r : regions.list()) {  // largest first
+    if (r.volume < 0.01 * scene_volume || escaping(rays, regions, r) > kMostEscaping) continue;
+    if (!any) any = &r;
+    const bool holds_light = std::any_of(lights.begin(), lights.end(), [&](const Light& l) { return regions.at(l.position) == r.id; });
+    if (holds_light) {
+      lit = &r;
+      break;
+    }
+  }
+  return lit ? lit : any;
+}
+
+/// Whether a light reaches the surface at `q` (normal `n`, turned toward the viewer).
+bool lit_at(const RayScene& rays, const Lighting& lights, const Vec3& q, const Vec3& n) {
+  if (lights.empty()) return true;  // nothing to go by: every surface counts
+  const float eps = 4.f * rays.epsilon();
+  for (size_t j = 0; j < std::min(lights.size(), kMostLights); ++j) {
+    const Vec3 to = lights[j].position - q;
+    const float d = glm::length(to);
+    if (!(d > eps) || glm::dot(to, n) <= 0.f) continue;
+    if (!rays.occluded(q + eps * n, to / d, d - 2.f * eps)) return true;
+  }
+  return false;
+}
+
+struct Candidate {
+  Vec3 eye{0.f};
+  int azimuth = 0;
+  float score = 0.f, reach = 1.f;  ///< reach: the mean distance the view's rays travel
+};
+
+Vec3 direction(int azimuth, float pitch_deg) {
+  const float a = 2.f * float(kPi) * float(azimuth) / float(kAzimuths), p = pitch_deg * float(kPi) / 180.f;
+  return {std::cos(p) * std::sin(a), std::sin(p), std::cos(p) * std::cos(a)};
+}
+
+/// How much lit surface a view from `eye` along `azimuth` sees, and how far.
+Candidate score_view(const RayScene& rays, const Lighting& lights, const Vec3& eye, int azimuth, float aspect, float far) {
+  Camera cam;
+  cam.eye = eye;
+  cam.target = eye + direction(azimuth, kPitchDeg);
+  cam.fov_deg = kFovDeg;
+  const Camera::Basis b = cam.basis();
+  constexpr int kAcross = 9, kDown = 6;
+  Candidate c{eye, azimuth, 0.f, 0.f};
+  int hits = 0;
+  for (int j = 0; j < kDown; ++j)
+    for (int i = 0; i < kAcross; ++i) {
+      const float sx = (2.f * (float(i) + 0.5f) / kAcross - 1.f) * b.tan_half_fov * aspect;
+      const float sy = (1.f - 2.f * (float(j) + 0.5f) / kDown) * b.tan_half_fov;
+      const Vec3 d = glm::normalize(b.forward + sx * b.right + sy * b.up);
+      const Hit hit = rays.intersect(eye, d);
+      if (!hit.valid()) continue;  // out of a window: nothing to show
+      Vec3 n = rays.face_normals()[hit.triangle];
+      if (glm::dot(n, d) > 0.f) n = -n;
+      const float t = std::min(hit.t, far);
+      c.score += lit_at(rays, lights, eye + hit.t * d, n) ? t : 0.05f * t;
+      c.reach += t;
+      ++hits;
+    }
+  c.reach = hits ? c.reach / float(hits) : 1.f;
+  return c;
+}
+
+/// Eyes over the room's floors: each grid point of the room dropped to the
+/// floor below it and raised to eye height, kept if still in the room and
+/// clear of walls.
+std::vector<Vec3> eyes_in(const RayScene& rays, const Regions& regions, const Region& room) {
+  std::vector<Vec3> eyes;
+  const float clearance = std::max(2.f * regions.voxel_size(), 0.01f * room.box.diagonal());
+  for (const Vec3& p : region_points(regions, room, {14, 10, 14})) {
+    const Hit down = rays.intersect(p, Vec3(0.f, -1.f, 0.f)), up = rays.intersect(p, Vec3(0.f, 1.f, 0.f));
+    if (!down.valid() || std::abs(rays.face_normals()[down.triangle].y) < 0.7f) continue;  // not over a floor
+    const float height = down.t + (up.valid() ? up.t : 1e30f);
+    const Vec3 eye(p.x, p.y - down.t + std::min(kEyeHeight, 0.6f * height), p.z);
+    if (regions.at(eye) != room.id) continue;
+    bool clear = true;
+    for (int k = 0; k < 8 && clear; ++k) {
+      const float a = float(k) * float(kPi) / 4.f;
+      clear = !rays.occluded(eye, Vec3(std::cos(a), 0.f, std::sin(a)), clearance);
+    }
+    // The grid's layers over one floor give the same eye: keep one.
+    const bool again = std::any_of(eyes.begin(), eyes.end(), [&](const Vec3& e) { return glm::length(e - eye) < 0.5f * clearance; });
+    if (clear && !again) eyes.push_back(eye);
+  }
+  return eyes;
+}
+
+std::vector<Camera> inside_views(const RayScene& rays, const Regions& regions, const Region& room, const Lighting& lights,
+                                 float aspect, size_t count) {
+  const std::vector<Vec3> eyes = eyes_in(rays, regions, room);
+  if (eyes.empty()) return {};
+  const float far = room.box.diagonal();
+  std::vector<Candidate> candidates(eyes.size() * kAzimuths);
+  tbb::parallel_for(size_t(0), eyes.size(), [&](size_t e) {
+    for (int a = 0; a < kAzimuths; ++a) candidates[e * kAzimuths + size_t(a)] = score_view(rays, lights, eyes[e], a, aspect, far);
+  });
+  // Best first; ties (a symmetric room) by position, so the choice never depends on threads.
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.score > b.score; });
+  std::vector<Candidate> chosen;
+  const float apart = 0.25f * glm::length(Vec3(room.box.extent().x, 0.f, room.box.extent().z));
+  for (const Candidate& c : candidates) {
+    if (chosen.size() == count) break;
+    const bool distinct = std::all_of(chosen.begin(), chosen.end(), [&](const Candidate& o) {
+      const int turn = std::abs(c.azimuth - o.azimuth) % kAzimuths;
+      return glm::length(c.eye - o.eye) > apart || std::min(turn, kAzimuths - turn) >= kAzimuths / 4;
+    });
+    if (distinct && c.score > 0.f) chosen.push_back(c);
+  }
+  std::vector<Camera> out;
+  for (const Candidate& c : chosen) {
+    Camera cam;
+    cam.eye = c.eye;
+    cam.target = c.eye + c.reach * direction(c.azimuth, kPitchDeg);
+    cam.fov_deg = kFovDeg;
+    out.push_back(cam);
+  }
+  return out;
+}
+
+std::vector<Camera> outside_views(const Scene& scene, float aspect, size_t count) {
+  const Camera base = Camera::framing(scene.bounds, aspect);
+  const Vec3 c = scene.bounds.center(), r = base.eye - c;
+  std::vector<Camera> out;
+  for (size_t k = 0; k < count; ++k) {
+    Camera cam = base;
+    const float a = float(k) * 2.f * float(kPi) / float(count);
+    cam.eye = c + Vec3(r.x * std::cos(a) - r.z * std::sin(a), r.y, r.x * std::sin(a) + r.z * std::cos(a));
+    out.push_back(cam);
+  }
+  return out;
+}
+
+} // namespace
+
+std::vector<Camera> default_views(const RayScene& rays, const Lighting& lights, float aspect, size_t count) {
+  count = std::max<size_t>(count, 1);
+  const Regions regions(rays);
+  if (const Region* room = choose_room(rays, regions, lights)) {
+    std::vector<Camera> inside = inside_views(rays, regions, *room, lights, aspect, count);
+    if (!inside.empty()) return inside;
+  }
+  return outside_views(rays.scene(), aspect, count);
+}
+
+Camera default_view(const RayScene& rays, const Lighting& lights, float aspect) {
+  return default_views(rays, lights, aspect, 1).front();
+}
+
+int default_view_room(const RayScene& rays, const Lighting& lights) {
+  const Regions regions(rays);
+  const Region* room = choose_room(rays, regions, lights);
+  return room ? room->id : -1;
+}
+
+} // namespace hilight

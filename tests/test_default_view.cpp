@@ -1,0 +1,148 @@
+// Pictures a person can read (issue 36): with no --camera, a building and a
+// closed box are seen from inside their lit room (default_view.hpp), and the
+// PNG is neither mostly black nor mostly white.
+#include "hilight/default_view.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
+#include "hilight/io/image_io.hpp"
+#include "hilight/io/lights_file.hpp"
+#include "hilight/io/scene_io.hpp"
+#include "hilight/regions.hpp"
+#include "random_lights.hpp"
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <random>
+
+using namespace hilight;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kHouse = builders::testmodels_dir() / "IFC/AC14-FZK-Haus.ifc";
+
+/// What a person sees in a PNG: the mean and spread of its scene pixels'
+/// luma (0–255), the shares that are nearly black and nearly white, and the
+/// share of background (nothing there: encode_png's grey, 0.12 linear = 97).
+struct Looks {
+  double mean = 0, spread = 0, black = 0, white = 0, background = 0;
+};
+
+Looks looks_of(const fs::path& png) {
+  const PngPixels image = read_png(png);
+  const size_t n = size_t(image.width) * size_t(image.height);
+  REQUIRE(n > 0);
+  Looks l;
+  double sum2 = 0;
+  size_t scene = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (image.rgb[3 * i] == 97 && image.rgb[3 * i + 1] == 97 && image.rgb[3 * i + 2] == 97) {
+      l.background += 1;
+      continue;
+    }
+    ++scene;
+    const double y = 0.2126 * image.rgb[3 * i] + 0.7152 * image.rgb[3 * i + 1] + 0.0722 * image.rgb[3 * i + 2];
+    l.mean += y;
+    sum2 += y * y;
+    l.black += y < 8 ? 1 : 0;
+    l.white += y > 250 ? 1 : 0;
+  }
+  REQUIRE(scene > 0);
+  l.mean /= double(scene);
+  l.spread = std::sqrt(std::max(0.0, sum2 / double(scene) - l.mean * l.mean));
+  l.black /= double(scene);
+  l.white /= double(scene);
+  l.background /= double(n);
+  return l;
+}
+
+/// Readable: filled with the scene (a view from inside), not mostly dark or
+/// bright, not one flat colour.
+void check_readable(const Looks& l) {
+  INFO("luma mean " << l.mean << ", spread " << l.spread << ", black " << l.black << ", white " << l.white << ", background "
+                    << l.background);
+  CHECK(l.background < 0.05);
+  CHECK(l.mean > 40);
+  CHECK(l.mean < 200);
+  CHECK(l.spread > 15);
+  CHECK(l.black < 0.3);
+  CHECK(l.white < 0.15);
+}
+
+/// A closed 5 × 3 × 4 m box, its faces toward the inside, with a table: as an OBJ.
+void write_closed_box(const fs::path& path) {
+  Scene box = builders::box_room(Vec3(5.f, 3.f, 4.f));
+  builders::add_table(box);
+  std::ofstream out(path);
+  for (const Vec3& p : box.positions) out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  for (const auto& t : box.triangles) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+}
+
+} // namespace
+
+TEST_CASE("default view: the IFC house from inside its lit interior at eye height, an open plane from outside", "[view]") {
+  const auto scene = std::make_shared<const Scene>(load_scene(kHouse));
+  const auto rays = RayScene::shared(scene);
+  std::mt19937_64 rng(36);
+  const Lighting lamps = test::random_ceiling_lamps(*rays, rng, 3);
+  const int room = default_view_room(*rays, lamps);
+  REQUIRE(room >= 0);
+  const Regions regions(*rays);
+  // Not the outside (the first region, around the house): a room with a lamp in it.
+  CHECK(regions.list()[size_t(room)].volume < regions.list()[0].volume);
+  CHECK(std::any_of(lamps.begin(), lamps.end(), [&](const Light& l) { return regions.at(l.position) == room; }));
+  const std::vector<Camera> views = default_views(*rays, lamps, 4.f / 3.f, 3);
+  REQUIRE(views.size() == 3);
+  for (const Camera& v : views) {
+    INFO("eye " << v.eye.x << ", " << v.eye.y << ", " << v.eye.z);
+    CHECK(regions.at(v.eye) == room);
+    CHECK_FALSE(rays->inside_solid(v.eye));
+    // At eye height: the floor straight below 1–2 m down.
+    const Hit floor = rays->intersect(v.eye, Vec3(0.f, -1.f, 0.f));
+    REQUIRE(floor.valid());
+    CHECK(floor.t > 1.f);
+    CHECK(floor.t < 2.f);
+  }
+  // The same scene and lights: the same views (no dependence on threads).
+  const std::vector<Camera> again = default_views(*rays, lamps, 4.f / 3.f, 3);
+  for (size_t k = 0; k < views.size(); ++k) CHECK(glm::length(again[k].eye - views[k].eye) == 0.f);
+
+  // A plane encloses nothing: seen from outside, as Camera::framing frames it.
+  const auto plane = test::finish(builders::plane(5.f), 0.5f);
+  const auto plane_rays = RayScene::shared(plane);
+  CHECK(default_view_room(*plane_rays, {}) == -1);
+  const Camera outside = default_view(*plane_rays, {}, 4.f / 3.f), framing = Camera::framing(plane->bounds, 4.f / 3.f);
+  CHECK(glm::length(outside.eye - framing.eye) < 1e-4f);
+}
+
+TEST_CASE("render: with no --camera the IFC house and a closed box are pictures a person can read", "[cli][render][view]") {
+  const fs::path dir = test::output_dir("default_view_render");
+  SECTION("the IFC house, lit by three ceiling lamps") {
+    const auto scene = std::make_shared<const Scene>(load_scene(kHouse));
+    const auto rays = RayScene::shared(scene);
+    std::mt19937_64 rng(360);
+    write_lights_file(dir / "house-lights.json", test::random_ceiling_lamps(*rays, rng, 3));
+    // Direct light only: the bounce of a 117k-vertex house takes half a minute.
+    const auto r = test::run_hilight({"render", kHouse.string(), "--lights", (dir / "house-lights.json").string(), "--bounces", "0",
+                                      "--width", "240", "--height", "180", "-o", (dir / "house.png").string()});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    check_readable(looks_of(dir / "house.png"));
+  }
+  SECTION("a closed box with a table, lit by two ceiling lamps") {
+    write_closed_box(dir / "box.obj");
+    const auto scene = std::make_shared<const Scene>(load_scene(dir / "box.obj"));
+    const auto rays = RayScene::shared(scene);
+    std::mt19937_64 rng(361);
+    write_lights_file(dir / "box-lights.json", test::random_ceiling_lamps(*rays, rng, 2));
+    const auto r = test::run_hilight({"render", (dir / "box.obj").string(), "--lights", (dir / "box-lights.json").string(),
+                                      "--width", "240", "--height", "180", "-o", (dir / "box.png").string()});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    check_readable(looks_of(dir / "box.png"));
+    // Seen from inside: from outside a closed box shows only its outer walls, unlit.
+    CHECK(default_view_room(*rays, {}) >= 0);
+  }
+}
