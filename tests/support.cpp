@@ -124,6 +124,21 @@ std::vector<std::string> with_suite_bounces(const std::vector<std::string>& args
   return out;
 }
 
+bool g_cli_own_placement = false;
+
+/// `args` with --place anywhere for a painted solve (not criteria, a .json
+/// target) when the test does not say (support.hpp, CliOwnPlacement).
+std::vector<std::string> with_suite_placement(const std::vector<std::string>& args) {
+  if (g_cli_own_placement || args.empty() || args[0] != "solve") return args;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "anywhere" || args[i] == "--help" || args[i] == "-h") return args;
+    if (args[i] == "--target" && i + 1 < args.size() && args[i + 1].size() >= 5 && args[i + 1].substr(args[i + 1].size() - 5) == ".json") return args;
+  }
+  std::vector<std::string> out = args;
+  out.insert(out.end(), {"--place", "anywhere"});
+  return out;
+}
+
 RunResult spawn_hilight(const std::vector<std::string>& args, const Environment& env, unsigned long long address_space,
                         double interrupt_after, int interrupt_signal) {
   // Output goes through files, not pipes, so large outputs cannot deadlock.
@@ -142,7 +157,7 @@ RunResult spawn_hilight(const std::vector<std::string>& args, const Environment&
   std::vector<char*> envp;
   for (auto& entry : environment) envp.push_back(entry.data());
   envp.push_back(nullptr);
-  std::vector<std::string> copy = with_suite_bounces(args);  // before fork: the child allocates nothing
+  std::vector<std::string> copy = with_suite_placement(with_suite_bounces(args));  // before fork: the child allocates nothing
   pid_t pid = ::fork();
   if (pid == 0) {
     if (address_space) {
@@ -195,6 +210,8 @@ RunResult run_hilight_interrupted(const std::vector<std::string>& args, double s
 
 CliOwnBounces::CliOwnBounces() { g_cli_own_bounces = true; }
 CliOwnBounces::~CliOwnBounces() { g_cli_own_bounces = false; }
+CliOwnPlacement::CliOwnPlacement() { g_cli_own_placement = true; }
+CliOwnPlacement::~CliOwnPlacement() { g_cli_own_placement = false; }
 
 fs::path output_dir(const std::string& test_name) {
   fs::path dir = fs::path(HILIGHT_TEST_OUTPUT_DIR) / test_name;

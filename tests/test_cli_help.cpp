@@ -77,7 +77,7 @@ TEST_CASE("Help: every --place form the parser takes is listed in solve --help",
   const std::string place = help.substr(at, help.find('\n', at) - at);
   for (const auto& kind : kinds) {
     INFO(kind);
-    CHECK(std::regex_search(place, std::regex("(^|[ ,(])" + kind + "[:\\[]")));
+    CHECK(std::regex_search(place, std::regex("(^|[ ,(])" + kind + "([:\\[]|( \\())")));  // with its arguments, or `anywhere (...)`
   }
 }
 

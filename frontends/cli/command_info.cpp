@@ -1,8 +1,11 @@
 // hilight info SCENE: size, bounds and tessellation of a scene.
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "ifc_spaces.hpp"
+#include "solve_options.hpp"
 #include "hilight/light_bounds.hpp"
 #include "hilight/regions.hpp"
+#include "hilight/room_split.hpp"
 #include "hilight/scene_origin.hpp"
 #include "progress_display.hpp"
 
@@ -33,6 +36,13 @@ int run_info(const std::vector<std::string>& args) {
   const Bounds& b = scene.bounds;
   const glm::dvec3 lo = world(b.lo), hi = world(b.hi), o = scene.frame.origin;
   const double metres = double(scene.diagonal());  // hilight computes in metres
+  // The rooms an IFC names (IfcSpace) and whether the scene is a building (the ceiling default).
+  const IfcRooms ifc = read_ifc_rooms(scene_path, scene);
+  const std::string building = building_kind(scene, !ifc.storeys.empty());
+  const auto room_box = [&](const NamedRoom& r) {
+    const glm::dvec3 a = world(r.box.lo), c = world(r.box.hi);
+    return nlohmann::json{{"min", {a.x, a.y, a.z}}, {"max", {c.x, c.y, c.z}}};
+  };
   if (as_json) {
     nlohmann::json j = {{"file", scene_path},
                         {"triangles_input", scene.input_triangle_count},
@@ -46,7 +56,13 @@ int run_info(const std::vector<std::string>& args) {
                         {"unit", scene.frame.unit},
                         {"size_m", metres},
                         {"diagonal", scene.diagonal()},
-                        {"max_edge", scene.max_edge}};
+                        {"max_edge", scene.max_edge},
+                        {"building", building},
+                        {"storeys", ifc.storeys}};
+    nlohmann::json rooms = nlohmann::json::array();
+    for (const auto& r : ifc.rooms)
+      rooms.push_back({{"name", r.name}, {"number", r.number}, {"storey", r.storey}, {"box", room_box(r)}});
+    j["rooms"] = rooms;
     std::printf("%s\n", j.dump(2).c_str());
     return 0;
   }
@@ -73,11 +89,44 @@ int run_info(const std::vector<std::string>& args) {
     std::printf("open space none (closed on every side: a target is never solved as lit from outside)\n");
   else print_box("open space ", open_light_bounds(scene), " (where a target lit from outside is solved)\n");
   std::printf("max edge   %g\n", scene.max_edge);
+  if (!building.empty()) std::printf("building   %s: lights on the ceiling by default (--place anywhere lifts it)\n", building.c_str());
+  if (!ifc.storeys.empty()) {
+    std::printf("storeys    %zu:", ifc.storeys.size());
+    for (const auto& s : ifc.storeys) std::printf(" '%s'", s.c_str());
+    std::printf("\n");
+  }
+  if (!ifc.rooms.empty()) {
+    std::printf("rooms      %zu named (IfcSpace; --place region:NAME, or a storey's name for all its rooms)\n", ifc.rooms.size());
+    // Padded by characters, not bytes ('Küche').
+    const auto padded = [](const std::string& text, size_t width) {
+      const size_t chars = size_t(std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+      return text + std::string(chars < width ? width - chars : 0, ' ');
+    };
+    for (const auto& r : ifc.rooms) {
+      std::printf("  %s %s %s ", padded(r.name, 14).c_str(), padded(r.number, 4).c_str(), padded(r.storey, 18).c_str());
+      print_box("", r.box, "\n");
+    }
+  }
   // The connected parts of free space: what --place region:K / not-region:K name.
   stage.emplace("finding the rooms");
   const RayScene rays(scene);
   const Regions regions(rays);
   stage.reset();
+  if (ifc.rooms.empty()) {  // no names in the file: free space split at doors
+    stage.emplace("splitting the rooms at doors");
+    const RoomSplit split(rays);
+    stage.reset();
+    std::printf("rooms      %zu (free space split at doors; --place region:room1 ...)\n", split.list().size());
+    for (const auto& r : split.list()) {
+      if (r.number > 40) {
+        std::printf("  ... %zu more\n", split.list().size() - 40);
+        break;
+      }
+      std::printf("  room%-3d ", r.number);
+      print_box("", r.box, "");
+      std::printf(", volume %g\n", r.volume);
+    }
+  }
   std::printf("regions    %zu (connected free space; --place region:K, not-region:K)\n", regions.list().size());
   for (const auto& r : regions.list()) {
     if (r.id >= 20) {
@@ -86,7 +135,10 @@ int run_info(const std::vector<std::string>& args) {
     }
     std::printf("  %-3d ", r.id);
     print_box("", r.box, "");
-    std::printf(", volume %g\n", r.volume);
+    std::printf(", volume %g%s\n", r.volume,
+                building.empty() || offered_as_room(r) ? ""
+                : r.at_border                          ? " (outside the building: not a room)"
+                                                       : " (too low to stand in: not a room)");
   }
   return 0;
 }

@@ -2,6 +2,7 @@
 #include "cli_common.hpp"
 #include "solve_options.hpp"
 #include "command_solve_criteria.hpp"
+#include "ifc_spaces.hpp"
 #include "commands.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
@@ -285,6 +286,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   if (!initial_path.empty()) initial = lights_from_file(initial_path, units, *scene);
   if (!hints_path.empty()) s.spot_hints = read_hints(&scene->frame);
   s.placement = rules_to_local(std::move(s.placement), scene->frame);
+  // Rooms by name (an IFC's IfcSpaces), and a building's lights on its ceiling unless told otherwise.
+  const IfcRooms ifc_rooms = read_ifc_rooms(scene_path, *scene);
+  s.placement.resolve_room_names(scene_rooms(ifc_rooms, s.placement, *rays));
+  const std::string building_note =
+      mode == "solve" && s.spot_hints.empty() ? apply_building_default(s.placement, *scene, !ifc_rooms.storeys.empty()) : "";
   // --area-light's size is in the scene's unit (a file's opening is in metres already).
   if (s.luminaire && is_area(s.luminaire->type) && !s.luminaire->profile) s.luminaire->size *= float(scene->frame.scale);
   stage.emplace("reading the target");
@@ -398,6 +404,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     std::fprintf(stderr, "hilight: %zu light%s%s, D̄ %.2f%% over %s (%zu samples), %s -> %s\n", report.chosen,
                  report.chosen == 1 ? "" : "s", of_them.c_str(), 100.0 * report.dbar, over.c_str(), report.samples,
                  progress.time_summary().c_str(), output.c_str());
+    if (!building_note.empty()) std::fprintf(stderr, "hilight: %s\n", building_note.c_str());
     if (report.open_space)
       std::fprintf(stderr, "hilight: lit from outside: lights beyond the scene's bounds (inside them D̄ was %.1f%%)\n",
                    100.0 * report.dbar_closed);

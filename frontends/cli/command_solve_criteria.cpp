@@ -2,6 +2,7 @@
 #include "command_solve_criteria.hpp"
 
 #include "ifc_luminaires.hpp"
+#include "ifc_spaces.hpp"
 
 #include "hilight/error.hpp"
 #include "hilight/io/criteria_file.hpp"
@@ -318,8 +319,9 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   for (auto& g : criteria.grids)
     for (auto& p : g.points) p = to_local(p, scene->frame);
   PlacementRules rules = rules_to_local(a.placement, scene->frame);
-  // Luminaires for a lux target hang from the ceiling unless told otherwise.
-  if (!rules.ceiling_offset && !std::isfinite(rules.min_height) && !std::isfinite(rules.max_height)) rules.add("ceiling");
+  rules.resolve_room_names(scene_rooms(read_ifc_rooms(a.scene_path, *scene), rules, *rays));
+  // Luminaires for a lux target hang from the ceiling unless told otherwise (--place anywhere lifts it).
+  if (!rules.anywhere && !rules.ceiling_offset && !std::isfinite(rules.min_height) && !std::isfinite(rules.max_height)) rules.add("ceiling");
   DesignSettings settings = a.design;
   settings.min_count = rules.min_count;
   settings.max_count = rules.max_count;

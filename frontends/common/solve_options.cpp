@@ -1,6 +1,9 @@
 #include "solve_options.hpp"
 
+#include "hilight/light_bounds.hpp"
 #include "hilight/light_cache_store.hpp"
+
+#include <algorithm>
 
 namespace hilight::cli {
 
@@ -18,7 +21,8 @@ void SolveOptions::add_placement(CLI::App& app) {
   app.add_option("--place", place,
                  "where lights may go (repeatable): ceiling[:OFFSET] (hanging OFFSET below the ceiling, default 0.2), "
                  "height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1 (inside one of the boxes), exclude:X0,Y0,Z0,X1,Y1,Z1, "
-                 "region:K (in room K, as hilight info numbers them), not-region:K, count:MIN:MAX or count:N (how many lights)");
+                 "region:K (in region K, as hilight info numbers them) or region:NAME (an IFC room or storey), not-region:K, "
+                 "count:MIN:MAX or count:N (how many lights), anywhere (lifts a building's default: on the ceiling)");
 }
 
 void SolveOptions::add_renderer(CLI::App& app, const std::string& tuning_group) { renderer.add_to(app, tuning_group); }
@@ -75,6 +79,23 @@ PlacementRules SolveOptions::placement() const {
   PlacementRules rules;
   for (const auto& rule : place) rules.add(rule);
   return rules;
+}
+
+std::string building_kind(const Scene& scene, bool storeys) {
+  if (storeys) return "an IFC building with storeys";
+  const auto open = side_openness(scene);
+  if (std::all_of(open.begin(), open.end(), [](float side) { return side < kOpenSide; })) return "an interior, closed on every side";
+  return "";
+}
+
+bool offered_as_room(const Region& region) { return !region.at_border && region.box.extent().y >= 1.8f; }
+
+std::string apply_building_default(PlacementRules& rules, const Scene& scene, bool storeys) {
+  if (rules.says_where()) return "";
+  const std::string why = building_kind(scene, storeys);
+  if (why.empty()) return "";
+  rules.add("ceiling");
+  return "lights on the ceiling (" + why + "; --place anywhere lifts it)";
 }
 
 SolveSpec SolveOptions::to_spec(const Registry& registry) const {

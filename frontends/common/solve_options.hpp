@@ -42,4 +42,20 @@ struct SolveOptions {
   SolveSpec to_spec(const Registry& registry) const;
 };
 
+/// What makes `scene` a building (issue 34 §7): "an IFC building with
+/// storeys" (`storeys`), "an interior, closed on every side" (no side at
+/// kOpenSide), or "" (a product, a stage: open).
+std::string building_kind(const Scene& scene, bool storeys);
+/// A region a building's frontends offer as a room: not the outside (at the
+/// light bounds' border) and tall enough to stand in (1.8 m: not the void
+/// under a slab).
+bool offered_as_room(const Region& region);
+
+/// The building default (issue 34 §7): in a building — an IFC with storeys
+/// (`storeys`), or a scene closed on every side (an interior) — lights hang
+/// from the ceiling unless a --place rule says where (`anywhere` lifts it).
+/// Products and stages (open scenes) keep free placement. Adds the rule to
+/// `rules` and returns what the summary says; "" when it does not apply.
+std::string apply_building_default(PlacementRules& rules, const Scene& scene, bool storeys);
+
 } // namespace hilight::cli

@@ -3,6 +3,7 @@
 /// bounds, out of solids — narrowed by the designer's placement rules. The
 /// seeder, the refinement, the final polish and the solver's checks all ask
 /// this one object. Scenes are +Y up.
+#include "hilight/named_room.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/regions.hpp"
 
@@ -26,15 +27,31 @@ struct PlacementRules {
   size_t min_count = 0, max_count = 0;  ///< point lights in the answer (0: no bound)
   std::vector<int> regions;      ///< if any: in one of these regions (hilight/regions.hpp)
   std::vector<int> not_regions;  ///< never in these regions
+  /// region:NAME / not-region:NAME as given, until resolve_room_names()
+  /// turns them into `rooms` / `not_rooms` (a LightSpace refuses names left).
+  std::vector<std::string> region_names, not_region_names;
+  std::vector<NamedRoom> rooms;      ///< if any: in one of these named rooms (an IfcSpace)
+  std::vector<NamedRoom> not_rooms;  ///< never in these
+  /// `anywhere`: the building default (lights on the ceiling, issue 34 §7)
+  /// lifted; no rule of its own.
+  bool anywhere = false;
 
   bool any() const;
+  /// A rule that says at what height lights stand (ceiling, height, box or
+  /// anywhere): a frontend's building default (on the ceiling) applies only
+  /// without one; region, exclude and count keep it.
+  bool says_where() const;
   /// As the CLI spells them, for messages ("ceiling:0.2 height:1:2.5").
   std::string describe() const;
   /// Parses one `--place` rule: ceiling[:OFFSET], height:MIN:MAX,
   /// box:X0,Y0,Z0,X1,Y1,Z1, exclude:X0,Y0,Z0,X1,Y1,Z1, count:MIN:MAX (or
-  /// count:N), region:K, not-region:K (K as `hilight info` lists them).
-  /// Throws InputError.
+  /// count:N), region:K, not-region:K (K as `hilight info` lists them, or
+  /// a room's or storey's NAME), anywhere. Throws InputError.
   void add(const std::string& rule);
+  /// region:NAME rules turned into `rooms` from the scene's named rooms (in
+  /// the scene's frame). A name no room has: InputError naming it and the
+  /// names there are.
+  void resolve_room_names(const std::vector<NamedRoom>& scene_rooms);
 };
 
 class LightSpace {

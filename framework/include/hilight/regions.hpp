@@ -16,6 +16,10 @@ struct Region {
   int id = 0;
   Bounds box;          ///< the region's voxels' bounding box
   double volume = 0;   ///< scene units cubed
+  /// Its voxels reach a side of the light bounds: the outside of a closed
+  /// building (a room's walls keep it off every side), or any part of an
+  /// open scene. A building's frontends do not offer it as a room.
+  bool at_border = false;
 };
 
 class Regions {

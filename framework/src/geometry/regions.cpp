@@ -65,7 +65,7 @@ Regions::Regions(const RayScene& rays, int cells) {
   for (int p : order)
     if (parts[size_t(p)].first >= kMinVoxels && !rays.inside_solid(centre(parts[size_t(p)].second))) {
       renamed[size_t(p)] = int(m_regions.size());
-      m_regions.push_back({int(m_regions.size()), {}, 0.0});
+      m_regions.push_back({int(m_regions.size()), {}, 0.0, false});
     }
   const double cell_volume = double(m_voxel) * m_voxel * m_voxel;
   for (size_t i = 0; i < n; ++i) {
@@ -76,6 +76,8 @@ Regions::Regions(const RayScene& rays, int cells) {
     r.box.extend(centre(i) - 0.5f * m_voxel);
     r.box.extend(centre(i) + 0.5f * m_voxel);
     r.volume += cell_volume;
+    const int x = int(i % size_t(m_dims.x)), y = int(i / size_t(m_dims.x) % size_t(m_dims.y)), z = int(i / (size_t(m_dims.x) * m_dims.y));
+    if (x == 0 || y == 0 || z == 0 || x == m_dims.x - 1 || y == m_dims.y - 1 || z == m_dims.z - 1) r.at_border = true;
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include "hilight/error.hpp"
 
+#include <cstdlib>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -23,6 +24,12 @@ std::vector<float> numbers(const std::string& text, const std::string& rule, cha
   return out;
 }
 
+bool is_number(const std::string& text) {
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  return end != text.c_str() && *end == '\0';
+}
+
 Bounds box_of(const std::string& text, const std::string& rule) {
   const auto v = numbers(text, rule, ',');
   if (v.size() != 6) throw InputError("--place " + rule + ": a box is X0,Y0,Z0,X1,Y1,Z1 (6 numbers)");
@@ -42,7 +49,12 @@ std::string box_text(const Bounds& b) {
 
 bool PlacementRules::any() const {
   return ceiling_offset || std::isfinite(min_height) || std::isfinite(max_height) || !boxes.empty() || !excluded.empty() ||
-         min_count || max_count || !regions.empty() || !not_regions.empty();
+         min_count || max_count || !regions.empty() || !not_regions.empty() || !region_names.empty() || !not_region_names.empty() ||
+         !rooms.empty() || !not_rooms.empty();
+}
+
+bool PlacementRules::says_where() const {
+  return anywhere || ceiling_offset || std::isfinite(min_height) || std::isfinite(max_height) || !boxes.empty();
 }
 
 std::string PlacementRules::describe() const {
@@ -54,6 +66,10 @@ std::string PlacementRules::describe() const {
   if (min_count || max_count) s << "count:" << min_count << ':' << max_count << ' ';
   for (int r : regions) s << "region:" << r << ' ';
   for (int r : not_regions) s << "not-region:" << r << ' ';
+  for (const auto& n : region_names) s << "region:" << n << ' ';
+  for (const auto& n : not_region_names) s << "not-region:" << n << ' ';
+  for (const auto& r : rooms) s << "region:" << r.name << ' ';
+  for (const auto& r : not_rooms) s << "not-region:" << r.name << ' ';
   std::string out = s.str();
   if (!out.empty()) out.pop_back();
   return out;
@@ -74,6 +90,10 @@ void PlacementRules::add(const std::string& rule) {
     boxes.push_back(box_of(rest, rule));
   } else if (kind == "exclude") {
     excluded.push_back(box_of(rest, rule));
+  } else if (kind == "anywhere" && colon == std::string::npos) {
+    anywhere = true;
+  } else if ((kind == "region" || kind == "not-region") && !rest.empty() && !is_number(rest)) {  // a room's or storey's name ('0. Erdgeschoss')
+    (kind == "region" ? region_names : not_region_names).push_back(rest);
   } else if (kind == "region" || kind == "not-region") {
     const auto v = numbers(rest, rule, ':');
     if (v.size() != 1 || v[0] < 0.f || v[0] > 1e6f || v[0] != std::floor(v[0]))
@@ -86,7 +106,24 @@ void PlacementRules::add(const std::string& rule) {
       throw InputError("--place " + rule + ": write count:MIN:MAX or count:N (whole numbers from 1, MIN <= MAX)");
     min_count = size_t(v.front()), max_count = size_t(v.back());
   } else {
-    throw InputError("--place " + rule + ": unknown rule (ceiling[:OFFSET], height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX, region:K, not-region:K)");
+    throw InputError("--place " + rule + ": unknown rule (ceiling[:OFFSET], height:MIN:MAX, box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX, region:K or region:NAME, not-region:K, anywhere)");
+  }
+}
+
+void PlacementRules::resolve_room_names(const std::vector<NamedRoom>& scene_rooms) {
+  for (auto [names, into] : {std::pair{&region_names, &rooms}, std::pair{&not_region_names, &not_rooms}}) {
+    for (const auto& name : *names) {
+      const auto found = rooms_named(scene_rooms, name);
+      if (found.empty()) {
+        std::string known;
+        for (const auto& r : scene_rooms) known += (known.empty() ? "" : ", ") + r.name;
+        throw InputError("--place " + std::string(into == &rooms ? "region:" : "not-region:") + name + ": no room or storey is named " + name +
+                         (scene_rooms.empty() ? " (the scene names no rooms: region:K takes the numbers hilight info lists)"
+                                              : " (the scene's rooms: " + known + ")"));
+      }
+      for (const NamedRoom* r : found) into->push_back(*r);
+    }
+    names->clear();
   }
 }
 
@@ -113,6 +150,16 @@ LightSpace::LightSpace(const RayScene& rays, PlacementRules rules, std::optional
     m_bounds.lo = glm::max(m_bounds.lo, allowed.lo);
     m_bounds.hi = glm::min(m_bounds.hi, allowed.hi);
   }
+  if (!m_rules.region_names.empty() || !m_rules.not_region_names.empty()) {
+    PlacementRules unresolved = m_rules;
+    unresolved.resolve_room_names({});  // throws, naming the first
+  }
+  if (!m_rules.rooms.empty()) {  // spread candidates over the named rooms only
+    Bounds allowed;
+    for (const auto& r : m_rules.rooms) allowed.extend(r.box.lo), allowed.extend(r.box.hi);
+    m_bounds.lo = glm::max(m_bounds.lo, allowed.lo);
+    m_bounds.hi = glm::min(m_bounds.hi, allowed.hi);
+  }
   if (m_rules.ceiling_offset) {  // lights move up to the ceilings: spread candidates over the whole height
     m_bounds.lo.y = m_light_bounds.lo.y;
     m_bounds.hi.y = m_light_bounds.hi.y;
@@ -129,6 +176,11 @@ bool LightSpace::satisfies_boxes_and_height(const Vec3& p) const {
       if (region == r) return false;
     if (!m_rules.regions.empty() && std::find(m_rules.regions.begin(), m_rules.regions.end(), region) == m_rules.regions.end()) return false;
   }
+  for (const auto& r : m_rules.not_rooms)
+    if (r.contains(p)) return false;
+  if (!m_rules.rooms.empty() &&
+      std::none_of(m_rules.rooms.begin(), m_rules.rooms.end(), [&](const NamedRoom& r) { return r.contains(p); }))
+    return false;
   if (m_rules.boxes.empty()) return true;
   for (const auto& b : m_rules.boxes)
     if (b.contains(p)) return true;

@@ -49,7 +49,9 @@ def solve_arguments(context, settings, mode, folder):
                  "illuminance" if settings.target_kind == "WORKPLANE" or settings.units == "LUX" else "luminance"]
     if settings.count > 0:
         argv += ["--lights", str(settings.count)]
-    if settings.placement == "CEILING":
+    if settings.placement == "ANYWHERE":  # the panel's choice, not hilight's default for buildings (the ceiling)
+        argv += ["--place", "anywhere"]
+    elif settings.placement == "CEILING":
         argv += ["--place", f"ceiling:{settings.ceiling_offset:g}"]
     elif settings.placement == "REGION":
         if settings.region is None:
