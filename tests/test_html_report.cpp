@@ -26,8 +26,9 @@ TEST_CASE("the solve's HTML report renders in a headless browser with its images
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const std::string html = test::read_file(dir / "report.html");
-  CHECK(count(html, "<img ") == 11);  // target, result, difference from three views; the room's plan: target, result
-  CHECK(count(html, "src=\"data:image/png;base64,") == 11);
+  // Target, result, difference from three views; the room's plan: target, result, lux in false colour.
+  CHECK(count(html, "<img ") == 12);
+  CHECK(count(html, "src=\"data:image/png;base64,") == 12);
   CHECK(count(html, "class=\"view plan\"") == 1);
   CHECK(count(html, "class=\"light-marker\"") == count(test::read_file(dir / "lights.json"), "\"position\""));  // one a light
   CHECK(count(html, "<svg id=\"cuts\"") == 1);

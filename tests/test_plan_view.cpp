@@ -53,6 +53,38 @@ TEST_CASE("plan readout: the lux below a light over a floor is 683 I / h squared
   CHECK_FALSE(lux_below(*rays, {}, albedo, light.position));
 }
 
+TEST_CASE("plan readout: the lux on the floor below a light, not on a plate 2 cm under it (issue 36)", "[plan]") {
+  Scene raw = builders::plane(5.f, Rgb(0.6f, 0.7f, 0.8f));
+  // A 10 cm plate 2 cm under the first light (its own fitting, a shelf), facing up.
+  builders::add_quad(raw, Vec3(-0.05f, 1.98f, 0.05f), Vec3(0.05f, 1.98f, 0.05f), Vec3(0.05f, 1.98f, -0.05f), Vec3(-0.05f, 1.98f, -0.05f),
+                     Rgb(0.5f), "plate");
+  const auto scene = test::finish(std::move(raw), 0.1f);
+  const auto rays = RayScene::shared(scene);
+  const Lighting lights{Light::point(Vec3(0.f, 2.f, 0.f), Rgb(4.f)), Light::point(Vec3(2.5f, 2.f, 0.3f), Rgb(4.f))};
+  auto renderer = test::make_renderer("embree", scene, {"bounces=0"});
+  const std::vector<Rgb> radiance = renderer->illuminate(SurfacePoints::from_vertices(*scene), lights);
+  const std::vector<Rgb> albedo = scene->vertex_albedo();
+  const std::vector<PlanSection> sections = plan_sections(*scene);
+  REQUIRE(sections.size() == 1);
+  CHECK(storey_floor(sections, lights[0].position) == Approx(0.f).margin(0.1f));
+  // The old readout: the plate, 683 · 8 / 0.02² lx from both lights at once.
+  const auto on_plate = lux_below(*rays, radiance, albedo, lights[0].position);
+  REQUIRE(on_plate);
+  CHECK(*on_plate > 1e6);
+  // The floor under the plate is in its shadow: the second light alone reaches it, from 2.5 m aside.
+  const auto under_plate = lux_on_floor(*rays, radiance, albedo, lights[0].position, 0.f);
+  REQUIRE(under_plate);
+  const double aside = std::hypot(2.5, 0.3), distance = std::hypot(aside, 2.0);
+  CHECK(*under_plate == Approx(683.0 * 4.0 * (2.0 / distance) / (distance * distance)).epsilon(0.03));
+  // Nothing over the floor under the second light: 683 I / h², the first light's cone under its plate (68° wide) aside.
+  const auto open_floor = lux_on_floor(*rays, radiance, albedo, lights[1].position, 0.f);
+  REQUIRE(open_floor);
+  CHECK(*open_floor == Approx(683.0 * 4.0 / 4.0).epsilon(0.03));
+  // No floor near the storey's height: no readout.
+  CHECK_FALSE(lux_on_floor(*rays, radiance, albedo, lights[1].position, 1.f));
+  CHECK_FALSE(lux_on_floor(*rays, {}, albedo, lights[1].position, 0.f));
+}
+
 TEST_CASE("plans of the IFC house: its two storeys, the walls cut through, the floor under every ceiling lamp seen", "[plan]") {
   const auto scene = house();
   const auto rays = RayScene::shared(scene);
@@ -91,7 +123,8 @@ TEST_CASE("plans of the IFC house: its two storeys, the walls cut through, the f
   }
 }
 
-TEST_CASE("the HTML report's plans of the IFC house mark each light once, in its storey, with the lux below it", "[plan][report]") {
+TEST_CASE("the HTML report's plans of the IFC house mark each light once, in its storey, with the lux on its floor, and map the lux",
+          "[plan][report]") {
   const auto scene = house();
   const auto rays = RayScene::shared(scene);
   std::mt19937_64 rng(21);
@@ -121,11 +154,19 @@ TEST_CASE("the HTML report's plans of the IFC house mark each light once, in its
     const size_t k = storey_of(sections, lights[j].position.y), at = html.find(marker);
     CHECK(at > html.find("id=\"plan-" + std::to_string(k) + "\""));
     CHECK(at < html.find("id=\"plan-" + std::to_string(k + 1) + "\""));
-    const auto lux = lux_below(*rays, page.result, albedo, lights[j].position);
+    const auto lux = lux_on_floor(*rays, page.result, albedo, lights[j].position, sections[k].floor);
     REQUIRE(lux);
     CHECK(*lux > 1.0);
-    CHECK(html.find(">" + std::to_string(j) + ": " + std::to_string(std::llround(*lux)) + " lx<") != std::string::npos);
+    // On the result's plan and on the lux map: the same label.
+    CHECK(count(html, ">" + std::to_string(j) + ": " + std::to_string(std::llround(*lux)) + " lx<") == 2);
   }
+  // Each storey: a lux map with its colour scale (every tick in lx) and scale bars (in m) on its plans.
+  CHECK(count(html, "class=\"luxplan\"") == sections.size());
+  CHECK(count(html, "class=\"colour-scale\"") == sections.size());
+  CHECK(count(html, "class=\"scalebar\"") == 3 * sections.size());  // target, result and lux plans
+  CHECK(count(html, " lx</text>") >= 5 * sections.size());
+  CHECK(count(html, " m</text></g>") == 3 * sections.size());
+  CHECK(count(html, " m, cut at ") == sections.size());
   if (test::skip_without_chromium()) return;
   const test::BrowserPage browser = test::open_in_chromium(dir / "plans.html");
   INFO(browser.log.substr(0, 2000));

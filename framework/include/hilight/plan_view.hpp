@@ -51,4 +51,23 @@ Image plan_image(const RayScene& rays, const PlanFrame& frame, float section, co
 std::optional<double> lux_below(const RayScene& rays, const std::vector<Rgb>& radiance, const std::vector<Rgb>& albedo,
                                 const Vec3& p);
 
+/// Lux at every vertex, as lux_below reads it (0 on a black surface): what
+/// a plan of illuminance shows (plan_image of these as grey values).
+std::vector<Rgb> vertex_lux(const std::vector<Rgb>& radiance, const std::vector<Rgb>& albedo);
+
+/// How far over a storey's floor a surface still counts as its floor (a rug, a step).
+constexpr float kFloorTolerance = 0.3f;
+
+/// Lux on the floor straight below `p` (issue 36): through whatever stands
+/// over it — a table, a lamp's own fitting 2 cm below it — to the first
+/// upward surface within kFloorTolerance of the storey's `floor` height,
+/// blended from its triangle's corners. nullopt with no floor below (a
+/// stairwell), no radiance, or a black floor.
+std::optional<double> lux_on_floor(const RayScene& rays, const std::vector<Rgb>& radiance, const std::vector<Rgb>& albedo,
+                                   const Vec3& p, float floor);
+
+/// The floor of the storey `p` stands in (plan_sections): the highest storey
+/// floor at or below p (the lowest when p is under every floor).
+float storey_floor(const std::vector<PlanSection>& sections, const Vec3& p);
+
 } // namespace hilight

@@ -100,4 +100,61 @@ std::optional<double> lux_below(const RayScene& rays, const std::vector<Rgb>& ra
   return lux_from_radiance(one)[0];
 }
 
+namespace {
+
+/// E = 683 · π · luminance(radiance / albedo) at one vertex; nullopt on a black surface.
+std::optional<double> lux_at_vertex(const std::vector<Rgb>& radiance, const std::vector<Rgb>& albedo, uint32_t v) {
+  Rgb irradiance_over_pi(0.f);
+  for (int c = 0; c < 3; ++c) {
+    if (!(albedo[v][c] > 0.f)) return std::nullopt;
+    irradiance_over_pi[c] = radiance[v][c] / albedo[v][c];
+  }
+  const std::array<Rgb, 1> one{irradiance_over_pi};
+  return lux_from_radiance(one)[0];
+}
+
+} // namespace
+
+std::vector<Rgb> vertex_lux(const std::vector<Rgb>& radiance, const std::vector<Rgb>& albedo) {
+  std::vector<Rgb> out(radiance.size(), Rgb(0.f));
+  if (albedo.size() != radiance.size()) return out;
+  for (size_t v = 0; v < radiance.size(); ++v)
+    if (const auto lux = lux_at_vertex(radiance, albedo, uint32_t(v))) out[v] = Rgb(float(*lux));
+  return out;
+}
+
+std::optional<double> lux_on_floor(const RayScene& rays, const std::vector<Rgb>& radiance, const std::vector<Rgb>& albedo,
+                                   const Vec3& p, float floor) {
+  const Scene& scene = rays.scene();
+  if (radiance.size() != scene.positions.size() || albedo.size() != scene.positions.size()) return std::nullopt;
+  const Vec3 down(0.f, -1.f, 0.f);
+  Vec3 from = p;
+  for (int step = 0; step < 64; ++step) {  // past the things over the floor, one at a time
+    const Hit hit = rays.intersect(from, down);
+    if (!hit.valid()) return std::nullopt;
+    const Vec3 at = from + hit.t * down;
+    if (at.y < floor - kFloorTolerance) return std::nullopt;  // through a hole in the floor
+    if (at.y <= floor + kFloorTolerance && rays.face_normals()[hit.triangle].y > 0.9f) {
+      const auto& tri = scene.triangles[hit.triangle];
+      const float w[3] = {1.f - hit.u - hit.v, hit.u, hit.v};
+      double lux = 0;
+      for (int k = 0; k < 3; ++k) {
+        const auto corner = lux_at_vertex(radiance, albedo, tri[size_t(k)]);
+        if (!corner) return std::nullopt;
+        lux += double(w[k]) * *corner;
+      }
+      return lux;
+    }
+    from = at + 4.f * rays.epsilon() * down;
+  }
+  return std::nullopt;
+}
+
+float storey_floor(const std::vector<PlanSection>& sections, const Vec3& p) {
+  float floor = sections.empty() ? p.y : sections.front().floor;
+  for (const PlanSection& s : sections)
+    if (s.floor <= p.y) floor = std::max(floor, s.floor);
+  return floor;
+}
+
 } // namespace hilight

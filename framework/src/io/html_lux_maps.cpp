@@ -1,6 +1,8 @@
 // The HTML report's lux grids (html_lux_maps.hpp).
 #include "html_lux_maps.hpp"
 
+#include "html_parts.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -11,19 +13,6 @@
 namespace hilight {
 
 namespace {
-
-/// Dark blue → cyan → green → yellow → red over t in [0, 1].
-std::string false_colour(double t) {
-  t = std::clamp(t, 0.0, 1.0);
-  const double stops[5][3] = {{0.05, 0.1, 0.5}, {0.0, 0.7, 0.9}, {0.1, 0.8, 0.2}, {1.0, 0.9, 0.0}, {0.9, 0.1, 0.05}};
-  const double s = t * 4.0;
-  const int k = std::min(3, int(s));
-  const double f = s - double(k);
-  std::ostringstream out;
-  out << "rgb(";
-  for (int c = 0; c < 3; ++c) out << int(255.0 * (stops[k][c] * (1 - f) + stops[k + 1][c] * f)) << (c < 2 ? "," : ")");
-  return out.str();
-}
 
 /// Isolines (marching squares) over the cells of a regular grid of points
 /// (a work plane's), at round levels between its least and largest lux:
@@ -83,7 +72,7 @@ std::string isolines(const CriterionGrid& grid, const double* lux, const Bounds&
     }
     if (d.str().empty()) continue;
     s << "<path class=\"isoline\" d=\"" << d.str() << "\" stroke=\"black\" stroke-width=\"0.8\" fill=\"none\"/>"
-      << "<text x=\"" << label.first + 2 << "\" y=\"" << label.second - 2 << "\">" << std::setprecision(0) << level << std::setprecision(1)
+      << "<text x=\"" << label.first + 2 << "\" y=\"" << label.second - 2 << "\">" << std::setprecision(0) << level << " lx" << std::setprecision(1)
       << "</text>";
   }
   return s.str();
@@ -106,7 +95,7 @@ std::string grid_map(const CriterionGrid& grid, const double* lux, const Lightin
     const double x = double(grid.points[i].x - box.lo.x) * scale, y = double(grid.points[i].z - box.lo.z) * scale;
     const double side = 2.0 * half * scale;
     s << "<rect x=\"" << x - 0.5 * side << "\" y=\"" << y - 0.5 * side << "\" width=\"" << side << "\" height=\"" << side
-      << "\" fill=\"" << false_colour(lux[i] / top) << "\"><title>" << std::setprecision(0) << lux[i] << " lx</title></rect>"
+      << "\" fill=\"" << false_colour_css(lux[i] / top) << "\"><title>" << std::setprecision(0) << lux[i] << " lx</title></rect>"
       << std::setprecision(1);
   }
   s << isolines(grid, lux, box, scale);
@@ -116,11 +105,7 @@ std::string grid_map(const CriterionGrid& grid, const double* lux, const Lightin
     s << "<circle class=\"luminaire\" cx=\"" << x << "\" cy=\"" << y << "\" r=\"4\" fill=\"white\" stroke=\"black\"/>";
   }
   // A scale bar: the round length nearest a quarter of the map.
-  const double want = 0.25 * double(std::max(box.extent().x, box.extent().z));
-  const double magnitude = std::pow(10.0, std::floor(std::log10(std::max(want, 1e-6))));
-  double bar = magnitude;
-  for (double m : {1.0, 2.0, 5.0, 10.0})
-    if (m * magnitude <= want) bar = m * magnitude;
+  const double bar = round_length(0.25 * double(std::max(box.extent().x, box.extent().z)));
   s << "<g class=\"scalebar\"><line x1=\"0\" y1=\"" << h + 6 << "\" x2=\"" << bar * scale << "\" y2=\"" << h + 6
     << "\" stroke=\"black\" stroke-width=\"2\"/><text x=\"" << bar * scale + 4 << "\" y=\"" << h + 9 << "\">" << std::setprecision(bar < 1 ? 1 : 0)
     << bar << " m</text></g>" << std::setprecision(1);
@@ -128,7 +113,7 @@ std::string grid_map(const CriterionGrid& grid, const double* lux, const Lightin
   // The colour scale.
   s << "<svg width=\"" << 260 << "\" height=\"30\" xmlns=\"http://www.w3.org/2000/svg\" font-size=\"10\">";
   for (int k = 0; k < 20; ++k)
-    s << "<rect x=\"" << 10 + k * 12 << "\" y=\"2\" width=\"12\" height=\"12\" fill=\"" << false_colour(double(k) / 19.0) << "\"/>";
+    s << "<rect x=\"" << 10 + k * 12 << "\" y=\"2\" width=\"12\" height=\"12\" fill=\"" << false_colour_css(double(k) / 19.0) << "\"/>";
   s << std::setprecision(0) << "<text x=\"10\" y=\"26\">0 lx</text><text x=\"200\" y=\"26\">" << top << " lx</text></svg>";
   return s.str();
 }

@@ -4,6 +4,8 @@
 #include "hilight/io/image_io.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <cstdint>
 #include <vector>
 
@@ -40,5 +42,38 @@ std::string png_img(const Image& image, float exposure, const std::string& alt) 
 }
 
 float exposure_for(const Image& image) { return auto_exposure(image); }
+
+Rgb false_colour(double t) {
+  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
+  const double stops[5][3] = {{0.05, 0.1, 0.5}, {0.0, 0.7, 0.9}, {0.1, 0.8, 0.2}, {1.0, 0.9, 0.0}, {0.9, 0.1, 0.05}};
+  const double s = t * 4.0;
+  const int k = std::min(3, int(s));
+  const double f = s - double(k);
+  Rgb out;
+  for (int c = 0; c < 3; ++c) out[c] = float(stops[k][c] * (1 - f) + stops[k + 1][c] * f);
+  return out;
+}
+
+std::string false_colour_css(double t) {
+  const Rgb c = false_colour(t);
+  std::ostringstream out;
+  out << "rgb(" << int(255.f * c.r) << "," << int(255.f * c.g) << "," << int(255.f * c.b) << ")";
+  return out.str();
+}
+
+double round_length(double at_most) {
+  const double magnitude = std::pow(10.0, std::floor(std::log10(std::max(at_most, 1e-9))));
+  double out = magnitude;
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * magnitude <= at_most) out = m * magnitude;
+  return out;
+}
+
+double round_up(double at_least) {
+  const double magnitude = std::pow(10.0, std::floor(std::log10(std::max(at_least, 1e-9))));
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
+    if (m * magnitude >= at_least) return m * magnitude;
+  return 10.0 * magnitude;
+}
 
 } // namespace hilight

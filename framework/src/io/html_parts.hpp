@@ -14,4 +14,14 @@ std::string png_img(const Image& image, float exposure, const std::string& alt);
 /// auto_exposure (image_io.hpp): each view its own.
 float exposure_for(const Image& image);
 
+/// The false colours of lux maps: dark blue → cyan → green → yellow → red
+/// over t in [0, 1], as sRGB values in [0, 1].
+Rgb false_colour(double t);
+/// The same as a CSS colour, "rgb(r,g,b)".
+std::string false_colour_css(double t);
+/// A round length (1, 2 or 5 × 10^k) no longer than `at_most`.
+double round_length(double at_most);
+/// A round number (1, 2, 2.5, 5 or 10 × 10^k) at least `at_least`: the top of a colour scale.
+double round_up(double at_least);
+
 } // namespace hilight
