@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "ifc_spaces.hpp"
 #include "solve_options.hpp"
+#include "hilight/error.hpp"
 #include "hilight/light_bounds.hpp"
 #include "hilight/regions.hpp"
 #include "hilight/room_split.hpp"
@@ -37,8 +38,13 @@ int run_info(const std::vector<std::string>& args) {
   const glm::dvec3 lo = world(b.lo), hi = world(b.hi), o = scene.frame.origin;
   const double metres = double(scene.diagonal());  // hilight computes in metres
   // The rooms an IFC names (IfcSpace) and whether the scene is a building (the ceiling default).
-  const IfcRooms ifc = read_ifc_rooms(scene_path, scene);
-  const std::string building = building_kind(scene, !ifc.storeys.empty());
+  IfcRooms ifc;
+  try {
+    ifc = read_ifc_rooms(scene_path, scene);
+  } catch (const InputError& e) {  // assimp read it: the rest of the summary stands
+    std::fprintf(stderr, "hilight: warning: no room names: %s\n", e.what());
+  }
+  const std::string building = building_kind(scene, ifc_has_storeys(scene_path));
   const auto room_box = [&](const NamedRoom& r) {
     const glm::dvec3 a = world(r.box.lo), c = world(r.box.hi);
     return nlohmann::json{{"min", {a.x, a.y, a.z}}, {"max", {c.x, c.y, c.z}}};

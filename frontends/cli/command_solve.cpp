@@ -287,10 +287,9 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   if (!hints_path.empty()) s.spot_hints = read_hints(&scene->frame);
   s.placement = rules_to_local(std::move(s.placement), scene->frame);
   // Rooms by name (an IFC's IfcSpaces), and a building's lights on its ceiling unless told otherwise.
-  const IfcRooms ifc_rooms = read_ifc_rooms(scene_path, *scene);
-  s.placement.resolve_room_names(scene_rooms(ifc_rooms, s.placement, *rays));
+  s.placement.resolve_room_names(scene_rooms(scene_path, s.placement, *rays));
   const std::string building_note =
-      mode == "solve" && s.spot_hints.empty() ? apply_building_default(s.placement, *scene, !ifc_rooms.storeys.empty()) : "";
+      mode == "solve" && s.spot_hints.empty() ? apply_building_default(s.placement, *scene, ifc_has_storeys(scene_path)) : "";
   // --area-light's size is in the scene's unit (a file's opening is in metres already).
   if (s.luminaire && is_area(s.luminaire->type) && !s.luminaire->profile) s.luminaire->size *= float(scene->frame.scale);
   stage.emplace("reading the target");

@@ -319,7 +319,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   for (auto& g : criteria.grids)
     for (auto& p : g.points) p = to_local(p, scene->frame);
   PlacementRules rules = rules_to_local(a.placement, scene->frame);
-  rules.resolve_room_names(scene_rooms(read_ifc_rooms(a.scene_path, *scene), rules, *rays));
+  rules.resolve_room_names(scene_rooms(a.scene_path, rules, *rays));
   // Luminaires for a lux target hang from the ceiling unless told otherwise (--place anywhere lifts it).
   if (!rules.anywhere && !rules.ceiling_offset && !std::isfinite(rules.min_height) && !std::isfinite(rules.max_height)) rules.add("ceiling");
   DesignSettings settings = a.design;

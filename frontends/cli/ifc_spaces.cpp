@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <tuple>
 
@@ -21,8 +23,27 @@
 
 namespace hilight::cli {
 
-std::vector<NamedRoom> scene_rooms(const IfcRooms& ifc, const PlacementRules& rules, const RayScene& rays) {
-  if (!ifc.rooms.empty() || (rules.region_names.empty() && rules.not_region_names.empty())) return ifc.rooms;
+namespace {
+
+bool has_ifc_extension(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".ifc";  // .ifczip and the rest: no rooms by name
+}
+
+} // namespace
+
+bool ifc_has_storeys(const std::filesystem::path& file) {
+  if (!has_ifc_extension(file)) return false;
+  std::ifstream in(file, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+  return text.find("IFCBUILDINGSTOREY(") != std::string::npos;
+}
+
+std::vector<NamedRoom> scene_rooms(const std::filesystem::path& file, const PlacementRules& rules, const RayScene& rays) {
+  if (rules.region_names.empty() && rules.not_region_names.empty()) return {};
+  if (auto ifc = read_ifc_rooms(file, rays.scene()); !ifc.rooms.empty()) return std::move(ifc.rooms);
   return named_rooms(std::make_shared<const RoomSplit>(rays));
 }
 
@@ -48,9 +69,7 @@ shared_ptr<IfcBuildingStorey> storey_of(const shared_ptr<IfcSpace>& space) {
 
 IfcRooms read_ifc_rooms(const std::filesystem::path& file, const Scene& scene) {
   IfcRooms out;
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext != ".ifc") return out;  // .ifczip and the rest: no rooms by name
+  if (!has_ifc_extension(file)) return out;
   shared_ptr<BuildingModel> model = ifc::load(file);
   model->resolveInverseAttributes();
   const double metres = model->getUnitConverter()->getLengthInMeterFactor();
