@@ -199,10 +199,13 @@ TEST_CASE("rooms: a closed interior hangs lights from the ceiling by default; --
   REQUIRE(ceiling.exit_code == 0);
   CHECK(lines_with(ceiling.err, "lights on the ceiling (an interior, closed on every side; --place anywhere lifts it)") == 1);
   for (const auto& l : lights_of(dir / "ceiling.json")) CHECK(l["position"][1].get<double>() == Approx(2.8).margin(1e-3));
+  CHECK(lines_with(ceiling.err, "poor fit") == 1);  // the lamp hangs lower than the default allows...
+  CHECK(lines_with(ceiling.err, "held on the ceiling (a building's default): if the target's lamps hang lower, --place anywhere frees them") == 1);
   const auto anywhere = test::run_hilight({"solve", (dir / "room.obj").string(), "--target", target.string(), "--bounces", "0", "--lights", "1",
                                            "--place", "anywhere", "-o", (dir / "anywhere.json").string()});
   REQUIRE(anywhere.exit_code == 0);
   CHECK(lines_with(anywhere.err, "lights on the ceiling") == 0);
+  CHECK(lines_with(anywhere.err, "poor fit") == 0);
   const auto free = lights_of(dir / "anywhere.json");
   REQUIRE(free.size() == 1);
   CHECK(free[0]["position"][1].get<double>() == Approx(1.6).margin(0.02));

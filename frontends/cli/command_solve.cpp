@@ -432,6 +432,10 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
                  "hilight: warning: poor fit, D̄ %.1f%% with %zu light%s: parts of the target may be unreachable by any "
                  "light, or need another light count (--lights N) or spotlight hints (--spot-hints)\n",
                  100.0 * report.dbar, report.chosen, report.chosen == 1 ? "" : "s");
+  // A poor fit under the building default may be the default's doing: say how to lift it.
+  if (report.dbar > kPoorFit && !building_note.empty())
+    std::fprintf(stderr, "hilight: the lights were held on the ceiling (a building's default): if the target's lamps hang lower, "
+                         "--place anywhere frees them\n");
   if (max_dbar >= 0 && report.dbar > max_dbar) {
     std::fprintf(stderr, "hilight: %s: D̄ %.2f%% is above --max-dbar %.2f%% (lights written to %s)\n", target_path.c_str(),
                  100.0 * report.dbar, 100.0 * max_dbar, output.c_str());
