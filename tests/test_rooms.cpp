@@ -316,3 +316,24 @@ TEST_CASE("rooms: region:room2 keeps a solve's lights in the second room of a sc
   CHECK(lines_with(bad.err, "region:room3: no room or storey is named room3 (the scene's rooms: room1, room2)") == 1);
   CHECK_FALSE(fs::exists(dir / "none.json"));
 }
+
+#ifdef HILIGHT_HAVE_IFCPP
+TEST_CASE("rooms: hilight target workplane --region Wohnen lays the grid in the living room only", "[rooms][real][criteria]") {
+  const fs::path dir = test::output_dir("rooms_workplane_named");
+  const auto r = test::run_hilight({"target", "workplane", fzk_house().string(), "--region", "Wohnen", "--lux", "500", "-o",
+                                    (dir / "wohnen.json").string()});
+  REQUIRE(r.exit_code == 0);
+  std::ifstream in(dir / "wohnen.json");
+  const auto criteria = nlohmann::json::parse(in);
+  const Scene house = load_scene(fzk_house());
+  const auto rooms = cli::read_ifc_rooms(fzk_house(), house).rooms;
+  const NamedRoom& living = *rooms_named(rooms, "Wohnen").front();
+  const auto& points = criteria.at("grids").at(0).at("points");
+  CHECK(points.size() >= 20);  // 7.9 x 3.7 m less a 0.5 m band, at EN 12464-1's spacing
+  for (const auto& p : points) CHECK(living.contains(Vec3(p[0].get<float>(), p[1].get<float>(), p[2].get<float>())));
+  const auto bad = test::run_hilight({"target", "workplane", fzk_house().string(), "--region", "Keller", "-o", (dir / "keller.json").string()});
+  CHECK(bad.exit_code == 2);
+  CHECK(lines_with(bad.err, "--region Keller: no room or storey is named Keller") == 1);
+  CHECK_FALSE(fs::exists(dir / "keller.json"));
+}
+#endif

@@ -4,7 +4,9 @@
 #include "commands.hpp"
 #include "hilight/error.hpp"
 #include "hilight/io/criteria_file.hpp"
+#include "hilight/light_space.hpp"
 #include "hilight/regions.hpp"
+#include "ifc_spaces.hpp"
 #include "hilight/scene_origin.hpp"
 #include "progress_display.hpp"
 
@@ -49,7 +51,7 @@ int run_target(const std::vector<std::string>& args) {
   std::string kind, scene_path, output, box_text;
   float height = 0.75f, border = 0.5f;
   double lux = 500, u0 = 0.6, walls = 0, ceiling = 0, surface_u0 = 0.1, spacing = 0;
-  int region = -1;
+  std::string region;
   bool append = false;
   app.add_option("kind", kind, "workplane: a horizontal calculation grid at --height over the floor")
       ->required()
@@ -57,7 +59,9 @@ int run_target(const std::vector<std::string>& args) {
   app.add_option("scene", scene_path, "scene file")->required();
   app.add_option("-o,--output", output, "criteria file to write (.json)")->required();
   app.add_option("--height", height, "work plane height over the floor")->check(CLI::Range(0.0, 1e6))->capture_default_str();
-  app.add_option("--region", region, "the room (as hilight info numbers the regions); default: the whole scene")->check(CLI::Range(0, 1000000));
+  app.add_option("--region", region,
+                 "the room: a number as hilight info numbers the regions, or a room's name as it lists them (an IFC's "
+                 "IfcSpace or storey: Wohnen; elsewhere room1, ...); default: the whole scene");
   app.add_option("--box", box_text, "or the area as X0,Y0,Z0,X1,Y1,Z1 (the floor is the lowest one inside)");
   app.add_option("--lux", lux, "maintained mean illuminance wanted on the work plane, lx")->check(CLI::Range(0.0, 1e7))->capture_default_str();
   app.add_option("--u0", u0, "uniformity wanted: Emin/Ē")->check(CLI::Range(0.0, 1.0))->capture_default_str();
@@ -78,7 +82,7 @@ int run_target(const std::vector<std::string>& args) {
   add_scene_options(app, scene_options, kAdvanced);
   progress.add_to(app);
   if (auto code = parse_arguments(app, args)) return *code;
-  if (region >= 0 && !box_text.empty()) throw InputError("--region and --box: give one area");
+  if (!region.empty() && !box_text.empty()) throw InputError("--region and --box: give one area");
   if (zones && box_text.empty()) throw InputError("--zones needs the task area as --box X0,Y0,Z0,X1,Y1,Z1 (its surround and background lie around it)");
   check_output_type(output, {".json"}, "criteria are written as .json");
   check_writable(output);
@@ -101,7 +105,18 @@ int run_target(const std::vector<std::string>& args) {
   for (auto& g : criteria.grids)
     for (auto& p : g.points) p = to_local(p, scene.frame);
   GridArea area;
-  if (region >= 0) area.region = region;
+  if (!region.empty()) {  // a number (a region), or a room's name
+    PlacementRules named;
+    try {
+      named.add("region:" + region);
+      named.resolve_room_names(scene_rooms(scene_path, named, rays));
+    } catch (const InputError& e) {
+      const std::string what = e.what(), prefix = "--place region:";
+      throw InputError("--region " + (what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what));
+    }
+    if (!named.regions.empty()) area.region = named.regions.front();
+    area.rooms = named.rooms;
+  }
   if (!box_text.empty()) {
     Bounds b = parse_box(box_text);
     area.box = Bounds{to_local(b.lo, scene.frame), to_local(b.hi, scene.frame)};

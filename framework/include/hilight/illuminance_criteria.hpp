@@ -6,6 +6,7 @@
 /// ceilings are points on the scene's surfaces, facing into the room.
 /// Illuminance is in lux, lengths in the scene's unit (metres).
 #include "hilight/ray_scene.hpp"
+#include "hilight/named_room.hpp"
 #include "hilight/regions.hpp"
 #include "hilight/surface_points.hpp"
 
@@ -54,9 +55,11 @@ GridFigures grid_figures(const CriterionGrid& grid, std::span<const double> lux,
 std::vector<double> lux_from_radiance(std::span<const Rgb> radiance);
 
 /// Where a grid lies: a region (a room, as `hilight info` numbers them), or
-/// a box, or (neither) the whole scene.
+/// named rooms (an IFC's IfcSpaces, a storey's, or rooms split at doors:
+/// named_room.hpp; in one of them), or a box, or (none) the whole scene.
 struct GridArea {
   std::optional<int> region;
+  std::vector<NamedRoom> rooms;
   std::optional<Bounds> box;
 };
 

@@ -32,11 +32,19 @@ Bounds area_box(const RayScene& rays, const Regions& regions, const GridArea& ar
     b.hi += Vec3(2.f * v);
     return b;
   }
+  if (!area.rooms.empty()) {  // the rooms' outlines, with the floor under them and the walls around
+    Bounds b;
+    for (const auto& r : area.rooms) b.extend(r.box.lo), b.extend(r.box.hi);
+    b.lo -= Vec3(0.3f);
+    b.hi += Vec3(0.3f);
+    return b;
+  }
   return rays.scene().bounds;
 }
 
 bool in_area(const Regions& regions, const GridArea& area, const Bounds& box, const Vec3& p) {
   if (!box.contains(p)) return false;
+  if (!area.rooms.empty() && std::none_of(area.rooms.begin(), area.rooms.end(), [&](const NamedRoom& r) { return r.contains(p); })) return false;
   return !area.region || regions.at(p) == *area.region;
 }
 
