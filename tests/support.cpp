@@ -127,9 +127,9 @@ std::vector<std::string> with_suite_bounces(const std::vector<std::string>& args
 bool g_cli_own_placement = false;
 
 /// `args` with --place anywhere for a painted solve (not criteria, a .json
-/// target) when the test does not say (support.hpp, CliOwnPlacement).
+/// target) and the painter when the test does not say (support.hpp, CliOwnPlacement).
 std::vector<std::string> with_suite_placement(const std::vector<std::string>& args) {
-  if (g_cli_own_placement || args.empty() || args[0] != "solve") return args;
+  if (g_cli_own_placement || args.empty() || (args[0] != "solve" && args[0] != "paint")) return args;
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "anywhere" || args[i] == "--help" || args[i] == "-h") return args;
     if (args[i] == "--target" && i + 1 < args.size() && args[i + 1].size() >= 5 && args[i + 1].substr(args[i + 1].size() - 5) == ".json") return args;

@@ -57,9 +57,10 @@ struct CliOwnBounces {
 };
 
 /// The suite's CLI solves were written for free placement: in a building
-/// (an IFC with storeys, a closed interior) the CLI now hangs lights from
-/// the ceiling by default (issue 34 §7), so run_hilight adds `--place
-/// anywhere` to a painted solve unless the test says `anywhere` itself. A
+/// (an IFC with storeys, a closed interior) the CLI and the painter now hang
+/// lights from the ceiling by default (issue 34 §7), so run_hilight adds
+/// `--place anywhere` to a painted solve and to `paint` unless the test says
+/// `anywhere` itself. A
 /// test of the building default holds one of these while it runs.
 struct CliOwnPlacement {
   CliOwnPlacement();

@@ -33,14 +33,6 @@ bool has_ifc_extension(const std::filesystem::path& file) {
 
 } // namespace
 
-bool ifc_has_storeys(const std::filesystem::path& file) {
-  if (!has_ifc_extension(file)) return false;
-  std::ifstream in(file, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::toupper(c)); });
-  return text.find("IFCBUILDINGSTOREY(") != std::string::npos;
-}
-
 std::vector<NamedRoom> scene_rooms(const std::filesystem::path& file, const PlacementRules& rules, const RayScene& rays) {
   if (rules.region_names.empty() && rules.not_region_names.empty()) return {};
   if (auto ifc = read_ifc_rooms(file, rays.scene()); !ifc.rooms.empty()) return std::move(ifc.rooms);

@@ -24,10 +24,6 @@ struct IfcRooms {
 /// file cannot be read as IFC.
 IfcRooms read_ifc_rooms(const std::filesystem::path& file, const Scene& scene);
 
-/// Whether `file` is an .ifc file with an IfcBuildingStorey (its text, no
-/// IFC reader: what the building default asks of every IFC solve).
-bool ifc_has_storeys(const std::filesystem::path& file);
-
 /// The rooms `region:NAME` rules choose from, read only when a rule names
 /// one: the IFC's IfcSpaces, else free space split at doors, "room1"...
 /// (room_split.hpp). InputError when the IFC cannot be read.

@@ -4,6 +4,9 @@
 #include "hilight/light_cache_store.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <iterator>
 
 namespace hilight::cli {
 
@@ -79,6 +82,16 @@ PlacementRules SolveOptions::placement() const {
   PlacementRules rules;
   for (const auto& rule : place) rules.add(rule);
   return rules;
+}
+
+bool ifc_has_storeys(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext != ".ifc") return false;
+  std::ifstream in(file, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+  return text.find("IFCBUILDINGSTOREY(") != std::string::npos;
 }
 
 std::string building_kind(const Scene& scene, bool storeys) {

@@ -42,6 +42,10 @@ struct SolveOptions {
   SolveSpec to_spec(const Registry& registry) const;
 };
 
+/// Whether `file` is an .ifc file with an IfcBuildingStorey (its text, no
+/// IFC reader: what the building default asks of every IFC solve).
+bool ifc_has_storeys(const std::filesystem::path& file);
+
 /// What makes `scene` a building (issue 34 §7): "an IFC building with
 /// storeys" (`storeys`), "an interior, closed on every side" (no side at
 /// kOpenSide), or "" (a product, a stage: open).

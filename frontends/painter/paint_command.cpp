@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 namespace hilight::painter {
 
@@ -106,6 +107,11 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   if (!o.script.empty()) session = read_session(o.script);
   o.started = std::chrono::steady_clock::now();  // --timings: open_to_first_frame counts from here
   auto loaded = std::make_shared<const Scene>(load_scene(o.scene, {o.max_edge}));
+  // A building's lights hang from the ceiling unless --place says where, as in hilight solve (not when
+  // --lights gives them: their places are the user's); the Placement panel shows the rule, Anywhere lifts it.
+  if (o.lights.empty())
+    if (const std::string note = cli::apply_building_default(o.job.settings.placement, *loaded, cli::ifc_has_storeys(o.scene)); !note.empty())
+      std::fprintf(stderr, "hilight: %s\n", note.c_str());
   PainterApp painter(o, registry, loaded, std::move(session));
   return painter.run();
 }

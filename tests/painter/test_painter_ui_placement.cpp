@@ -81,3 +81,32 @@ TEST_CASE("painter ui: the placement panel's rules, recorded as a place action, 
   CHECK(test::line_count(bad.err) == 1);
   CHECK_THAT(bad.err, Catch::Contains("MIN <= MAX"));
 }
+
+TEST_CASE("painter ui: in a closed room the painter hangs lights from the ceiling by default and says so", "[painter-ui][placement][rooms]") {
+  if (test::skip_without_display()) return;
+  test::CliOwnPlacement own;  // the building default under test (issue 34 §7)
+  const fs::path dir = test::output_dir("painter_ui_building_default");
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  const nlohmann::json actions = {
+      {{"type", "camera"}, {"eye", {3.0, 6.0, 9.0}}, {"target", {3.0, 0.0, 2.5}}, {"fov", 60}},
+      {{"type", "brush"}, {"radius", 0.6}, {"colour", 1.0}, {"brightness", 0.6}, {"hardness", 0.7}},
+      {{"type", "stroke"}, {"world", {{2.2, 0, 3.0}}}},
+      {{"type", "solve"}},
+      {{"type", "save_lights"}, {"path", (dir / "lights.json").string()}}};
+  test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+  const std::vector<std::string> args = {"paint", room, "--size", "480x360", "--set", "bounce_samples=16", "--samples", "800",
+                                         "--no-cache", "--no-record", "--exit", "--script", (dir / "session.json").string()};
+  const test::RunResult run = test::run_hilight(args);
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.err.find("hilight: lights on the ceiling (an interior, closed on every side; --place anywhere lifts it)") != std::string::npos);
+  const Lighting lights = read_lights_json(dir / "lights.json");
+  REQUIRE_FALSE(lights.empty());
+  for (const auto& l : lights) CHECK(l.position.y == Approx(2.8f).margin(1e-3));  // 0.2 under the 3 m ceiling
+  // Lights given on the command line keep their places: no default, no note.
+  std::vector<std::string> given = args;
+  given.insert(given.end(), {"--lights", (dir / "lights.json").string()});
+  const test::RunResult with_lights = test::run_hilight(given);
+  REQUIRE(with_lights.exit_code == 0);
+  CHECK(with_lights.err.find("lights on the ceiling") == std::string::npos);
+}
