@@ -1,5 +1,7 @@
 #include "painter_app.hpp"
 
+#include "hilight/default_view.hpp"
+
 #include "hilight/error.hpp"
 #include "hilight/io/atomic_file.hpp"
 #include "ui/gl.hpp"
@@ -73,7 +75,9 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_mesh = std::make_unique<ui::SceneMesh>(*m_scene);
   m_lines = std::make_unique<ui::LineBatch>();
   m_view_buffer = std::make_unique<ui::SceneFramebuffer>();
-  m_camera = ui::OrbitCamera::framing(m_scene->bounds, aspect());
+  // Inside the largest lit room of a building or closed box, else from outside (default_view.hpp).
+  m_camera = ui::OrbitCamera::from_camera(default_view(*m_rays, m_document->state().lights, aspect()), m_scene->diagonal(),
+                                          m_scene->bounds.center());
   // Background results wake the event loop at once (glfwPostEmptyEvent is thread-safe).
   // The display's renderers are made on the worker's thread: binding a big
   // scene takes seconds the first frame need not wait for.
@@ -262,10 +266,13 @@ void PainterApp::refresh_colours() {
   if (m_display.radiance.size() != m_scene->positions.size()) return;  // nothing rendered yet
   const bool no_lights = s.lights.empty();
   if (!m_display.exposure_from_result) {
-    // Once, from the first lit result (until then from the target): later
-    // changes of brightness stay visible instead of being normalized away,
-    // and target and result are shown alike.
-    const float from_result = no_lights || !m_display.radiance_final ? 0.f : ui::auto_exposure(m_display.radiance);
+    // Once per view, from the first lit result (until then from the target):
+    // later changes of brightness stay visible instead of being normalized
+    // away, and target and result are shown alike. A new view (a plan, a
+    // walk, another room) is exposed for what it shows (view_changed).
+    std::vector<float> in_view;
+    if (m_display.exposure_in_view) in_view = vertices_in_view();
+    const float from_result = no_lights || !m_display.radiance_final ? 0.f : ui::auto_exposure(m_display.radiance, in_view);
     if (from_result > 0.f) {
       m_display.exposure = from_result;
       m_display.exposure_from_result = true;
@@ -286,6 +293,27 @@ void PainterApp::refresh_colours() {
   ++m_colour_uploads;
   m_display.colours_revision = m_document->revision();
   m_display.colours_dirty = false;
+}
+
+void PainterApp::view_changed() {
+  m_display.exposure_from_result = false;
+  m_display.exposure_in_view = true;
+  m_display.colours_dirty = true;
+}
+
+std::vector<float> PainterApp::vertices_in_view() const {
+  const glm::mat4 vp = view_projection();
+  const std::optional<float> section = m_player->clip().section;
+  std::vector<float> in(m_scene->positions.size(), 0.f);
+  size_t count = 0;
+  for (size_t i = 0; i < in.size(); ++i) {
+    const Vec3& p = m_scene->positions[i];
+    if (section && p.y > *section) continue;
+    const glm::vec4 c = vp * glm::vec4(p, 1.f);
+    if (c.w > 0.f && std::abs(c.x) <= c.w && std::abs(c.y) <= c.w && c.z >= -c.w && c.z <= c.w) in[i] = 1.f, ++count;
+  }
+  if (count < 16) in.clear();  // too little in view to judge: the whole scene
+  return in;
 }
 
 void PainterApp::draw_scene() {

@@ -5,6 +5,7 @@
 /// designer takes goes through the core's SessionPlayer and is recorded, so
 /// a session can be replayed exactly.
 #include "core/session_player.hpp"
+#include "hilight/plan_view.hpp"
 #include "building_state.hpp"
 #include "display_state.hpp"
 #include "files_panel_state.hpp"
@@ -58,6 +59,11 @@ private:
   void poll_workers();
   /// Recomputes vertex colours if the view mode, document or illumination changed.
   void refresh_colours();
+  /// The view changed (camera released, plan, walk, room focus): the next
+  /// colours pick their exposure again from what this view shows (issue 36).
+  void view_changed();
+  /// 1 for each vertex in the view's frustum (and under the section), else 0.
+  std::vector<float> vertices_in_view() const;
   /// Draws the scene and overlays into the back buffer (no panels).
   void draw_scene();
   void build_overlays();
@@ -126,6 +132,8 @@ private:
   std::optional<SurfacePick> pick_window_pixel(float x, float y) const;
   CameraPose camera_pose() const;
   void set_plan(bool on);
+  /// The plan key and checkbox: in a building, turns the section on at the camera's storey first.
+  void toggle_plan(bool on);
   /// Frames a room (a `focus`): the orbit looks down at its floor from above and in front.
   void frame_room(const Bounds& box);
   /// A `walk` action: enter or leave walk mode, move (stopped by walls), look around.
@@ -153,6 +161,7 @@ private:
   std::optional<size_t> m_job_action;  ///< recorded index of the running job's action
   std::vector<Rgb> m_preview;  ///< albedo under a fixed key light: the view before lights, and the "don't care" backdrop
   std::vector<Rgb> m_albedo;   ///< per vertex (the plan's lux readouts)
+  std::vector<PlanSection> m_storeys;  ///< the plan's storeys, found on the first lux readout
 
   std::unique_ptr<ui::Window> m_window;
   std::unique_ptr<ui::SceneMesh> m_mesh;

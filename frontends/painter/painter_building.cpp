@@ -36,8 +36,23 @@ void PainterApp::handle_building_keys() {
   const float step = 0.02f * (m_scene->bounds.hi.y - m_scene->bounds.lo.y);
   if (ImGui::IsKeyPressed(GLFW_KEY_PAGE_UP)) set_section(section_height() + step);
   if (ImGui::IsKeyPressed(GLFW_KEY_PAGE_DOWN)) set_section(section_height() - step);
-  if (pressed(GLFW_KEY_T)) perform(PlanAction{!m_plan.has_value()});
+  if (pressed(GLFW_KEY_T)) toggle_plan(!m_plan.has_value());
   if (pressed(GLFW_KEY_V)) perform(WalkAction{!m_building.walking, std::nullopt, std::nullopt});
+}
+
+void PainterApp::toggle_plan(bool on) {
+  // A building's plan from above its roof shows the roof: with no section,
+  // cut first at the storey the camera stands in (recorded, so replays agree).
+  if (on && !m_player->clip().section) {
+    if (m_storeys.empty()) m_storeys = plan_sections(*m_scene);
+    const Vec3 eye = m_camera.to_camera().eye;
+    const PlanSection* storey = &m_storeys.front();
+    for (const PlanSection& s : m_storeys)
+      if (s.floor <= eye.y) storey = &s;
+    // (A scene with no floors gets one section over everything: nothing to cut.)
+    if (storey->section < m_scene->bounds.hi.y) set_section(storey->section);
+  }
+  perform(PlanAction{on});
 }
 
 void PainterApp::set_plan(bool on) {
@@ -68,6 +83,7 @@ void PainterApp::frame_room(const Bounds& box) {
   m_building.walking = false;
   m_camera = ui::OrbitCamera::from_camera(c, m_scene->diagonal(), m_scene->bounds.center());
   if (m_plan) set_plan(true);  // the plan shows the focused rooms too
+  view_changed();
 }
 
 void PainterApp::panel_rooms() {
@@ -96,7 +112,7 @@ void PainterApp::panel_rooms() {
 
 void PainterApp::draw_plan_readouts() {
   if (!m_plan || !m_display.show_lights) return;
-  // Each light's number, intensity (luminance of its RGB intensity) and the lux below it, beside its marker.
+  // Each light's number, intensity (luminance of its RGB intensity, W/sr) and the lux on the floor below it, beside its marker.
   int w = 1, h = 1;
   m_window->framebuffer_size(w, h);
   const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
@@ -109,12 +125,16 @@ void PainterApp::draw_plan_readouts() {
     const float x = (0.5f + 0.5f * clip.x / clip.w) * float(w) / std::max(scale.x, 1e-3f);
     const float y = (0.5f - 0.5f * clip.y / clip.w) * float(h) / std::max(scale.y, 1e-3f);
     const Rgb& I = lights[i].intensity;
-    char text[96];
-    const int n = std::snprintf(text, sizeof text, "%zu: I %.3g", i, 0.2126 * I.r + 0.7152 * I.g + 0.0722 * I.b);
+    char text[128];
+    // Every number with its unit; the lux on the floor of the light's storey, not on the first thing below it.
+    const int n = std::snprintf(text, sizeof text, "%zu: I %.3g W/sr", i, 0.2126 * I.r + 0.7152 * I.g + 0.0722 * I.b);
     // The lux below it once the result view shows these lights.
-    if (m_display.radiance_lights == lights)
-      if (const auto lux = lux_below(*m_rays, m_display.radiance, m_albedo, lights[i].position))
-        std::snprintf(text + n, sizeof text - size_t(n), ", %.0f lx below", *lux);
+    if (m_display.radiance_lights == lights) {
+      if (m_storeys.empty()) m_storeys = plan_sections(*m_scene);
+      const float floor = storey_floor(m_storeys, lights[i].position);
+      if (const auto lux = lux_on_floor(*m_rays, m_display.radiance, m_albedo, lights[i].position, floor))
+        std::snprintf(text + n, sizeof text - size_t(n), ", %.0f lx on the floor", *lux);
+    }
     draw->AddText(ImVec2(x + 6.f, y - 6.f), IM_COL32(255, 240, 160, 255), text);
   }
 }
@@ -141,8 +161,9 @@ void PainterApp::panel_building() {
   if (ImGui::IsItemDeactivatedAfterEdit()) set_section(height);
   tip("World height (+Y) of the section; Page Up / Page Down move it");
   bool plan = m_plan.has_value();
-  if (ImGui::Checkbox("plan (T)", &plan)) perform(PlanAction{plan});
-  tip("An orthographic top view of the section (or of the focused rooms), with the lights' numbers and intensities");
+  if (ImGui::Checkbox("plan (T)", &plan)) toggle_plan(plan);
+  tip("An orthographic top view of the section (or of the focused rooms), with the lights' numbers, intensities (W/sr) "
+      "and the lux on the floor straight below each");
   ImGui::SameLine();
   bool walking = m_building.walking;
   if (ImGui::Checkbox("walk (V)", &walking)) perform(WalkAction{walking, std::nullopt, std::nullopt});

@@ -135,6 +135,7 @@ void PainterApp::record_camera() {
   pose.target = c.target;
   pose.fov = c.fov_deg;
   record(pose);
+  view_changed();
 }
 
 void PainterApp::start_job(const TypedAction& job) {

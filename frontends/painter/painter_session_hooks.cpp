@@ -12,11 +12,20 @@ namespace hilight::painter {
 
 PlayerHooks PainterApp::make_hooks() {
   PlayerHooks hooks;
-  hooks.camera = [this](const CameraAction& action) { apply_camera_action(action); };
+  hooks.camera = [this](const CameraAction& action) {
+    apply_camera_action(action);
+    view_changed();
+  };
   hooks.camera_pose = [this] { return camera_pose(); };
   hooks.pick_screen = [this](const std::array<float, 2>& xy) { return pick_window_pixel(xy[0], xy[1]); };
-  hooks.plan = [this](bool on) { set_plan(on); };
-  hooks.walk = [this](const WalkAction& action) { apply_walk(action); };
+  hooks.plan = [this](bool on) {
+    set_plan(on);
+    view_changed();
+  };
+  hooks.walk = [this](const WalkAction& action) {
+    apply_walk(action);
+    view_changed();
+  };
   hooks.frame = [this](const Bounds& box) { frame_room(box); };
   hooks.screenshot = [this](const std::filesystem::path& path) { screenshot(path); };
   hooks.view = [this](ViewShown show) {

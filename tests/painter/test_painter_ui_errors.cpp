@@ -101,8 +101,9 @@ TEST_CASE("painter ui: a script action that fails names the action", "[painter-u
   check_one_line_error(
       test::run_hilight({"paint", kRoom, "--script", (dir / "fine_tune.json").string(), "--exit", "--no-record", "--size", "320x240"}),
       "action 0 (fine_tune)");
-  // A screen point that hits nothing (the sky above the framed room).
-  test::write_text(dir / "miss.json", R"({"actions": [{"type": "erase_shadow", "screen": [2, 2]}]})");
+  // A screen point that hits nothing: the room opens seen from inside, so the camera first looks away from it.
+  test::write_text(dir / "miss.json", R"({"actions": [{"type": "camera", "eye": [20, 20, 20], "target": [40, 40, 40], "fov": 50},
+                                                     {"type": "erase_shadow", "screen": [2, 2]}]})");
   check_one_line_error(
       test::run_hilight({"paint", kRoom, "--script", (dir / "miss.json").string(), "--exit", "--no-record", "--size", "320x240"}),
       "nothing under the screen point");
