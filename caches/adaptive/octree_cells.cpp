@@ -51,9 +51,27 @@ int corner_weights(const Cell& cell, const Vec3& f, uint32_t slots[8], float wei
 
 } // namespace
 
-int CellTree::blend(const Vec3& p, uint32_t slots[9], float weights[9]) const {
+int CellTree::blend(const Vec3& p, uint32_t slots[9], float weights[9], const SeesNode& sees) const {
   Vec3 f;
   const Cell& cell = leaf(p, f);
+  // Nodes the light does not see (behind a wall) hold another room's bounce:
+  // where some are hidden, blend only the seen corners (no tent); where all
+  // are hidden, blend them all as if seen.
+  const float span = float(cell_span(cell.level));
+  Cell seen_corners = cell;
+  int seen = 0, hidden = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    if (cell.corner[corner] == kNoNode) continue;
+    const glm::ivec3 lattice = cell.lo + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1) * cell_span(cell.level);
+    if (sees(position(lattice))) {
+      ++seen;
+    } else {
+      seen_corners.corner[corner] = kNoNode;
+      ++hidden;
+    }
+  }
+  if (cell.centre != kNoNode && !sees(origin + (Vec3(cell.lo) + 0.5f * span) * base_size / float(1 << depth))) ++hidden;
+  if (hidden > 0 && seen > 0) return corner_weights(seen_corners, f, slots, weights);
   int used = corner_weights(cell, f, slots, weights);
   if (cell.centre == kNoNode) return used;
   // blend = corners(p) + tent(p) · (centre − corners(centre)): exact at the

@@ -6,6 +6,7 @@
 #include "hilight/math.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <vector>
 
@@ -38,10 +39,13 @@ struct CellTree {
   }
   /// The leaf holding `p` (clamped into the box) and p's place in it, in [0,1]³.
   const Cell& leaf(const Vec3& p, Vec3& fraction) const;
+  /// Whether a light at the blended point sees a node at this position.
+  using SeesNode = std::function<bool(const Vec3& node)>;
   /// Weights of the nodes that blend to the bounce at `p`: trilinear over the
   /// leaf's usable corners (renormalized over them) plus the centre's tent;
-  /// returns how many were written (at most 9).
-  int blend(const Vec3& p, uint32_t slots[9], float weights[9]) const;
+  /// where `sees` hides some of them, trilinear over the seen corners only.
+  /// Returns how many were written (at most 9).
+  int blend(const Vec3& p, uint32_t slots[9], float weights[9], const SeesNode& sees) const;
 
   void write(std::ostream& out) const;
   /// False when the stream does not hold a consistent tree over `nodes` nodes.

@@ -1,7 +1,8 @@
 // The `grid` light cache (paper §3.4): unit lights at the centres of a
 // regular grid of cells over the light space, the bounce of a light anywhere
 // the trilinear blend of its cell's eight nodes. Nodes inside solid objects
-// or on surfaces are left out of the blend (the others are renormalized).
+// or on surfaces, and nodes the light does not see (behind a wall), are left
+// out of the blend (the others are renormalized).
 #include "hilight/error.hpp"
 #include "hilight/light_cache.hpp"
 #include "hilight/light_cache_nodes.hpp"
@@ -28,7 +29,7 @@ public:
   std::vector<uint32_t> slot;  ///< node -> index into responses, UINT32_MAX where no light can stand
   NodeResponses responses;
 
-  std::unique_ptr<LightCacheView> view(const Scene& scene, const SampleSet& samples) const override;
+  std::unique_ptr<LightCacheView> view(const RayScene& rays, const SampleSet& samples) const override;
   size_t node_count() const override { return responses.count(); }
 
   void write(std::ostream& out) const override {
@@ -65,8 +66,8 @@ public:
 
 class GridView final : public LightCacheView {
 public:
-  GridView(const GridCache& cache, const Scene& scene, const SampleSet& samples)
-      : m_cache(cache), m_table(cache.responses, scene, samples) {}
+  GridView(const GridCache& cache, const RayScene& rays, const SampleSet& samples)
+      : m_cache(cache), m_rays(rays), m_table(cache.responses, rays.scene(), samples) {}
 
   void add_indirect(const Vec3& position, Rgb* out) const override {
     const GridCache& c = m_cache;
@@ -80,8 +81,8 @@ public:
     }
     uint32_t slots[8];
     float weights[8];
-    int used = 0;
-    float total = 0.f;
+    bool seen[8];
+    int used = 0, seen_count = 0;
     for (int corner = 0; corner < 8; ++corner) {
       const glm::ivec3 q = base + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
       if (q.x >= c.dims.x || q.y >= c.dims.y || q.z >= c.dims.z) continue;
@@ -89,21 +90,33 @@ public:
       const float w = (corner & 1 ? f.x : 1.f - f.x) * (corner & 2 ? f.y : 1.f - f.y) * (corner & 4 ? f.z : 1.f - f.z);
       if (s == UINT32_MAX || w <= 0.f) continue;
       slots[used] = s;
-      weights[used++] = w;
-      total += w;
+      weights[used] = w;
+      seen[used] = node_seen(m_rays, position, c.origin + Vec3(q) * c.spacing);
+      seen_count += seen[used];
+      ++used;
     }
-    if (used == 0 || total <= 0.f) return;  // surrounded by solid: no cached bounce
-    for (int k = 0; k < used; ++k) weights[k] /= total;
-    m_table.add_blend(slots, weights, used, out);
+    // Blend the nodes the light sees; where it sees none, all of them.
+    int kept = 0;
+    float total = 0.f;
+    for (int k = 0; k < used; ++k)
+      if (seen[k] || seen_count == 0) {
+        slots[kept] = slots[k];
+        weights[kept] = weights[k];
+        total += weights[kept++];
+      }
+    if (kept == 0 || total <= 0.f) return;  // surrounded by solid: no cached bounce
+    for (int k = 0; k < kept; ++k) weights[k] /= total;
+    m_table.add_blend(slots, weights, kept, out);
   }
 
 private:
   const GridCache& m_cache;
+  const RayScene& m_rays;
   NodeSampleTable m_table;
 };
 
-std::unique_ptr<LightCacheView> GridCache::view(const Scene& scene, const SampleSet& samples) const {
-  return std::make_unique<GridView>(*this, scene, samples);
+std::unique_ptr<LightCacheView> GridCache::view(const RayScene& rays, const SampleSet& samples) const {
+  return std::make_unique<GridView>(*this, rays, samples);
 }
 
 class GridBuilder final : public LightCacheBuilder {

@@ -87,4 +87,8 @@ private:
 /// LightSpace::free_at, the one test of free space.
 bool node_is_free(const RayScene& rays, const Vec3& position, float clearance);
 
+/// Whether a light at `light` sees the node at `node` (nothing on the
+/// segment between them): only such nodes are blended into its bounce.
+bool node_seen(const RayScene& rays, const Vec3& light, const Vec3& node);
+
 } // namespace hilight

@@ -230,4 +230,10 @@ void NodeSampleTable::add_blend(const uint32_t* slots, const float* weights, int
 
 bool node_is_free(const RayScene& rays, const Vec3& position, float clearance) { return LightSpace::free_at(rays, position, clearance); }
 
+bool node_seen(const RayScene& rays, const Vec3& light, const Vec3& node) {
+  const Vec3 d = node - light;
+  const float distance = glm::length(d);
+  return distance <= 0.f || !rays.occluded(light, d / distance, distance);
+}
+
 } // namespace hilight
