@@ -87,7 +87,7 @@ TEST_CASE("each light cache plugin's bounce is close to the exact bounce and sur
   }
 }
 
-TEST_CASE("a cache blends only the nodes a light sees: no bounce leaks through a wall into the next room", "[cache]") {
+TEST_CASE("a cache blends only the nodes on a light's side of a wall: no bounce leaks into the next room", "[cache]") {
   // Two 3 m rooms side by side, a solid wall between them (x 2.9 to 3.1) and
   // no door: a light in the left room lights nothing in the right one. The
   // grid's nodes stand 0.75 m apart, so a light 0.1 m from the wall has a

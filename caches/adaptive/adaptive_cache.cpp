@@ -57,8 +57,8 @@ public:
   void add_indirect(const Vec3& position, Rgb* out) const override {
     uint32_t slots[9];
     float weights[9];
-    const auto sees = [&](const Vec3& node) { return node_seen(m_rays, position, node); };
-    if (const int used = m_tree.blend(position, slots, weights, sees)) m_table.add_blend(slots, weights, used, out);
+    const auto keep_side = [&](const CellCorners& corners, bool keep[8]) { corners_on_light_side(m_rays, position, corners, keep); };
+    if (const int used = m_tree.blend(position, slots, weights, keep_side)) m_table.add_blend(slots, weights, used, out);
   }
 
 private:

@@ -51,27 +51,28 @@ int corner_weights(const Cell& cell, const Vec3& f, uint32_t slots[8], float wei
 
 } // namespace
 
-int CellTree::blend(const Vec3& p, uint32_t slots[9], float weights[9], const SeesNode& sees) const {
+int CellTree::blend(const Vec3& p, uint32_t slots[9], float weights[9], const KeepSide& keep_side) const {
   Vec3 f;
   const Cell& cell = leaf(p, f);
-  // Nodes the light does not see (behind a wall) hold another room's bounce:
-  // where some are hidden, blend only the seen corners (no tent); where all
-  // are hidden, blend them all as if seen.
-  const float span = float(cell_span(cell.level));
-  Cell seen_corners = cell;
-  int seen = 0, hidden = 0;
+  CellCorners corners;
   for (int corner = 0; corner < 8; ++corner) {
-    if (cell.corner[corner] == kNoNode) continue;
-    const glm::ivec3 lattice = cell.lo + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1) * cell_span(cell.level);
-    if (sees(position(lattice))) {
-      ++seen;
-    } else {
-      seen_corners.corner[corner] = kNoNode;
-      ++hidden;
-    }
+    const glm::ivec3 bits(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+    corners.present[corner] = cell.corner[corner] != kNoNode;
+    corners.position[corner] = position(cell.lo + bits * cell_span(cell.level));
+    corners.weight[corner] = (bits.x ? f.x : 1.f - f.x) * (bits.y ? f.y : 1.f - f.y) * (bits.z ? f.z : 1.f - f.z);
   }
-  if (cell.centre != kNoNode && !sees(origin + (Vec3(cell.lo) + 0.5f * span) * base_size / float(1 << depth))) ++hidden;
-  if (hidden > 0 && seen > 0) return corner_weights(seen_corners, f, slots, weights);
+  bool keep[8];
+  keep_side(corners, keep);
+  // A wall through the cell: the light's side alone, without the tent (the
+  // centre node may stand on either side).
+  Cell own_side = cell;
+  bool split = false;
+  for (int corner = 0; corner < 8; ++corner)
+    if (corners.present[corner] && !keep[corner]) {
+      own_side.corner[corner] = kNoNode;
+      split = true;
+    }
+  if (split) return corner_weights(own_side, f, slots, weights);
   int used = corner_weights(cell, f, slots, weights);
   if (cell.centre == kNoNode) return used;
   // blend = corners(p) + tent(p) · (centre − corners(centre)): exact at the

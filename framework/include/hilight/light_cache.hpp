@@ -32,9 +32,9 @@ class LightCacheView {
 public:
   virtual ~LightCacheView() = default;
   /// Adds the cached bounce of a unit light at `position` to out[0..samples).
-  /// Only nodes the light sees are blended (node_seen): a node behind a wall
-  /// keeps the other room's bounce, not this one's. Where it sees none of
-  /// its nodes (a pocket smaller than a cell), all of them are blended.
+  /// Only nodes on the light's side of a wall through its cell are blended
+  /// (corners_on_light_side): a node behind a wall keeps the other room's
+  /// bounce, not this one's.
   virtual void add_indirect(const Vec3& position, Rgb* out) const = 0;
 };
 
