@@ -27,7 +27,7 @@ fs::path fake_cache(const fs::path& dir, const std::string& key, size_t megabyte
 
 /// A cache of no nodes, for saving.
 struct EmptyCache final : LightCache {
-  std::unique_ptr<LightCacheView> view(const Scene&, const SampleSet&) const override { return nullptr; }
+  std::unique_ptr<LightCacheView> view(const RayScene&, const SampleSet&) const override { return nullptr; }
   size_t node_count() const override { return 0; }
   void write(std::ostream& out) const override { out << "empty"; }
 };

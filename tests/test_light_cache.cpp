@@ -30,7 +30,7 @@ struct CacheRig {
   /// The cached bounce of a unit light at `p` at every vertex.
   std::vector<Rgb> cached(const LightCache& cache, const Vec3& p) const {
     std::vector<Rgb> out(samples.size(), Rgb(0.f));
-    cache.view(*scene, samples)->add_indirect(p, out.data());
+    cache.view(*rays, samples)->add_indirect(p, out.data());
     return out;
   }
   std::vector<Rgb> exact(const Vec3& p) const {
@@ -83,6 +83,45 @@ TEST_CASE("each light cache plugin's bounce is close to the exact bounce and sur
       // Blends of nodes ~0.6 m apart (grid) or split where needed
       // (adaptive); refinement removes the rest by anchoring (solver.cpp).
       CHECK(error < 0.10);
+    }
+  }
+}
+
+TEST_CASE("a cache blends only the nodes on a light's side of a wall: no bounce leaks into the next room", "[cache]") {
+  // Two 3 m rooms side by side, a solid wall between them (x 2.9 to 3.1) and
+  // no door: a light in the left room lights nothing in the right one. The
+  // grid's nodes stand 0.75 m apart, so a light 0.1 m from the wall has a
+  // node behind it in its cell; blending that node would bring the right
+  // room's bounce of a light standing there.
+  Scene raw = builders::box_room({6.f, 3.f, 3.f});
+  builders::add_box(raw, {2.9f, 0.f, 0.f}, {3.1f, 3.f, 3.f}, Rgb(0.8f), false, "wall");
+  const auto scene = test::finish(std::move(raw), 0.3f);
+  const RayScene rays(*scene);
+  const auto renderer = test::make_renderer("embree", scene, {"bounce_samples=64", "bounce_direct=vertex"});
+  const auto& points = scene->positions;
+  const Target target = bind_target("vertices", points, std::vector<Rgb>(points.size(), Rgb(1.f)),
+                                    std::vector<float>(points.size(), 1.f), *scene, rays, scene->normals);
+  const SampleSet samples = all_samples(target);
+  std::vector<size_t> right_room;
+  for (size_t i = 0; i < samples.size(); ++i)
+    if (points[samples.target_index[i]].x > 3.15f) right_room.push_back(i);
+  REQUIRE(right_room.size() > 50);
+  for (const std::string name : {"grid", "adaptive"}) {
+    INFO("cache " << name);
+    const auto builder = test::registry().create_cache(name, {});
+    const auto cache = builder->build({*scene, rays, *renderer, scene->light_bounds()});
+    for (const Vec3 light : {Vec3(2.8f, 1.4f, 1.6f), Vec3(2.75f, 2.2f, 0.9f)}) {
+      INFO("light at " << light.x << " " << light.y << " " << light.z);
+      std::vector<Rgb> cached(samples.size(), Rgb(0.f));
+      cache->view(rays, samples)->add_indirect(light, cached.data());
+      const Light unit = Light::point(light, Rgb(1.f));
+      const auto exact = renderer->unit_responses(samples.points, std::span<const Light>(&unit, 1), Transport::IndirectOnly);
+      double left = 0, right = 0;
+      for (size_t i = 0; i < samples.size(); ++i) left += cached[i].g;
+      for (size_t i : right_room) right += cached[i].g;
+      CHECK(left > 0);
+      CHECK(right <= 1e-6 * left);
+      CHECK(l2_error(cached, exact) < 0.35);
     }
   }
 }

@@ -255,7 +255,7 @@ TEST_CASE("the light cache's bounce under ceiling lamps: its error, and what anc
   const Target target = bind_target("vertices", c.scene->positions, std::vector<Rgb>(c.scene->positions.size(), Rgb(1.f)),
                                     std::vector<float>(c.scene->positions.size(), 1.f), *c.scene, *c.rays, c.scene->normals);
   const SampleSet samples = all_samples(target);
-  const auto view = cache->view(*c.scene, samples);
+  const auto view = cache->view(*c.rays, samples);
   const size_t m = samples.size();
   auto error_of = [&](const std::vector<Rgb>& a, const std::vector<Rgb>& exact) { return test::dbar(a, exact); };
   for (size_t j = 0; j < c.truth.size(); ++j) {

@@ -35,7 +35,7 @@ public:
   CellTree tree;
   NodeResponses responses;
 
-  std::unique_ptr<LightCacheView> view(const Scene& scene, const SampleSet& samples) const override;
+  std::unique_ptr<LightCacheView> view(const RayScene& rays, const SampleSet& samples) const override;
   size_t node_count() const override { return responses.count(); }
   void write(std::ostream& out) const override {
     const uint64_t nodes = responses.count();
@@ -52,21 +52,23 @@ public:
 
 class AdaptiveView final : public LightCacheView {
 public:
-  AdaptiveView(const AdaptiveCache& cache, const Scene& scene, const SampleSet& samples)
-      : m_tree(cache.tree), m_table(cache.responses, scene, samples) {}
+  AdaptiveView(const AdaptiveCache& cache, const RayScene& rays, const SampleSet& samples)
+      : m_tree(cache.tree), m_rays(rays), m_table(cache.responses, rays.scene(), samples) {}
   void add_indirect(const Vec3& position, Rgb* out) const override {
     uint32_t slots[9];
     float weights[9];
-    if (const int used = m_tree.blend(position, slots, weights)) m_table.add_blend(slots, weights, used, out);
+    const auto keep_side = [&](const CellCorners& corners, bool keep[8]) { corners_on_light_side(m_rays, position, corners, keep); };
+    if (const int used = m_tree.blend(position, slots, weights, keep_side)) m_table.add_blend(slots, weights, used, out);
   }
 
 private:
   const CellTree& m_tree;
+  const RayScene& m_rays;
   NodeSampleTable m_table;
 };
 
-std::unique_ptr<LightCacheView> AdaptiveCache::view(const Scene& scene, const SampleSet& samples) const {
-  return std::make_unique<AdaptiveView>(*this, scene, samples);
+std::unique_ptr<LightCacheView> AdaptiveCache::view(const RayScene& rays, const SampleSet& samples) const {
+  return std::make_unique<AdaptiveView>(*this, rays, samples);
 }
 
 class AdaptiveBuilder final : public LightCacheBuilder {

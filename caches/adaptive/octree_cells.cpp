@@ -51,9 +51,28 @@ int corner_weights(const Cell& cell, const Vec3& f, uint32_t slots[8], float wei
 
 } // namespace
 
-int CellTree::blend(const Vec3& p, uint32_t slots[9], float weights[9]) const {
+int CellTree::blend(const Vec3& p, uint32_t slots[9], float weights[9], const KeepSide& keep_side) const {
   Vec3 f;
   const Cell& cell = leaf(p, f);
+  CellCorners corners;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::ivec3 bits(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+    corners.present[corner] = cell.corner[corner] != kNoNode;
+    corners.position[corner] = position(cell.lo + bits * cell_span(cell.level));
+    corners.weight[corner] = (bits.x ? f.x : 1.f - f.x) * (bits.y ? f.y : 1.f - f.y) * (bits.z ? f.z : 1.f - f.z);
+  }
+  bool keep[8];
+  keep_side(corners, keep);
+  // A wall through the cell: the light's side alone, without the tent (the
+  // centre node may stand on either side).
+  Cell own_side = cell;
+  bool split = false;
+  for (int corner = 0; corner < 8; ++corner)
+    if (corners.present[corner] && !keep[corner]) {
+      own_side.corner[corner] = kNoNode;
+      split = true;
+    }
+  if (split) return corner_weights(own_side, f, slots, weights);
   int used = corner_weights(cell, f, slots, weights);
   if (cell.centre == kNoNode) return used;
   // blend = corners(p) + tent(p) · (centre − corners(centre)): exact at the

@@ -3,9 +3,11 @@
 // split into eight children where the trilinear blend of its corner nodes was
 // measured to be wrong. Corners are nodes (unit lights); cells store the
 // slots of their eight corners, so finding a light's blend is a descent.
+#include "hilight/light_cache_nodes.hpp"
 #include "hilight/math.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <vector>
 
@@ -38,10 +40,13 @@ struct CellTree {
   }
   /// The leaf holding `p` (clamped into the box) and p's place in it, in [0,1]³.
   const Cell& leaf(const Vec3& p, Vec3& fraction) const;
+  /// Marks the corners of a cell a light at the blended point takes (corners_on_light_side).
+  using KeepSide = std::function<void(const CellCorners& corners, bool keep[8])>;
   /// Weights of the nodes that blend to the bounce at `p`: trilinear over the
   /// leaf's usable corners (renormalized over them) plus the centre's tent;
-  /// returns how many were written (at most 9).
-  int blend(const Vec3& p, uint32_t slots[9], float weights[9]) const;
+  /// where `keep_side` drops corners beyond a wall, trilinear over the kept
+  /// corners only. Returns how many were written (at most 9).
+  int blend(const Vec3& p, uint32_t slots[9], float weights[9], const KeepSide& keep_side) const;
 
   void write(std::ostream& out) const;
   /// False when the stream does not hold a consistent tree over `nodes` nodes.

@@ -1,7 +1,9 @@
 // The `grid` light cache (paper §3.4): unit lights at the centres of a
 // regular grid of cells over the light space, the bounce of a light anywhere
 // the trilinear blend of its cell's eight nodes. Nodes inside solid objects
-// or on surfaces are left out of the blend (the others are renormalized).
+// or on surfaces, and nodes on the far side of a wall through the cell
+// (corners_on_light_side), are left out of the blend (the others are
+// renormalized).
 #include "hilight/error.hpp"
 #include "hilight/light_cache.hpp"
 #include "hilight/light_cache_nodes.hpp"
@@ -28,7 +30,7 @@ public:
   std::vector<uint32_t> slot;  ///< node -> index into responses, UINT32_MAX where no light can stand
   NodeResponses responses;
 
-  std::unique_ptr<LightCacheView> view(const Scene& scene, const SampleSet& samples) const override;
+  std::unique_ptr<LightCacheView> view(const RayScene& rays, const SampleSet& samples) const override;
   size_t node_count() const override { return responses.count(); }
 
   void write(std::ostream& out) const override {
@@ -65,8 +67,8 @@ public:
 
 class GridView final : public LightCacheView {
 public:
-  GridView(const GridCache& cache, const Scene& scene, const SampleSet& samples)
-      : m_cache(cache), m_table(cache.responses, scene, samples) {}
+  GridView(const GridCache& cache, const RayScene& rays, const SampleSet& samples)
+      : m_cache(cache), m_rays(rays), m_table(cache.responses, rays.scene(), samples) {}
 
   void add_indirect(const Vec3& position, Rgb* out) const override {
     const GridCache& c = m_cache;
@@ -78,32 +80,41 @@ public:
       base[k] = std::min(int(std::floor(clamped)), std::max(0, c.dims[k] - 2));
       f[k] = c.dims[k] > 1 ? clamped - float(base[k]) : 0.f;
     }
-    uint32_t slots[8];
-    float weights[8];
-    int used = 0;
-    float total = 0.f;
+    CellCorners corners;
+    uint32_t corner_slot[8]{};
     for (int corner = 0; corner < 8; ++corner) {
       const glm::ivec3 q = base + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
       if (q.x >= c.dims.x || q.y >= c.dims.y || q.z >= c.dims.z) continue;
-      const uint32_t s = c.slot[size_t(q.x) + size_t(c.dims.x) * (size_t(q.y) + size_t(c.dims.y) * size_t(q.z))];
-      const float w = (corner & 1 ? f.x : 1.f - f.x) * (corner & 2 ? f.y : 1.f - f.y) * (corner & 4 ? f.z : 1.f - f.z);
-      if (s == UINT32_MAX || w <= 0.f) continue;
-      slots[used] = s;
-      weights[used++] = w;
-      total += w;
+      corner_slot[corner] = c.slot[size_t(q.x) + size_t(c.dims.x) * (size_t(q.y) + size_t(c.dims.y) * size_t(q.z))];
+      corners.present[corner] = corner_slot[corner] != UINT32_MAX;
+      corners.position[corner] = c.origin + Vec3(q) * c.spacing;
+      corners.weight[corner] = (corner & 1 ? f.x : 1.f - f.x) * (corner & 2 ? f.y : 1.f - f.y) * (corner & 4 ? f.z : 1.f - f.z);
     }
-    if (used == 0 || total <= 0.f) return;  // surrounded by solid: no cached bounce
-    for (int k = 0; k < used; ++k) weights[k] /= total;
-    m_table.add_blend(slots, weights, used, out);
+    bool keep[8];
+    corners_on_light_side(m_rays, position, corners, keep);
+    uint32_t slots[8];
+    float weights[8];
+    int kept = 0;
+    float total = 0.f;
+    for (int corner = 0; corner < 8; ++corner)
+      if (keep[corner] && corners.weight[corner] > 0.f) {
+        slots[kept] = corner_slot[corner];
+        weights[kept] = corners.weight[corner];
+        total += weights[kept++];
+      }
+    if (kept == 0 || total <= 0.f) return;  // surrounded by solid: no cached bounce
+    for (int k = 0; k < kept; ++k) weights[k] /= total;
+    m_table.add_blend(slots, weights, kept, out);
   }
 
 private:
   const GridCache& m_cache;
+  const RayScene& m_rays;
   NodeSampleTable m_table;
 };
 
-std::unique_ptr<LightCacheView> GridCache::view(const Scene& scene, const SampleSet& samples) const {
-  return std::make_unique<GridView>(*this, scene, samples);
+std::unique_ptr<LightCacheView> GridCache::view(const RayScene& rays, const SampleSet& samples) const {
+  return std::make_unique<GridView>(*this, rays, samples);
 }
 
 class GridBuilder final : public LightCacheBuilder {

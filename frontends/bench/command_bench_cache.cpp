@@ -105,7 +105,7 @@ void bench_scene(const BenchScene& s, const std::vector<std::string>& caches, si
     const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const auto file = dir / (s.name + "-" + plugin + ".bin");
     save_light_cache(file, 1, *cache);
-    const auto view = cache->view(scene, samples);
+    const auto view = cache->view(rays, samples);
     std::vector<double> errors[2];
     std::vector<Rgb> cached(m);
     for (int set = 0; set < 2; ++set)

@@ -32,13 +32,18 @@ class LightCacheView {
 public:
   virtual ~LightCacheView() = default;
   /// Adds the cached bounce of a unit light at `position` to out[0..samples).
+  /// Only nodes on the light's side of a wall through its cell are blended
+  /// (corners_on_light_side): a node behind a wall keeps the other room's
+  /// bounce, not this one's.
   virtual void add_indirect(const Vec3& position, Rgb* out) const = 0;
 };
 
 class LightCache {
 public:
   virtual ~LightCache() = default;
-  virtual std::unique_ptr<LightCacheView> view(const Scene& scene, const SampleSet& samples) const = 0;
+  /// The view over `samples` of the scene `rays` holds (its rays decide
+  /// which nodes a light sees).
+  virtual std::unique_ptr<LightCacheView> view(const RayScene& rays, const SampleSet& samples) const = 0;
   /// Unit lights whose bounce it keeps (its build cost in renderer batches' lights).
   virtual size_t node_count() const = 0;
   /// Its contents; the framework adds the file header and checksum (light_cache_file.hpp).

@@ -87,4 +87,24 @@ private:
 /// LightSpace::free_at, the one test of free space.
 bool node_is_free(const RayScene& rays, const Vec3& position, float clearance);
 
+/// Whether nothing stands on the segment between `a` and `b`.
+bool node_seen(const RayScene& rays, const Vec3& a, const Vec3& b);
+
+/// One cell's eight corner nodes (corner bit 0: +x, 1: +y, 2: +z), as a
+/// cache blends them for a light inside the cell.
+struct CellCorners {
+  Vec3 position[8];
+  float weight[8]{};      ///< trilinear weight at the light
+  bool present[8]{};      ///< false: no node there (solid, surface)
+};
+
+/// Which corners' bounce a light at `light` takes. A wall through the cell
+/// splits its corners into sides: corners joined by any unblocked segment
+/// are one side. A node on a side the light does not see keeps the next
+/// room's bounce, so the light takes only the sides it sees. Sides, not
+/// single nodes: a table between the light and one node of its own room
+/// does not drop that node, so the blend stays continuous as the light
+/// moves within a room. Where the light sees no side, all are kept.
+void corners_on_light_side(const RayScene& rays, const Vec3& light, const CellCorners& corners, bool keep[8]);
+
 } // namespace hilight

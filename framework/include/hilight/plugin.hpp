@@ -4,7 +4,7 @@
 /// build_key *before* any C++ type crosses the module boundary.
 #include <cstdint>
 
-#define HILIGHT_ABI_VERSION 7u  // 3: light cache plugins; 4: ModuleRecord::origin and shadowed_by, PluginDir; 5: Scene::size, RayScene::shading_step/shared/own_frame, NodeResponses in blocks of halves, Renderer::release_scratch; 6: RendererTraits::cheap_direct; 7: RendererTraits::max_bounces
+#define HILIGHT_ABI_VERSION 8u  // 3: light cache plugins; 4: ModuleRecord::origin and shadowed_by, PluginDir; 5: Scene::size, RayScene::shading_step/shared/own_frame, NodeResponses in blocks of halves, Renderer::release_scratch; 6: RendererTraits::cheap_direct; 7: RendererTraits::max_bounces; 8: LightCache::view over the RayScene
 
 #define HILIGHT_STRINGIFY2(x) #x
 #define HILIGHT_STRINGIFY(x) HILIGHT_STRINGIFY2(x)

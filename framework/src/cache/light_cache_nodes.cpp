@@ -230,4 +230,37 @@ void NodeSampleTable::add_blend(const uint32_t* slots, const float* weights, int
 
 bool node_is_free(const RayScene& rays, const Vec3& position, float clearance) { return LightSpace::free_at(rays, position, clearance); }
 
+bool node_seen(const RayScene& rays, const Vec3& a, const Vec3& b) {
+  const Vec3 d = b - a;
+  const float distance = glm::length(d);
+  return distance <= 0.f || !rays.occluded(a, d / distance, distance);
+}
+
+void corners_on_light_side(const RayScene& rays, const Vec3& light, const CellCorners& c, bool keep[8]) {
+  // Sides: corners joined by any unblocked segment between them.
+  int side[8];
+  for (int k = 0; k < 8; ++k) side[k] = k;
+  const auto root = [&](int k) {
+    while (side[k] != k) k = side[k];
+    return k;
+  };
+  int sides = 0;
+  for (int k = 0; k < 8; ++k) sides += c.present[k];
+  for (int k = 0; k < 8 && sides > 1; ++k)
+    for (int other = k + 1; other < 8 && sides > 1; ++other)
+      if (c.present[k] && c.present[other] && root(k) != root(other) && node_seen(rays, c.position[k], c.position[other])) {
+        side[root(other)] = root(k);
+        --sides;
+      }
+  for (int k = 0; k < 8; ++k) keep[k] = c.present[k];
+  if (sides <= 1) return;
+  // Every side the light sees (two seen sides meet through the light's own
+  // free space); none seen: every corner.
+  bool seen[8]{}, any = false;
+  for (int k = 0; k < 8; ++k)
+    if (c.present[k] && !seen[root(k)] && node_seen(rays, light, c.position[k])) seen[root(k)] = any = true;
+  if (!any) return;
+  for (int k = 0; k < 8; ++k) keep[k] = c.present[k] && seen[root(k)];
+}
+
 } // namespace hilight

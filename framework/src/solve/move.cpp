@@ -14,7 +14,7 @@ using solver_detail::Stopwatch;
 void SolveContext::stage(const std::string& name) const { solver_detail::announce_stage(stop, progress, name); }
 
 std::unique_ptr<LightCacheView> SolveContext::cache_view(const SampleSet& on) const {
-  return cache ? cache->view(scene, on) : nullptr;
+  return cache ? cache->view(space.rays(), on) : nullptr;
 }
 
 float SolveContext::seeding_cell() const {
