@@ -197,8 +197,15 @@ TrialScene home_trials(float spot_share) {
 
 // Issue 33: a furnished flat of five rooms joined by doorways (the IFC
 // house's ground floor, real models on its tables), 2–6 lamps hanging under
-// its ceilings. 20 seeded layouts; the count is right in at least 19.
+// its ceilings. 10 seeded layouts in CI (the suite's minutes), the count
+// right in at least 9; the 20-layout sweep is the hidden [home-sweep] below.
 TEST_CASE("recovery: 2 to 6 ceiling lamps in the rooms of a furnished five-room home", "[solve][built][recovery][home]") {
+  const auto [first, count] = trial_range(900, 10);
+  const Outcome o = recovery_trials(builders::furnished_home, first, count, 6, builders::RandomLightRules{}.min_apart, home_trials(0.f));
+  CHECK(o.right + 1 >= o.trials);
+}
+
+TEST_CASE("recovery sweep: 20 ceiling-lamp layouts in the furnished home (bench)", "[.][home-sweep]") {
   const auto [first, count] = trial_range(900, 20);
   const Outcome o = recovery_trials(builders::furnished_home, first, count, 6, builders::RandomLightRules{}.min_apart, home_trials(0.f));
   CHECK(o.right + 1 >= o.trials);

@@ -164,6 +164,22 @@ TEST_CASE("a damaged or truncated light cache file is detected and never read", 
   }
 }
 
+TEST_CASE("a solve with direct light only builds no light cache: there is no bounce to keep", "[cache][solver]") {
+  const CacheRig rig;
+  const Lighting truth = {Light::point({2.2f, 2.2f, 2.4f}, Rgb(1.5f))};
+  const Target target = bind_target("truth", rig.scene->positions, rig.renderer->illuminate(SurfacePoints::from_vertices(*rig.scene), truth),
+                                    std::vector<float>(rig.scene->positions.size(), 1.f), *rig.scene, *rig.rays, rig.scene->normals);
+  for (const std::string bounces : {"0", "1"}) {
+    SolveSpec spec;
+    spec.renderer_settings = {"bounces=" + bounces};
+    spec.cache_settings = {"cells=4"};
+    spec.settings.evaluation_points = 2000;
+    SolveReport report;
+    SolveSession(test::registry(), spec, rig.scene, rig.rays).make_solver()->fine_tune(target, truth, report);
+    CHECK(report.cache_state == (bounces == "0" ? "off" : "built"));
+  }
+}
+
 TEST_CASE("a solve whose cache file is damaged builds it again", "[cache][solver]") {
   const CacheRig rig;
   const Lighting truth = {Light::point({2.2f, 2.2f, 2.4f}, Rgb(1.5f))};

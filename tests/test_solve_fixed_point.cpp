@@ -107,8 +107,9 @@ void check_fixed_point(const RealCase& c, const std::string& renderer, int bounc
 
 void check_fixed_points(const RealCase& c, const std::string& renderer, std::initializer_list<bool> caches = {false, true},
                         double bounce_bound = 0.001) {
-  for (int bounces : {0, 1})
-    for (bool cache : caches) check_fixed_point(c, renderer, bounces, cache, bounces ? bounce_bound : 0.001);
+  // Direct light only has no bounce for a cache to keep (a solve takes none: SolveSession).
+  check_fixed_point(c, renderer, 0, false, 0.001);
+  for (bool cache : caches) check_fixed_point(c, renderer, 1, cache, bounce_bound);
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 
 #include "hilight/solve/solve_renderers.hpp"
 
+#include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
 
 #include <algorithm>
@@ -23,13 +24,15 @@ SolveSession::SolveSession(const Registry& registry, SolveSpec spec, std::shared
   m_optimizer = registry.create_optimizer(m_spec.optimizer, Properties::from_assignments(m_spec.optimizer_settings));
   m_sampler = registry.create_sampler(m_spec.sampler, Properties::from_assignments(m_spec.sampler_settings));
   check_names(registry, m_spec);
-  if (m_spec.cache != PluginDefaults::no_cache)
-    m_cache = registry.create_cache(m_spec.cache, Properties::from_assignments(m_spec.cache_settings));
   // D̄ is measured with the renderer as the user set it up (as `hilight
   // render` uses it); thousands of light positions are evaluated with its
   // fast twin, whose cheaper settings the plugin declares.
   m_reference_settings = reference_renderer_settings(m_spec.renderer_settings, m_spec.settings.seed);
   m_fast_settings = fast_renderer_settings(registry.renderer_traits(m_spec.renderer), m_reference_settings);
+  // Direct light only: there is no bounce for a light cache to keep.
+  const bool bounced = bounces_property(Properties::from_assignments(m_reference_settings), 1, "renderer " + m_spec.renderer) != 0;
+  if (m_spec.cache != PluginDefaults::no_cache && bounced)
+    m_cache = registry.create_cache(m_spec.cache, Properties::from_assignments(m_spec.cache_settings));
   m_reference = make_renderer(m_reference_settings);
   m_fast = make_renderer(m_fast_settings);
   if (!m_rays) m_rays = RayScene::shared(m_scene);
