@@ -187,7 +187,7 @@ TEST_CASE("rooms: in the FZK house a solve with region:Wohnen hangs its light fr
 }
 #endif
 
-TEST_CASE("rooms: a closed interior hangs lights from the ceiling by default; --place anywhere and open scenes keep free placement",
+TEST_CASE("rooms: a closed interior hangs lights from the ceiling by default, and with --place anywhere and in open scenes they keep free placement",
           "[rooms][placement][solve]") {
   test::CliOwnPlacement own;  // the building default under test
   const fs::path dir = test::output_dir("rooms_interior_default");
@@ -246,7 +246,7 @@ Scene two_rooms(bool door) {
 
 } // namespace
 
-TEST_CASE("rooms: free space splits at doors into rooms numbered by place; an open scene has none", "[rooms][regions]") {
+TEST_CASE("rooms: free space splits at doors into rooms numbered by place, and an open scene has none", "[rooms][regions]") {
   for (bool door : {true, false}) {
     INFO((door ? "a door" : "a closed wall"));
     const Scene scene = two_rooms(door);
