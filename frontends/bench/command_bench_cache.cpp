@@ -141,7 +141,7 @@ int run_bench_cache(const std::vector<std::string>& args, Registry& registry) {
   int threads = 0;
   std::string dir = (std::filesystem::temp_directory_path() / "hilight-bench-cache-files").string();
   app.add_option("--caches", caches, "cache plugins to compare, each NAME or NAME:key=value,...")->capture_default_str();
-  app.add_option("--scenes", scenes, "room (furnished, built), building (two storeys, built), real-room (assimp-testmodels furniture)")
+  app.add_option("--scenes", scenes, "room (furnished, built), building (two storeys, built), real-room (assimp-testmodels furniture), home (five rooms, the tests' tessellation)")
       ->capture_default_str();
   app.add_option("--probes", probes, "random light positions the bounce is compared at")->check(CLI::Range(1, 4096))->capture_default_str();
   app.add_option("--dir", dir, "scratch folder for the cache files")->capture_default_str();
@@ -158,7 +158,8 @@ int run_bench_cache(const std::vector<std::string>& args, Registry& registry) {
     if (name == "room") s.scene = std::make_shared<const Scene>(finish_scene(builders::furnished_room(), {0.15f}));
     else if (name == "building") s.scene = std::make_shared<const Scene>(finish_scene(builders::two_storey_building().scene, {0.22f}));
     else if (name == "real-room") s.scene = std::make_shared<const Scene>(finish_scene(builders::real_furnished_room(), {}));
-    else throw InputError("bench cache: unknown scene '" + name + "' (room, building, real-room)");
+    else if (name == "home") s.scene = std::make_shared<const Scene>(finish_scene(builders::furnished_home().scene, {builders::kHomeTestEdge}));
+    else throw InputError("bench cache: unknown scene '" + name + "' (room, building, real-room, home)");
     bench_scene(s, caches, probes, dir, registry);
   }
   return 0;
