@@ -14,7 +14,7 @@
 #include "support.hpp"
 
 #ifdef HILIGHT_HAVE_IFCPP
-#include "../frontends/cli/ifc_spaces.hpp"
+#include "../frontends/common/ifc_spaces.hpp"
 #endif
 
 #include <catch2/catch.hpp>

@@ -1,10 +1,13 @@
 #pragma once
 /// What `hilight paint` was asked to do (parsed by paint_command.cpp).
 #include "core/solve_job.hpp"
+#include "hilight/named_room.hpp"
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace hilight::painter {
 
@@ -25,6 +28,12 @@ struct PaintOptions {
   std::string view = "result";       ///< the view to start in: result, target, difference
   bool auto_fine_tune = true;        ///< fine-tune after each stroke when there are lights
   SolveJobOptions job;               ///< renderer, optimizer, sampler and solve settings
+  /// The building default's note ("lights on the ceiling (an IFC building
+  /// with storeys; --place anywhere lifts it)", solve_options.hpp); "" when
+  /// it did not apply. The Placement panel says it while the rules are these.
+  std::string building_note;
+  /// The scene's named rooms, when the command line's rules named one (read once).
+  std::optional<std::vector<NamedRoom>> named_rooms;
   /// When `hilight paint` began loading (--timings: open_to_first_frame).
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };

@@ -226,7 +226,8 @@ void PainterApp::panel_placement() {
   ImGui::SetNextItemWidth(300);
   ImGui::InputTextWithHint("##place", "ceiling:0.2 height:1:2.5 count:1:4", m_solve_panel.place_text, sizeof(m_solve_panel.place_text));
   tip("Where the next solves may put lights, as hilight solve --place: ceiling[:OFFSET], height:MIN:MAX, "
-      "box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX (space-separated; empty: anywhere free)");
+      "box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX, region:K or region:NAME (a room's or storey's name, "
+      "as hilight info lists them) (space-separated; empty: anywhere free)");
   ImGui::BeginDisabled(m_job->busy());
   ImGui::SameLine();
   if (ImGui::Button("Apply")) perform(PlaceAction{std::string(m_solve_panel.place_text)});
@@ -243,6 +244,9 @@ void PainterApp::panel_placement() {
   }
   ImGui::EndDisabled();
   ImGui::TextDisabled("lights may stand: %s", now.empty() ? "anywhere free" : now.c_str());
+  // Why they hang from the ceiling when nobody said so (issue 34 §7), while the rules are still the default's.
+  if (!m_options.building_note.empty() && now == m_options.job.settings.placement.describe())
+    ImGui::TextWrapped("A building: %s. The Anywhere button lifts it too.", m_options.building_note.c_str());
 }
 
 void PainterApp::panel_lights() {

@@ -1,6 +1,7 @@
 // The window's side of session actions: camera moves, screen picking and
 // screenshots for the core's SessionPlayer; applying and recording actions.
 #include "hilight/error.hpp"
+#include "ifc_spaces.hpp"
 #include "painter_app.hpp"
 #include "ui/screen_pick.hpp"
 #include "ui/screenshot.hpp"
@@ -33,6 +34,11 @@ PlayerHooks PainterApp::make_hooks() {
     m_display.colours_dirty = true;
   };
   hooks.log = [this](const std::string& line) { status(line); };
+  hooks.named_rooms = [this] {
+    // Read once, as hilight solve reads them (ifc_spaces.hpp); the command line's rules may have already.
+    if (!m_solve_panel.named_rooms) m_solve_panel.named_rooms = cli::scene_rooms(m_options.scene, *m_rays);
+    return *m_solve_panel.named_rooms;
+  };
   return hooks;
 }
 

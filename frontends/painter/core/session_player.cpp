@@ -36,6 +36,17 @@ SessionPlayer::SessionPlayer(Document& document, SolveJob& job, PlayerHooks hook
   m_brush.radius = 0.03f * document.scene().diagonal();
 }
 
+std::vector<std::string> split_place_rules(const std::string& text) {
+  std::vector<std::string> rules;
+  std::istringstream words(text);
+  for (std::string word; words >> word;) {
+    const bool named_region = !rules.empty() && (rules.back().starts_with("region:") || rules.back().starts_with("not-region:"));
+    if (named_region && word.find(':') == std::string::npos && word != "anywhere") rules.back() += ' ' + word;
+    else rules.push_back(word);
+  }
+  return rules;
+}
+
 void SessionPlayer::log(const std::string& line) const {
   if (m_hooks.log) m_hooks.log(line);
 }
@@ -390,10 +401,11 @@ void SessionPlayer::run(const PlaceAction& a, const Action&, const std::string& 
   // error naming the action, and the rules stay as they were.
   if (m_job.busy()) finish_solve(where);
   PlacementRules rules;
-  std::istringstream words(a.rules);
-  std::string rule;
   try {
-    while (words >> rule) rules.add(rule);
+    for (const auto& rule : split_place_rules(a.rules)) rules.add(rule);
+    // Rooms and storeys by name, as hilight solve resolves them.
+    if (!rules.region_names.empty() || !rules.not_region_names.empty())
+      rules.resolve_room_names(m_hooks.named_rooms ? m_hooks.named_rooms() : std::vector<NamedRoom>{});
   } catch (const InputError& e) {
     throw InputError(where + ": " + e.what());
   }

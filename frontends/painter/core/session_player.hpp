@@ -70,7 +70,16 @@ struct PlayerHooks {
   std::function<void(const Bounds&)> frame;
   /// One line per finished action or solve result, for a log panel / stderr.
   std::function<void(const std::string&)> log;
+  /// The rooms a `place` action's region:NAME picks from, as `hilight solve`
+  /// reads them (an IFC's IfcSpaces and storeys, else free space split at
+  /// doors: frontends/common/ifc_spaces.hpp); unset: the scene names none.
+  std::function<std::vector<NamedRoom>()> named_rooms;
 };
+
+/// A `place` action's text as --place rules: split at spaces, except that a
+/// word without ':' (not `anywhere`) continues the region:/not-region: name
+/// before it, so a storey's name ('region:0. Erdgeschoss') stays whole.
+std::vector<std::string> split_place_rules(const std::string& text);
 
 struct PlayerOptions {
   /// Replays wait for each solve (true); the interactive UI starts them and

@@ -1,5 +1,5 @@
 #pragma once
-/// What the CLI's IFC code shares (ifc_luminaires.cpp, ifc_spaces.cpp):
+/// What the frontends' IFC code shares (the CLI's ifc_luminaires.cpp, ifc_spaces.cpp):
 /// reading a file with IfcPlusPlus, placements as matrices, an IfcSpace's
 /// extruded footprint, and IFC's axes against hilight's. Only with
 /// IfcPlusPlus (HILIGHT_HAVE_IFCPP).

@@ -1,4 +1,4 @@
-// What the CLI's IFC code shares (ifc_model.hpp).
+// What the frontends' IFC code shares (ifc_model.hpp).
 #include "ifc_model.hpp"
 
 #ifdef HILIGHT_HAVE_IFCPP

@@ -35,6 +35,10 @@ bool has_ifc_extension(const std::filesystem::path& file) {
 
 std::vector<NamedRoom> scene_rooms(const std::filesystem::path& file, const PlacementRules& rules, const RayScene& rays) {
   if (rules.region_names.empty() && rules.not_region_names.empty()) return {};
+  return scene_rooms(file, rays);
+}
+
+std::vector<NamedRoom> scene_rooms(const std::filesystem::path& file, const RayScene& rays) {
   if (auto ifc = read_ifc_rooms(file, rays.scene()); !ifc.rooms.empty()) return std::move(ifc.rooms);
   return named_rooms(std::make_shared<const RoomSplit>(rays));
 }
