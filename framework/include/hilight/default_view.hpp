@@ -4,6 +4,10 @@
 /// painter's opening view. A building or a closed box is seen from inside
 /// its largest lit room, at eye height, across the room; a scene with no
 /// enclosed room (a product, a landscape) from outside (Camera::framing).
+/// The room: in the largest enclosed region holding a light (else the
+/// largest enclosed one), the largest room of the split at doors
+/// (room_split.hpp), cut at the storeys' floors (plan_sections), that holds
+/// a light, else the largest; the whole region where the split finds none.
 #include "hilight/camera.hpp"
 #include "hilight/lighting.hpp"
 #include "hilight/ray_scene.hpp"
@@ -12,7 +16,7 @@
 
 namespace hilight {
 
-/// Up to `count` views (at least one), best first. Inside a room: the eyes
+/// Up to `count` views (at least one), best first. Inside the room: the eyes
 /// and directions that see the most lit surface the farthest, each later one
 /// from elsewhere in the room or looking another way. Outside: the framing
 /// view turned about the vertical by 360°/count each. With no lights every
@@ -22,9 +26,10 @@ std::vector<Camera> default_views(const RayScene& rays, const Lighting& lights, 
 /// The first of default_views.
 Camera default_view(const RayScene& rays, const Lighting& lights, float aspect);
 
-/// The room default_views looks into: the index in Regions(rays).list() of
-/// the largest enclosed region holding a light (with no lit one, the largest
-/// enclosed one); -1 when no region is enclosed (the view is from outside).
+/// The region default_views looks into: the index in Regions(rays).list()
+/// of the largest enclosed region holding a light (with no lit one, the
+/// largest enclosed one); -1 when no region is enclosed (the view is from
+/// outside). Its eyes stand in one room of it (see above).
 int default_view_room(const RayScene& rays, const Lighting& lights);
 
 } // namespace hilight

@@ -1,15 +1,25 @@
-// The views pictures take when none is given (default_view.hpp). Rooms are
-// the scene's regions (regions.hpp); one is enclosed when rays from points in
-// it almost never leave the scene. Inside it, eyes stand at eye height over
-// its floors, and each looks where a fan of rays meets the most lit surface
-// the farthest away: across the room, toward its lights' pools, not into a
-// wall or out of a window.
+// The views pictures take when none is given (default_view.hpp). The
+// enclosed part of free space to look into is one of the scene's regions
+// (regions.hpp): one is enclosed when rays from points in it almost never
+// leave the scene. A region joins everything a door or a stair opens into (a
+// house's whole interior, attic included), so the eyes stand in one room of
+// it: the room split at doors (room_split.hpp) cut at the storeys' floors
+// (plan_sections), the largest such room holding a light, else the largest.
+// Inside it, eyes stand at eye height over its floors, and each looks where a
+// fan of rays meets the most lit surface the farthest away: across the room,
+// toward its lights' pools, not into a wall or out of a window.
 #include "hilight/default_view.hpp"
 
+#include "hilight/plan_view.hpp"
 #include "hilight/regions.hpp"
+#include "hilight/room_split.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
 #include <tbb/parallel_for.h>
 
 namespace hilight {
@@ -22,6 +32,8 @@ constexpr float kPitchDeg = -10.f;      ///< a little down: more floor and furni
 constexpr float kMostEscaping = 0.15f;  ///< an enclosed region lets out at most this fraction of rays
 constexpr size_t kMostLights = 32;      ///< lights tried for whether a surface is lit
 constexpr int kAzimuths = 16;
+constexpr float kRoomSample = 0.2f;     ///< metres between the points that measure a region's rooms
+constexpr double kLeastRoom = 1.0;      ///< m³: less is a nook (under a stair), no room to stand in
 
 /// `n` directions spread evenly over the sphere (a Fibonacci lattice).
 std::vector<Vec3> sphere_directions(int n) {
@@ -34,23 +46,33 @@ std::vector<Vec3> sphere_directions(int n) {
   return out;
 }
 
-/// Points on an even grid over the region's box that lie in the region.
-std::vector<Vec3> region_points(const Regions& regions, const Region& region, glm::ivec3 cells) {
+/// Where eyes may stand: a box and which of its points belong.
+struct Space {
+  Bounds box;
+  std::function<bool(const Vec3&)> holds;
+};
+
+Space region_space(const Regions& regions, const Region& region) {
+  return {region.box, [&regions, id = region.id](const Vec3& p) { return regions.at(p) == id; }};
+}
+
+/// Points on an even grid over the space's box that lie in the space.
+std::vector<Vec3> points_in(const Space& space, glm::ivec3 cells) {
   std::vector<Vec3> out;
-  const Vec3 lo = region.box.lo, extent = region.box.extent();
+  const Vec3 lo = space.box.lo, extent = space.box.extent();
   for (int z = 0; z < cells.z; ++z)
     for (int y = 0; y < cells.y; ++y)
       for (int x = 0; x < cells.x; ++x) {
         const Vec3 p = lo + (Vec3(float(x), float(y), float(z)) + 0.5f) / Vec3(cells) * extent;
-        if (regions.at(p) == region.id) out.push_back(p);
+        if (space.holds(p)) out.push_back(p);
       }
   return out;
 }
 
-/// The fraction of rays from the region's points that meet nothing.
-float escaping(const RayScene& rays, const Regions& regions, const Region& region) {
-  std::vector<Vec3> points = region_points(regions, region, {6, 4, 6});
-  if (points.size() < 8) points = region_points(regions, region, {16, 8, 16});
+/// The fraction of rays from the space's points that meet nothing.
+float escaping(const RayScene& rays, const Space& space) {
+  std::vector<Vec3> points = points_in(space, {6, 4, 6});
+  if (points.size() < 8) points = points_in(space, {16, 8, 16});
   if (points.empty()) return 1.f;
   static const std::vector<Vec3> directions = sphere_directions(32);
   const size_t step = std::max<size_t>(1, points.size() / 24);
@@ -63,8 +85,8 @@ float escaping(const RayScene& rays, const Regions& regions, const Region& regio
   return float(lost) / float(sent);
 }
 
-/// The room to look into, or nullptr (see default_view_room).
-const Region* choose_room(const RayScene& rays, const Regions& regions, const Lighting& lights) {
+/// The region to look into, or nullptr (see default_view_room).
+const Region* choose_region(const RayScene& rays, const Regions& regions, const Lighting& lights) {
   const double scene_volume = [&] {
     const Vec3 e = rays.scene().light_bounds().extent();
     return double(e.x) * e.y * e.z;
@@ -72,7 +94,7 @@ const Region* choose_room(const RayScene& rays, const Regions& regions, const Li
   const Region* lit = nullptr;
   const Region* any = nullptr;
   for (const Region& r : regions.list()) {  // largest first
-    if (r.volume < 0.01 * scene_volume || escaping(rays, regions, r) > kMostEscaping) continue;
+    if (r.volume < 0.01 * scene_volume || escaping(rays, region_space(regions, r)) > kMostEscaping) continue;
     if (!any) any = &r;
     const bool holds_light = std::any_of(lights.begin(), lights.end(), [&](const Light& l) { return regions.at(l.position) == r.id; });
     if (holds_light) {
@@ -81,6 +103,60 @@ const Region* choose_room(const RayScene& rays, const Regions& regions, const Li
     }
   }
   return lit ? lit : any;
+}
+
+/// A room of the region: a room of the split at doors on one storey (its floor's height).
+using RoomKey = std::pair<int, float>;
+
+/// The room of `region` to look into: the largest room of the split (cut at
+/// the storeys' floors) holding a light, else the largest; nullopt when the
+/// split finds no room in the region (the region is the room then).
+std::optional<Space> choose_room_in(const RayScene& rays, const Regions& regions, const Region& region, const Lighting& lights) {
+  const auto split = std::make_shared<const RoomSplit>(rays);
+  if (split->list().empty()) return std::nullopt;
+  const auto storeys = std::make_shared<const std::vector<PlanSection>>(plan_sections(rays.scene()));
+  // The room p stands in; room 0 outside the region or every room of the split.
+  const auto key_of = [split, storeys, &regions, id = region.id](const Vec3& p) {
+    if (regions.at(p) != id) return RoomKey{0, 0.f};
+    return RoomKey{split->at(p), storey_floor(*storeys, p)};
+  };
+  // Each room's volume and box, from points on a grid over the region.
+  struct Extent {
+    size_t points = 0;
+    Bounds box;
+    bool lit = false;
+  };
+  std::map<RoomKey, Extent> rooms;
+  const Vec3 extent = region.box.extent();
+  const float step = std::max(kRoomSample, std::max({extent.x, extent.y, extent.z}) / 80.f);
+  glm::ivec3 cells;
+  for (int k = 0; k < 3; ++k) cells[k] = std::max(1, int(std::ceil(extent[k] / step)));
+  const Vec3 cell = extent / Vec3(cells);
+  for (int z = 0; z < cells.z; ++z)
+    for (int y = 0; y < cells.y; ++y)
+      for (int x = 0; x < cells.x; ++x) {
+        const Vec3 p = region.box.lo + (Vec3(float(x), float(y), float(z)) + 0.5f) * cell;
+        const RoomKey key = key_of(p);
+        if (key.first == 0) continue;
+        Extent& room = rooms[key];
+        ++room.points;
+        room.box.extend(p - 0.5f * cell);
+        room.box.extend(p + 0.5f * cell);
+      }
+  // A light's room by the split alone: its finer grid places a lamp in a window's reveal, where the
+  // regions' coarser one may see the outside.
+  for (const Light& l : lights)
+    if (const auto it = rooms.find(RoomKey{split->at(l.position), storey_floor(*storeys, l.position)}); it != rooms.end())
+      it->second.lit = true;
+  // Largest lit first, then largest; ties by key (never by threads or addresses).
+  const double cell_volume = double(cell.x) * cell.y * cell.z;
+  const std::pair<const RoomKey, Extent>* best = nullptr;
+  for (const auto& entry : rooms) {
+    if (double(entry.second.points) * cell_volume < kLeastRoom) continue;
+    if (!best || std::pair(entry.second.lit, entry.second.points) > std::pair(best->second.lit, best->second.points)) best = &entry;
+  }
+  if (!best) return std::nullopt;
+  return Space{best->second.box, [key_of, key = best->first](const Vec3& p) { return key_of(p) == key; }};
 }
 
 /// Whether a light reaches the surface at `q` (normal `n`, turned toward the viewer).
@@ -138,15 +214,15 @@ Candidate score_view(const RayScene& rays, const Lighting& lights, const Vec3& e
 /// Eyes over the room's floors: each grid point of the room dropped to the
 /// floor below it and raised to eye height, kept if still in the room and
 /// clear of walls.
-std::vector<Vec3> eyes_in(const RayScene& rays, const Regions& regions, const Region& room) {
+std::vector<Vec3> eyes_in(const RayScene& rays, const Space& room, float voxel) {
   std::vector<Vec3> eyes;
-  const float clearance = std::max(2.f * regions.voxel_size(), 0.01f * room.box.diagonal());
-  for (const Vec3& p : region_points(regions, room, {14, 10, 14})) {
+  const float clearance = std::max(2.f * voxel, 0.01f * room.box.diagonal());
+  for (const Vec3& p : points_in(room, {14, 10, 14})) {
     const Hit down = rays.intersect(p, Vec3(0.f, -1.f, 0.f)), up = rays.intersect(p, Vec3(0.f, 1.f, 0.f));
     if (!down.valid() || std::abs(rays.face_normals()[down.triangle].y) < 0.7f) continue;  // not over a floor
     const float height = down.t + (up.valid() ? up.t : 1e30f);
     const Vec3 eye(p.x, p.y - down.t + std::min(kEyeHeight, 0.6f * height), p.z);
-    if (regions.at(eye) != room.id) continue;
+    if (!room.holds(eye)) continue;
     bool clear = true;
     for (int k = 0; k < 8 && clear; ++k) {
       const float a = float(k) * float(kPi) / 4.f;
@@ -159,9 +235,9 @@ std::vector<Vec3> eyes_in(const RayScene& rays, const Regions& regions, const Re
   return eyes;
 }
 
-std::vector<Camera> inside_views(const RayScene& rays, const Regions& regions, const Region& room, const Lighting& lights,
-                                 float aspect, size_t count) {
-  const std::vector<Vec3> eyes = eyes_in(rays, regions, room);
+std::vector<Camera> inside_views(const RayScene& rays, const Space& room, float voxel, const Lighting& lights, float aspect,
+                                 size_t count) {
+  const std::vector<Vec3> eyes = eyes_in(rays, room, voxel);
   if (eyes.empty()) return {};
   const float far = room.box.diagonal();
   std::vector<Candidate> candidates(eyes.size() * kAzimuths);
@@ -209,8 +285,12 @@ std::vector<Camera> outside_views(const Scene& scene, float aspect, size_t count
 std::vector<Camera> default_views(const RayScene& rays, const Lighting& lights, float aspect, size_t count) {
   count = std::max<size_t>(count, 1);
   const Regions regions(rays);
-  if (const Region* room = choose_room(rays, regions, lights)) {
-    std::vector<Camera> inside = inside_views(rays, regions, *room, lights, aspect, count);
+  if (const Region* region = choose_region(rays, regions, lights)) {
+    if (const std::optional<Space> room = choose_room_in(rays, regions, *region, lights)) {
+      std::vector<Camera> inside = inside_views(rays, *room, regions.voxel_size(), lights, aspect, count);
+      if (!inside.empty()) return inside;
+    }
+    std::vector<Camera> inside = inside_views(rays, region_space(regions, *region), regions.voxel_size(), lights, aspect, count);
     if (!inside.empty()) return inside;
   }
   return outside_views(rays.scene(), aspect, count);
@@ -222,8 +302,8 @@ Camera default_view(const RayScene& rays, const Lighting& lights, float aspect) 
 
 int default_view_room(const RayScene& rays, const Lighting& lights) {
   const Regions regions(rays);
-  const Region* room = choose_room(rays, regions, lights);
-  return room ? room->id : -1;
+  const Region* region = choose_region(rays, regions, lights);
+  return region ? region->id : -1;
 }
 
 } // namespace hilight
