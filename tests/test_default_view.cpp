@@ -16,6 +16,10 @@
 #include "random_lights.hpp"
 #include "support.hpp"
 
+#ifdef HILIGHT_HAVE_IFCPP
+#include "../frontends/common/ifc_spaces.hpp"
+#endif
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -164,6 +168,7 @@ TEST_CASE("default view: in the FZK house lamps in a ground-floor room put the e
   const auto rays = RayScene::shared(scene);
   const RoomSplit split(*rays);
   const std::vector<PlanSection> storeys = plan_sections(*scene);
+  std::vector<Vec3> eyes;
   // Seed 31's one lamp hangs in a window's reveal: the regions' coarse grid puts it outside, the split in the room.
   for (const uint64_t seed : {29, 30, 31, 32})
     for (const size_t count : {1, 3}) {
@@ -181,8 +186,22 @@ TEST_CASE("default view: in the FZK house lamps in a ground-floor room put the e
         REQUIRE(floor.valid());
         CHECK(floor.t > 1.f);
         CHECK(floor.t < 2.f);
+        eyes.push_back(v.eye);
       }
     }
+#ifdef HILIGHT_HAVE_IFCPP
+  // As the IFC names its rooms: each eye in one of the ground floor's IfcSpaces (the hall, living room and
+  // kitchen are that room of the split), none in the Galerie upstairs.
+  const cli::IfcRooms ifc = cli::read_ifc_rooms(kHouse, *scene);
+  REQUIRE_FALSE(ifc.rooms.empty());
+  for (const Vec3& eye : eyes) {
+    const auto holding = std::find_if(ifc.rooms.begin(), ifc.rooms.end(), [&](const NamedRoom& room) { return room.contains(eye); });
+    INFO("eye " << eye.x << ", " << eye.y << ", " << eye.z);
+    REQUIRE(holding != ifc.rooms.end());
+    INFO("in " << holding->name);
+    CHECK(holding->storey == ifc.storeys.front());
+  }
+#endif
   // The CLI's render with no --camera looks from there, and the picture reads.
   const fs::path dir = test::output_dir("default_view_ground_floor");
   write_lights_file(dir / "lights.json", ground_floor_lamps(*rays, split, 3602, 3).lamps);

@@ -50,10 +50,12 @@ std::vector<Vec3> sphere_directions(int n) {
 struct Space {
   Bounds box;
   std::function<bool(const Vec3&)> holds;
+  /// A storey's floor height: eyes stand on it (within kFloorTolerance), not on a stair's steps.
+  std::optional<float> floor;
 };
 
 Space region_space(const Regions& regions, const Region& region) {
-  return {region.box, [&regions, id = region.id](const Vec3& p) { return regions.at(p) == id; }};
+  return {region.box, [&regions, id = region.id](const Vec3& p) { return regions.at(p) == id; }, std::nullopt};
 }
 
 /// Points on an even grid over the space's box that lie in the space.
@@ -156,7 +158,7 @@ std::optional<Space> choose_room_in(const RayScene& rays, const Regions& regions
     if (!best || std::pair(entry.second.lit, entry.second.points) > std::pair(best->second.lit, best->second.points)) best = &entry;
   }
   if (!best) return std::nullopt;
-  return Space{best->second.box, [key_of, key = best->first](const Vec3& p) { return key_of(p) == key; }};
+  return Space{best->second.box, [key_of, key = best->first](const Vec3& p) { return key_of(p) == key; }, best->first.second};
 }
 
 /// Whether a light reaches the surface at `q` (normal `n`, turned toward the viewer).
@@ -212,14 +214,15 @@ Candidate score_view(const RayScene& rays, const Lighting& lights, const Vec3& e
 }
 
 /// Eyes over the room's floors: each grid point of the room dropped to the
-/// floor below it and raised to eye height, kept if still in the room and
-/// clear of walls.
+/// floor below it (a room on a storey: that storey's floor) and raised to eye
+/// height, kept if still in the room and clear of walls.
 std::vector<Vec3> eyes_in(const RayScene& rays, const Space& room, float voxel) {
   std::vector<Vec3> eyes;
   const float clearance = std::max(2.f * voxel, 0.01f * room.box.diagonal());
   for (const Vec3& p : points_in(room, {14, 10, 14})) {
     const Hit down = rays.intersect(p, Vec3(0.f, -1.f, 0.f)), up = rays.intersect(p, Vec3(0.f, 1.f, 0.f));
     if (!down.valid() || std::abs(rays.face_normals()[down.triangle].y) < 0.7f) continue;  // not over a floor
+    if (room.floor && std::abs(p.y - down.t - *room.floor) > kFloorTolerance) continue;     // over a step or a table
     const float height = down.t + (up.valid() ? up.t : 1e30f);
     const Vec3 eye(p.x, p.y - down.t + std::min(kEyeHeight, 0.6f * height), p.z);
     if (!room.holds(eye)) continue;
