@@ -1,4 +1,5 @@
 #include "hilight/room_split.hpp"
+#include "hilight/voxel_labels.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -137,23 +138,7 @@ RoomSplit::RoomSplit(const RayScene& rays, float voxel) {
 }
 
 int RoomSplit::at(const Vec3& p) const {
-  if (m_label.empty() || !m_box.contains(p)) return 0;
-  glm::ivec3 v;
-  for (int k = 0; k < 3; ++k) v[k] = std::clamp(int((p[k] - m_box.lo[k]) / m_voxel), 0, m_dims[k] - 1);
-  if (const int label = m_label[index(v.x, v.y, v.z)]) return label;
-  // In a wall's voxel: the room of the nearest voxel two or fewer away.
-  int best = 0;
-  float best_d = 1e30f;
-  for (int dz = -2; dz <= 2; ++dz)
-    for (int dy = -2; dy <= 2; ++dy)
-      for (int dx = -2; dx <= 2; ++dx) {
-        const glm::ivec3 q = v + glm::ivec3(dx, dy, dz);
-        if (q.x < 0 || q.y < 0 || q.z < 0 || q.x >= m_dims.x || q.y >= m_dims.y || q.z >= m_dims.z) continue;
-        const int label = m_label[index(q.x, q.y, q.z)];
-        const float d = glm::length(m_box.lo + (Vec3(q) + 0.5f) * m_voxel - p);
-        if (label && d < best_d) best_d = d, best = label;
-      }
-  return best;
+  return label_near(m_label, m_dims, m_box, m_voxel, p, 0);
 }
 
 } // namespace hilight
