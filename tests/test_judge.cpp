@@ -118,11 +118,15 @@ TEST_CASE("judge: the count bounds and the spots' cap", "[judge]") {
   CHECK(fixed.count_fixed());
   CHECK(fixed.min_lights() == 5);
   CHECK(fixed.max_lights() == 5);
-  const CountRule rule = fixed.count_rule(3);  // the seeding found 3: every one taken
-  CHECK(rule.fixed_count == 3);
-  CHECK(rule.min_count == 3);
-  CHECK(rule.max_count == 5);
-  CHECK(rule.visible_dbar == kVisibleDbar);
+  const Judge hierarchy = fixed.for_leaves(3);  // the seeding found 3: every one taken
+  CHECK(hierarchy.count_fixed());
+  CHECK(hierarchy.min_lights() == 3);
+  CHECK(hierarchy.settings().visible_dbar == kVisibleDbar);
+  s.fixed_count = 0;
+  s.min_count = 4;  // count:4:6 over 3 seeded lights: the cuts take all 3
+  s.max_count = 6;
+  CHECK(Judge(s).for_leaves(3).min_lights() == 3);
+  CHECK(Judge(s).for_leaves(3).max_lights() == 6);
 }
 
 TEST_CASE("judge: where the solve changes course", "[judge]") {

@@ -16,14 +16,11 @@ bool Judge::spots_win(size_t n_spots, double d_spots, size_t n_points, double d_
 
 size_t Judge::max_spots() const { return max_lights() ? std::min(kMaxSpots, max_lights()) : kMaxSpots; }
 
-CountRule Judge::count_rule(size_t leaves) const {
-  // A count the seeding cannot reach (--lights N, count:MIN) takes every
-  // seeded light here; the add-missing move adds the rest.
-  CountRule rule{std::min(m_settings.fixed_count, leaves), m_settings.n_cut, m_settings.eps_opt, m_settings.eps_impro,
-                 m_settings.visible_dbar};
-  rule.min_count = std::min(min_lights(), leaves);
-  rule.max_count = max_lights();
-  return rule;
+Judge Judge::for_leaves(size_t leaves) const {
+  JudgeSettings s = m_settings;
+  if (s.fixed_count) s.fixed_count = std::min(s.fixed_count, leaves);
+  else s.min_count = std::min(s.min_count, leaves);
+  return Judge(s);
 }
 
 } // namespace hilight

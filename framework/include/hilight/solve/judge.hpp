@@ -3,8 +3,8 @@
 /// eq. 6's weak light, and every D̄ threshold at which the solve changes
 /// course. Every move asks the judge; no move keeps a threshold of its own,
 /// so a value changed here changes it everywhere (tests/test_judge.cpp).
-#include "hilight/solve/cuts.hpp"
 
+#include <algorithm>
 #include <cstddef>
 
 namespace hilight {
@@ -108,8 +108,19 @@ public:
   bool count_allowed(size_t n) const { return n >= min_lights() && (max_lights() == 0 || n <= max_lights()); }
   /// Spots the search may propose: kMaxSpots within the count bound.
   size_t max_spots() const;
-  /// The cut choice and walk's rule (cuts.hpp) for a hierarchy of `leaves` point lights.
-  CountRule count_rule(size_t leaves) const;
+  /// `k` within the count bounds (count:MIN:MAX).
+  size_t clamp_count(size_t k) const {
+    if (min_lights()) k = std::max(k, min_lights());
+    if (max_lights()) k = std::min(k, max_lights());
+    return k;
+  }
+  /// ε_opt and N_cut: which cuts of the hierarchy are refined (cuts.hpp).
+  double eps_opt() const { return m_settings.eps_opt; }
+  size_t n_cut() const { return m_settings.n_cut; }
+  /// This judge for a hierarchy of `leaves` point lights, as the cuts
+  /// (cuts.hpp) ask it: a count the seeding cannot reach (--lights N,
+  /// count:MIN) takes every seeded light; the add-missing move adds the rest.
+  Judge for_leaves(size_t leaves) const;
 
   // ---- Eq. 6: the weak light. ----
   /// A light whose contribution ‖φ_j l_j‖ is under ε_w of ‖Ψ‖ is weak.

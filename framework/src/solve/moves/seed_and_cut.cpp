@@ -101,7 +101,7 @@ Fit SeedAndCut::run(SolveContext& ctx, const Fit&) {
   // Which cuts to refine and how many lights (cuts.cpp, by the judge's rule).
   // A count the seeding cannot reach (--lights N, count:MIN) takes every
   // seeded light here; the add-missing move adds the rest where the fit is worst.
-  const CountRule rule = ctx.judge.count_rule(n_points);
+  const Judge rule = ctx.judge.for_leaves(n_points);
   std::vector<double> initial;
   for (const auto& c : report.cuts) initial.push_back(c.dbar_initial);
   const std::vector<size_t> chosen = choose_cuts(initial, rule);
