@@ -14,10 +14,10 @@
 namespace fs = std::filesystem;
 using namespace hilight;
 
-TEST_CASE("painter ui: a replayed session with --place ceiling gives ceiling lights over the painted patch", "[painter-ui][placement]") {
-  if (test::skip_without_display()) return;
-  const fs::path dir = test::output_dir("painter_ui_placement");
-  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+namespace {
+/// A session that paints one patch on the bundled room's floor, solves and
+/// saves the lights to dir/lights.json; written to dir/session.json.
+void write_patch_session(const fs::path& dir) {
   const nlohmann::json actions = {
       {{"type", "camera"}, {"eye", {3.0, 6.0, 9.0}}, {"target", {3.0, 0.0, 2.5}}, {"fov", 60}},
       {{"type", "brush"}, {"radius", 0.6}, {"colour", 1.0}, {"brightness", 0.6}, {"hardness", 0.7}},
@@ -25,6 +25,14 @@ TEST_CASE("painter ui: a replayed session with --place ceiling gives ceiling lig
       {{"type", "solve"}},
       {{"type", "save_lights"}, {"path", (dir / "lights.json").string()}}};
   test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+}
+} // namespace
+
+TEST_CASE("painter ui: a replayed session with --place ceiling gives ceiling lights over the painted patch", "[painter-ui][placement]") {
+  if (test::skip_without_display()) return;
+  const fs::path dir = test::output_dir("painter_ui_placement");
+  const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+  write_patch_session(dir);
   const test::RunResult run = test::run_hilight({"paint", room, "--size", "480x360", "--set", "bounce_samples=16", "--samples", "800",
                                                  "--no-cache", "--no-record", "--exit", "--place", "ceiling:0.1", "--script",
                                                  (dir / "session.json").string()});
@@ -87,13 +95,7 @@ TEST_CASE("painter ui: in a closed room the painter hangs lights from the ceilin
   test::CliOwnPlacement own;  // the building default under test (issue 34 §7)
   const fs::path dir = test::output_dir("painter_ui_building_default");
   const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
-  const nlohmann::json actions = {
-      {{"type", "camera"}, {"eye", {3.0, 6.0, 9.0}}, {"target", {3.0, 0.0, 2.5}}, {"fov", 60}},
-      {{"type", "brush"}, {"radius", 0.6}, {"colour", 1.0}, {"brightness", 0.6}, {"hardness", 0.7}},
-      {{"type", "stroke"}, {"world", {{2.2, 0, 3.0}}}},
-      {{"type", "solve"}},
-      {{"type", "save_lights"}, {"path", (dir / "lights.json").string()}}};
-  test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+  write_patch_session(dir);
   const std::vector<std::string> args = {"paint", room, "--size", "480x360", "--set", "bounce_samples=16", "--samples", "800",
                                          "--no-cache", "--no-record", "--exit", "--script", (dir / "session.json").string()};
   const test::RunResult run = test::run_hilight(args);
