@@ -18,6 +18,7 @@
 #endif
 
 #include <catch2/catch.hpp>
+#include <sstream>
 #include <fstream>
 #include <set>
 #include <nlohmann/json.hpp>
@@ -155,6 +156,41 @@ TEST_CASE("rooms: a region name the scene lacks is one line naming it, exit 2, n
     CHECK(r.err.find("--place " + rule) != std::string::npos);
     CHECK_FALSE(fs::exists(out));
     CHECK_FALSE(fs::exists(report));
+  }
+}
+
+TEST_CASE("rooms: region:K of a region that is not a room of the building (outside it, the void under its slab) is refused", "[rooms][real][bad-input]") {
+  // Which regions are not rooms, as hilight info marks them.
+  const auto info = test::run_hilight({"info", fzk_house().string()});
+  REQUIRE(info.exit_code == 0);
+  std::vector<int> not_rooms, rooms;
+  std::istringstream lines(info.out);
+  bool in_regions = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("regions", 0) == 0) in_regions = true;
+    else if (in_regions && line.rfind("  ", 0) == 0 && line.find('[') != std::string::npos)
+      (line.find("not a room") != std::string::npos ? not_rooms : rooms).push_back(std::stoi(line));
+  }
+  REQUIRE_FALSE(not_rooms.empty());
+  REQUIRE_FALSE(rooms.empty());
+  const fs::path dir = test::output_dir("rooms_not_a_room");
+  const fs::path out = dir / "lights.json", missing_target = dir / "no-target.ply";
+  for (int k : not_rooms) {
+    const std::string rule = "region:" + std::to_string(k);
+    INFO(rule);
+    const auto r = test::run_hilight({"solve", fzk_house().string(), "--target", missing_target.string(), "--place", rule, "-o", out.string()});
+    CHECK(r.exit_code == 2);
+    CHECK(test::line_count(r.err) == 1);
+    CHECK(r.err.find("--place " + rule + ": region " + std::to_string(k) + " is not a room") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+  // A room's number passes (the solve goes on to the target, missing here), and excluding an outside region is allowed.
+  for (const std::string rule : {"region:" + std::to_string(rooms.front()), "not-region:" + std::to_string(not_rooms.front())}) {
+    INFO(rule);
+    const auto r = test::run_hilight({"solve", fzk_house().string(), "--target", missing_target.string(), "--place", rule, "-o", out.string()});
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(missing_target.filename().string()) != std::string::npos);
+    CHECK(r.err.find("is not a room") == std::string::npos);
   }
 }
 

@@ -103,6 +103,16 @@ std::string building_kind(const Scene& scene, bool storeys) {
 
 bool offered_as_room(const Region& region) { return !region.at_border && region.box.extent().y >= 1.8f; }
 
+void refuse_regions_not_rooms(const PlacementRules& rules, const RayScene& rays, const std::string& building) {
+  if (building.empty() || rules.regions.empty()) return;
+  const Regions regions(rays);
+  for (int r : rules.regions)
+    if (size_t(r) < regions.list().size() && !offered_as_room(regions.list()[size_t(r)]))
+      throw InputError("--place region:" + std::to_string(r) + ": region " + std::to_string(r) + " is not a room of " + building +
+                       " (" + (regions.list()[size_t(r)].at_border ? "it is outside" : "too low to stand in") +
+                       "; hilight info lists the rooms)");
+}
+
 std::string apply_building_default(PlacementRules& rules, const Scene& scene, bool storeys) {
   if (rules.says_where()) return "";
   const std::string why = building_kind(scene, storeys);

@@ -54,6 +54,11 @@ std::string building_kind(const Scene& scene, bool storeys);
 /// light bounds' border) and tall enough to stand in (1.8 m: not the void
 /// under a slab).
 bool offered_as_room(const Region& region);
+/// In a building (`building`: building_kind's answer), `--place region:K`
+/// naming a region not offered as a room (the outside, the void under a
+/// slab) is an InputError: such regions are not offered (issue 34 §5).
+/// `not-region:K` of one stays allowed (it only excludes).
+void refuse_regions_not_rooms(const PlacementRules& rules, const RayScene& rays, const std::string& building);
 
 /// The building default (issue 34 §7): in a building — an IFC with storeys
 /// (`storeys`), or a scene closed on every side (an interior) — lights hang
