@@ -26,31 +26,9 @@ Regions::Regions(const RayScene& rays, int cells) {
     const glm::ivec3 v = voxel_of(p);
     wall[index(v.x, v.y, v.z)] = 1;
   });
-  // Flood fill the free voxels, 6-connected.
+  // The free voxels' 6-connected parts, labelled provisionally in scan order.
   m_label.assign(n, -1);
-  std::vector<std::pair<size_t, size_t>> parts;  // (voxels, first voxel) per provisional label
-  std::vector<size_t> stack;
-  int next = 0;
-  for (size_t start = 0; start < n; ++start) {
-    if (wall[start] || m_label[start] >= 0) continue;
-    size_t count = 0;
-    m_label[start] = next;
-    stack.push_back(start);
-    while (!stack.empty()) {
-      const size_t i = stack.back();
-      stack.pop_back();
-      ++count;
-      const int x = int(i % size_t(m_dims.x)), y = int(i / size_t(m_dims.x) % size_t(m_dims.y)), z = int(i / (size_t(m_dims.x) * m_dims.y));
-      const int nb[6][3] = {{x - 1, y, z}, {x + 1, y, z}, {x, y - 1, z}, {x, y + 1, z}, {x, y, z - 1}, {x, y, z + 1}};
-      for (const auto& q : nb) {
-        if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= m_dims.x || q[1] >= m_dims.y || q[2] >= m_dims.z) continue;
-        const size_t j = index(q[0], q[1], q[2]);
-        if (!wall[j] && m_label[j] < 0) m_label[j] = next, stack.push_back(j);
-      }
-    }
-    parts.emplace_back(count, start);
-    ++next;
-  }
+  const std::vector<VoxelPart> parts = label_parts(m_dims, [&](size_t i) { return !wall[i]; }, m_label, -1, 0);
   // Keep the parts that are not inside solids and hold a light with room to
   // spare (pockets between furniture parts, under a stair: not regions),
   // numbered by size.
@@ -61,10 +39,10 @@ Regions::Regions(const RayScene& rays, int cells) {
   };
   std::vector<int> order(parts.size());
   for (size_t p = 0; p < parts.size(); ++p) order[p] = int(p);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return parts[size_t(a)].first > parts[size_t(b)].first; });
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return parts[size_t(a)].voxels > parts[size_t(b)].voxels; });
   std::vector<int> renamed(parts.size(), -1);
   for (int p : order)
-    if (parts[size_t(p)].first >= kMinVoxels && !rays.inside_solid(centre(parts[size_t(p)].second))) {
+    if (parts[size_t(p)].voxels >= kMinVoxels && !rays.inside_solid(centre(parts[size_t(p)].first))) {
       renamed[size_t(p)] = int(m_regions.size());
       m_regions.push_back({int(m_regions.size()), {}, 0.0, false});
     }

@@ -74,28 +74,11 @@ RoomSplit::RoomSplit(const RayScene& rays, float voxel) {
   // Cores: the air farther than kCoreClearance from every surface, split at doors; numbered provisionally from 1.
   const auto core = [&](size_t i) { return m_label[i] == 0 && steps[i] != kUnreached && float(steps[i]) * m_voxel > kCoreClearance; };
   std::vector<int> provisional(n, 0);
-  std::vector<size_t> core_size{0}, core_first{0};
-  for (size_t start = 0; start < n; ++start) {
-    if (!core(start) || provisional[start]) continue;
-    const int id = int(core_size.size());
-    size_t count = 0;
-    provisional[start] = id;
-    stack.push_back(start);
-    while (!stack.empty()) {
-      const size_t i = stack.back();
-      stack.pop_back();
-      ++count;
-      const glm::ivec3 v = coords(i);
-      for (const auto& f : kFaces)
-        if (const glm::ivec3 q = v + f; inside(q))
-          if (const size_t j = index(q.x, q.y, q.z); core(j) && !provisional[j]) provisional[j] = id, stack.push_back(j);
-    }
-    core_size.push_back(count);
-    core_first.push_back(start);
-  }
+  std::vector<VoxelPart> cores = label_parts(m_dims, core, provisional, 0, 1);
+  cores.insert(cores.begin(), VoxelPart{});  // cores[c] is core c's: numbers start at 1
   const auto centre = [&](size_t i) { return m_box.lo + (Vec3(coords(i)) + 0.5f) * m_voxel; };
-  std::vector<char> kept(core_size.size(), 0);
-  for (size_t c = 1; c < core_size.size(); ++c) kept[c] = core_size[c] >= kMinCoreVoxels && !rays.inside_solid(centre(core_first[c]));
+  std::vector<char> kept(cores.size(), 0);
+  for (size_t c = 1; c < cores.size(); ++c) kept[c] = cores[c].voxels >= kMinCoreVoxels && !rays.inside_solid(centre(cores[c].first));
 
   // Each core grows over the free space around it, level by level: a doorway goes half to each side.
   for (size_t i = 0; i < n; ++i)
@@ -112,7 +95,7 @@ RoomSplit::RoomSplit(const RayScene& rays, float voxel) {
   }
 
   // Boxes and volumes, then the numbers: by floor, then x, then z.
-  std::vector<Room> rooms(core_size.size());
+  std::vector<Room> rooms(cores.size());
   const double cell = double(m_voxel) * m_voxel * m_voxel;
   for (size_t i = 0; i < n; ++i)
     if (const int c = provisional[i]) {
