@@ -205,6 +205,14 @@ TEST_CASE("recovery: 2 to 6 ceiling lamps in the rooms of a furnished five-room 
   CHECK(o.right + 1 >= o.trials);
 }
 
+// Seed 914 of the sweep: the split-lamps move made one lamp into itself and
+// a light of 6e-5 its intensity pressed against the ceiling, fitting bounce
+// noise at a few samples. A split may leave no weak light more (eq. 6).
+TEST_CASE("recovery: a home lamp is not split into itself and a weak light pressed against the ceiling", "[solve][built][recovery][home]") {
+  const Outcome o = recovery_trials(builders::furnished_home, 914, 1, 6, builders::RandomLightRules{}.min_apart, home_trials(0.f));
+  CHECK(o.right == 1);
+}
+
 TEST_CASE("recovery sweep: 20 ceiling-lamp layouts in the furnished home (bench)", "[.][home-sweep]") {
   const auto [first, count] = trial_range(900, 20);
   const Outcome o = recovery_trials(builders::furnished_home, first, count, 6, builders::RandomLightRules{}.min_apart, home_trials(0.f));
