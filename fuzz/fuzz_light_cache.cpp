@@ -9,6 +9,7 @@
 #include "hilight/light_cache_file.hpp"
 #include "hilight/solve/samples.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/ray_scene.hpp"
 #include "hilight/registry.hpp"
 
 #include <cstring>
@@ -56,7 +57,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   hilight::SampleSet samples;
   samples.binding = {{0, 0.2f, 0.3f}, {0, 0.f, 1.f}};
   samples.target.assign(samples.binding.size(), hilight::Rgb(1.f));
-  const auto view = loaded.cache->view(scene, samples);
+  const hilight::RayScene rays(scene);  // the view traces which cell corners the light sees
+  const auto view = loaded.cache->view(rays, samples);
   std::vector<hilight::Rgb> out(samples.size(), hilight::Rgb(0.f));
   for (const hilight::Vec3 p : {hilight::Vec3(0.f), hilight::Vec3(0.5f, 0.5f, 0.5f), hilight::Vec3(-1e30f, 1e30f, 3.f)})
     if (view) view->add_indirect(p, out.data());

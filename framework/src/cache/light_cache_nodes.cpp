@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/packing.hpp>
+#include <glm/gtx/component_wise.hpp>
 #include <istream>
 #include <ostream>
 #include <tbb/parallel_for.h>
@@ -233,7 +234,12 @@ bool node_is_free(const RayScene& rays, const Vec3& position, float clearance) {
 bool node_seen(const RayScene& rays, const Vec3& a, const Vec3& b) {
   const Vec3 d = b - a;
   const float distance = glm::length(d);
-  return distance <= 0.f || !rays.occluded(a, d / distance, distance);
+  // Embree takes no ray from beyond ±1.8e18 (a light asked about at 1e30, a
+  // corrupt cache's cell): nothing to trace there, so seen.
+  constexpr float kEmbreeLargest = 1e18f;
+  const float farthest = std::max(glm::compMax(glm::abs(a)), glm::compMax(glm::abs(b)));
+  if (!(distance > 0.f) || !std::isfinite(distance) || !(farthest < kEmbreeLargest)) return true;
+  return !rays.occluded(a, d / distance, distance);
 }
 
 void corners_on_light_side(const RayScene& rays, const Vec3& light, const CellCorners& c, bool keep[8]) {
