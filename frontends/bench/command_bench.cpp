@@ -64,9 +64,10 @@ int run_bench(const std::vector<std::string>& args, Registry& registry) {
   if (!args.empty() && args[0] == "cache") return run_bench_cache(std::vector<std::string>(args.begin() + 1, args.end()), registry);
   if (!args.empty() && args[0] == "renderers")
     return run_bench_renderers(std::vector<std::string>(args.begin() + 1, args.end()), registry);
+  if (!args.empty() && args[0] == "bounces") return run_bench_bounces(std::vector<std::string>(args.begin() + 1, args.end()), registry);
   if (!args.empty() && args[0] == "lux") return run_bench_lux(std::vector<std::string>(args.begin() + 1, args.end()), registry);
   if (!args.empty() && args[0] == "render") return run_bench(std::vector<std::string>(args.begin() + 1, args.end()), registry);
-  CLI::App app("Measure renderer throughput; prints one JSON object per line (hilight bench solve: the inverse solve; hilight bench renderers: renderers side by side; hilight bench cache: light caches side by side; hilight bench lux: the illuminance design)", "bench");
+  CLI::App app("Measure renderer throughput; prints one JSON object per line (hilight bench solve: the inverse solve; hilight bench renderers: renderers side by side; hilight bench cache: light caches side by side; hilight bench lux: the illuminance design; hilight bench bounces: the render at each bounce model)", "bench");
   std::string renderer_name = PluginDefaults::renderer;
   int min_triangles = 100000, light_count = 32, repeat = 5, bounce_points = 2000, threads = 0;
   app.add_option("--renderer", renderer_name, "renderer plugin")->capture_default_str();
