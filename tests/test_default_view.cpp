@@ -3,7 +3,8 @@
 // PNG is neither mostly black nor mostly white. In the FZK house the stair's
 // opening joins the ground floor's hall and living room to the attic (one
 // region, one room of the split at doors): lamps on the ground floor put the
-// eye there, on that storey, not in the larger attic.
+// eye there, on that storey, not in the larger attic; with no lamp at all the
+// eye stands on the ground floor too, where a person opening a house expects.
 #include "hilight/default_view.hpp"
 #include "hilight/fixtures/real_model_scenes.hpp"
 #include "hilight/fixtures/scene_builders.hpp"
@@ -210,6 +211,31 @@ TEST_CASE("default view: in the FZK house lamps in a ground-floor room put the e
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   check_readable(looks_of(dir / "ground-floor.png"));
+}
+
+TEST_CASE("default view: with no light a building opens on its main storey, the FZK house on its ground floor, not in the attic",
+          "[view][rooms]") {
+  const auto scene = std::make_shared<const Scene>(load_scene(kHouse));
+  const auto rays = RayScene::shared(scene);
+  const std::vector<PlanSection> storeys = plan_sections(*scene);
+  REQUIRE(storeys.size() >= 2);
+  const Camera view = default_view(*rays, {}, 4.f / 3.f);
+  INFO("eye " << view.eye.x << ", " << view.eye.y << ", " << view.eye.z);
+  CHECK(storey_floor(storeys, view.eye) == storeys.front().floor);
+  CHECK(view.eye.y < storeys.front().top);
+  const Hit floor = rays->intersect(view.eye, Vec3(0.f, -1.f, 0.f));
+  REQUIRE(floor.valid());
+  CHECK(floor.t > 1.f);
+  CHECK(floor.t < 2.f);
+  CHECK(default_view_room(*rays, {}) == Regions(*rays).at(view.eye));
+#ifdef HILIGHT_HAVE_IFCPP
+  // In one of the ground floor's IfcSpaces, not the Galerie in the attic.
+  const cli::IfcRooms ifc = cli::read_ifc_rooms(kHouse, *scene);
+  const auto holding = std::find_if(ifc.rooms.begin(), ifc.rooms.end(), [&](const NamedRoom& room) { return room.contains(view.eye); });
+  REQUIRE(holding != ifc.rooms.end());
+  INFO("in " << holding->name);
+  CHECK(holding->storey == ifc.storeys.front());
+#endif
 }
 
 TEST_CASE("render: with no --camera the IFC house and a closed box are pictures a person can read", "[cli][render][view]") {

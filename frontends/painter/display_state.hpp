@@ -14,7 +14,6 @@ struct DisplayState {
   ui::ViewMode view = ui::ViewMode::Result;
   float exposure = 0.f;               ///< 0 until first set automatically
   bool exposure_from_result = false;  ///< set from a lit result (else from the target, or not yet)
-  bool exposure_in_view = false;      ///< picked from what the view shows (after the view changed), not the whole scene
   float exposure_stops = 0.f;         ///< the user's adjustment
   bool show_lights = true;
   std::vector<Rgb> radiance;          ///< I(p) of radiance_lights, per vertex

@@ -7,6 +7,7 @@
 #include "ui/gl.hpp"
 #include "ui/light_markers.hpp"
 #include "ui/screenshot.hpp"
+#include "ui/view_exposure.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -269,11 +270,14 @@ void PainterApp::refresh_colours() {
   if (!m_display.exposure_from_result) {
     // Once per view, from the first lit result (until then from the target):
     // later changes of brightness stay visible instead of being normalized
-    // away, and target and result are shown alike. A new view (a plan, a
-    // walk, another room) is exposed for what it shows (view_changed).
-    std::vector<float> in_view;
-    if (m_display.exposure_in_view) in_view = vertices_in_view();
-    const float from_result = no_lights || !m_display.radiance_final ? 0.f : ui::auto_exposure(m_display.radiance, in_view);
+    // away, and target and result are shown alike. Each view (the opening
+    // one, a plan, a walk, another room) is exposed for what it shows
+    // (view_changed); the whole scene when it shows too little to judge.
+    float from_result = 0.f;
+    if (!no_lights && m_display.radiance_final) {
+      from_result = exposure_of_view();
+      if (from_result <= 0.f) from_result = ui::auto_exposure(m_display.radiance);
+    }
     if (from_result > 0.f) {
       m_display.exposure = from_result;
       m_display.exposure_from_result = true;
@@ -298,23 +302,18 @@ void PainterApp::refresh_colours() {
 
 void PainterApp::view_changed() {
   m_display.exposure_from_result = false;
-  m_display.exposure_in_view = true;
   m_display.colours_dirty = true;
 }
 
-std::vector<float> PainterApp::vertices_in_view() const {
-  const glm::mat4 vp = view_projection();
-  const std::optional<float> section = m_player->clip().section;
-  std::vector<float> in(m_scene->positions.size(), 0.f);
-  size_t count = 0;
-  for (size_t i = 0; i < in.size(); ++i) {
-    const Vec3& p = m_scene->positions[i];
-    if (section && p.y > *section) continue;
-    const glm::vec4 c = vp * glm::vec4(p, 1.f);
-    if (c.w > 0.f && std::abs(c.x) <= c.w && std::abs(c.y) <= c.w && c.z >= -c.w && c.z <= c.w) in[i] = 1.f, ++count;
-  }
-  if (count < 16) in.clear();  // too little in view to judge: the whole scene
-  return in;
+float PainterApp::exposure_of_view() const {
+  int w = 1, h = 1;
+  m_window->framebuffer_size(w, h);
+  const float width = float(std::max(w, 1)), height = float(std::max(h, 1));
+  const auto ray_through = [&](float x, float y) {
+    return m_plan ? m_plan->ray_through(x * width, y * height, width, height, aspect())
+                  : m_camera.ray_through(x * width, y * height, width, height);
+  };
+  return ui::view_exposure(*m_rays, m_display.radiance, ray_through, m_player->visibility());
 }
 
 void PainterApp::draw_scene() {

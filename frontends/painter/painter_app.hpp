@@ -62,8 +62,8 @@ private:
   /// The view changed (camera released, plan, walk, room focus): the next
   /// colours pick their exposure again from what this view shows (issue 36).
   void view_changed();
-  /// 1 for each vertex in the view's frustum (and under the section), else 0.
-  std::vector<float> vertices_in_view() const;
+  /// The exposure for what the view shows (ui/view_exposure.hpp); 0: too little to judge.
+  float exposure_of_view() const;
   /// Draws the scene and overlays into the back buffer (no panels).
   void draw_scene();
   void build_overlays();

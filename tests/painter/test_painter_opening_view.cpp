@@ -1,11 +1,13 @@
 // The painter in a building (issue 36): it opens inside the largest lit room
 // of the IFC house, and both that view and the plan view are exposed for what
-// they show — neither mostly black nor mostly white. With
+// they show — neither mostly black nor mostly white; a bright room behind a
+// wall does not darken the room in view. With
 // HILIGHT_UPDATE_DOC_IMAGES=1 the screenshots are copied to docs/images/ for
 // docs/painter.md.
 #include "../random_lights.hpp"
 #include "../support.hpp"
 #include "hilight/fixtures/real_model_scenes.hpp"
+#include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/io/image_io.hpp"
 #include "hilight/io/lights_file.hpp"
 #include "hilight/io/scene_io.hpp"
@@ -14,6 +16,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -50,7 +53,42 @@ void check_readable(const fs::path& png, double most_black) {
   CHECK(white / double(n) < 0.15);
 }
 
+/// Two closed rooms side by side as an OBJ, their faces toward the inside: a
+/// 6 × 3 × 5 m room and, past a 0.2 m wall at x = 6, a 3 × 3 × 5 m one.
+void write_two_rooms(const fs::path& path) {
+  std::ofstream out(path);
+  size_t base = 0;
+  for (const auto& [size, x] : {std::pair(Vec3(6.f, 3.f, 5.f), 0.f), std::pair(Vec3(3.f, 3.f, 5.f), 6.2f)}) {
+    const Scene room = builders::box_room(size);
+    for (const Vec3& p : room.positions) out << "v " << p.x + x << ' ' << p.y << ' ' << p.z << '\n';
+    for (const auto& t : room.triangles) out << "f " << base + t[0] + 1 << ' ' << base + t[1] + 1 << ' ' << base + t[2] + 1 << '\n';
+    base += room.positions.size();
+  }
+}
+
 } // namespace
+
+TEST_CASE("painter ui: a bright room behind a wall does not darken the exposure of the room in view", "[painter-ui][view]") {
+  if (test::skip_without_display()) return;
+  const fs::path dir = test::output_dir("painter_exposure_behind_wall");
+  write_two_rooms(dir / "two-rooms.obj");
+  // A dim lamp in the large room, one a thousand times brighter in the small room next door.
+  write_lights_file(dir / "lights.json",
+                    {Light::point(Vec3(3.f, 2.6f, 2.5f), Rgb(1.f)), Light::point(Vec3(7.7f, 2.6f, 2.5f), Rgb(1000.f))});
+  // The opening view (inside the larger lit room) and one looking at the wall, the bright room behind it in the frustum.
+  const nlohmann::json actions = {{{"type", "screenshot"}, {"path", (dir / "opening.png").string()}},
+                                  {{"type", "camera"}, {"eye", {1.f, 1.6f, 2.5f}}, {"target", {6.f, 1.3f, 2.5f}}, {"fov", 65}},
+                                  {{"type", "screenshot"}, {"path", (dir / "wall.png").string()}}};
+  test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+  const test::RunResult run = test::run_hilight({"paint", (dir / "two-rooms.obj").string(), "--lights", (dir / "lights.json").string(),
+                                                 "--size", "320x240", "--set", "bounce_samples=16", "--no-cache", "--no-record", "--exit",
+                                                 "--script", (dir / "session.json").string()});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  // Exposed for the bright room's walls, the large room's would be nearly black.
+  check_readable(dir / "opening.png", 0.2);
+  check_readable(dir / "wall.png", 0.2);
+}
 
 TEST_CASE("painter ui: the IFC house opens inside a lit room, and the opening and plan views are readable", "[painter-ui][view]") {
   if (test::skip_without_display()) return;

@@ -4,10 +4,14 @@
 /// painter's opening view. A building or a closed box is seen from inside
 /// its largest lit room, at eye height, across the room; a scene with no
 /// enclosed room (a product, a landscape) from outside (Camera::framing).
-/// The room: in the largest enclosed region holding a light (else the
-/// largest enclosed one), the largest room of the split at doors
+/// The room: in the largest enclosed region holding a light (else in every
+/// enclosed one), the largest room of the split at doors
 /// (room_split.hpp), cut at the storeys' floors (plan_sections), that holds
-/// a light, else the largest; the whole region where the split finds none.
+/// a light; with none lit, the room with the most floor to stand on (its plan
+/// at eye height) of the main storey: the one with the most such floor, the
+/// lowest within a tenth of it (a ground floor, not an attic under a sloping
+/// roof nor an upper floor of the same plan). The whole region where the
+/// split finds no room.
 #include "hilight/camera.hpp"
 #include "hilight/lighting.hpp"
 #include "hilight/ray_scene.hpp"
@@ -27,9 +31,9 @@ std::vector<Camera> default_views(const RayScene& rays, const Lighting& lights, 
 Camera default_view(const RayScene& rays, const Lighting& lights, float aspect);
 
 /// The region default_views looks into: the index in Regions(rays).list()
-/// of the largest enclosed region holding a light (with no lit one, the
-/// largest enclosed one); -1 when no region is enclosed (the view is from
-/// outside). Its eyes stand in one room of it (see above).
+/// of the region its eyes stand in, the largest enclosed one holding a light
+/// (with no lit one, the region of the main storey's room, else the largest
+/// enclosed one); -1 when no region is enclosed (the view is from outside).
 int default_view_room(const RayScene& rays, const Lighting& lights);
 
 } // namespace hilight

@@ -4,10 +4,11 @@
 // leave the scene. A region joins everything a door or a stair opens into (a
 // house's whole interior, attic included), so the eyes stand in one room of
 // it: the room split at doors (room_split.hpp) cut at the storeys' floors
-// (plan_sections), the largest such room holding a light, else the largest.
-// Inside it, eyes stand at eye height over its floors, and each looks where a
-// fan of rays meets the most lit surface the farthest away: across the room,
-// toward its lights' pools, not into a wall or out of a window.
+// (plan_sections), the largest such room holding a light, else the room of
+// the main storey (largest_on_main_storey). Inside it, eyes stand at eye
+// height over its floors, and each looks where a fan of rays meets the most
+// lit surface the farthest away: across the room, toward its lights' pools,
+// not into a wall or out of a window.
 #include "hilight/default_view.hpp"
 
 #include "hilight/plan_view.hpp"
@@ -87,49 +88,102 @@ float escaping(const RayScene& rays, const Space& space) {
   return float(lost) / float(sent);
 }
 
-/// The region to look into, or nullptr (see default_view_room).
-const Region* choose_region(const RayScene& rays, const Regions& regions, const Lighting& lights) {
+/// The enclosed regions, largest first: big enough to stand in, and rays from them almost never leave the scene.
+std::vector<const Region*> enclosed_regions(const RayScene& rays, const Regions& regions) {
   const double scene_volume = [&] {
     const Vec3 e = rays.scene().light_bounds().extent();
     return double(e.x) * e.y * e.z;
   }();
-  const Region* lit = nullptr;
-  const Region* any = nullptr;
-  for (const Region& r : regions.list()) {  // largest first
-    if (r.volume < 0.01 * scene_volume || escaping(rays, region_space(regions, r)) > kMostEscaping) continue;
-    if (!any) any = &r;
-    const bool holds_light = std::any_of(lights.begin(), lights.end(), [&](const Light& l) { return regions.at(l.position) == r.id; });
-    if (holds_light) {
-      lit = &r;
-      break;
-    }
-  }
-  return lit ? lit : any;
+  std::vector<const Region*> out;
+  for (const Region& r : regions.list())  // largest first
+    if (r.volume >= 0.01 * scene_volume && escaping(rays, region_space(regions, r)) <= kMostEscaping) out.push_back(&r);
+  return out;
 }
 
-/// A room of the region: a room of the split at doors on one storey (its floor's height).
-using RoomKey = std::pair<int, float>;
+/// The enclosed region holding a light, the largest such; nullptr when none does.
+const Region* lit_region(const std::vector<const Region*>& enclosed, const Regions& regions, const Lighting& lights) {
+  for (const Region* r : enclosed)
+    if (std::any_of(lights.begin(), lights.end(), [&](const Light& l) { return regions.at(l.position) == r->id; })) return r;
+  return nullptr;
+}
 
-/// The room of `region` to look into: the largest room of the split (cut at
-/// the storeys' floors) holding a light, else the largest; nullopt when the
-/// split finds no room in the region (the region is the room then).
-std::optional<Space> choose_room_in(const RayScene& rays, const Regions& regions, const Region& region, const Lighting& lights) {
+/// A room: a room of the split at doors on one storey, in one region (the
+/// split's rooms may reach a little past a closed door's leaf).
+struct RoomKey {
+  int region = -1, room = 0;  ///< room 0: none
+  float floor = 0.f;          ///< the storey's floor height
+  auto operator<=>(const RoomKey&) const = default;
+};
+
+/// A room's size and place, from points on a grid over its region.
+struct RoomExtent {
+  size_t points = 0;  ///< its volume in grid cells
+  size_t at_eye = 0;  ///< its cells in the grid's layer at eye height over its storey's floor: floor to stand on
+  Bounds box;
+  bool lit = false;
+};
+using Rooms = std::map<RoomKey, RoomExtent>;
+
+/// With no light to go by, the room a person opening a building expects: on
+/// the storey with the most floor to stand on (at eye height: an attic under
+/// a sloping roof has less than its plan), the lowest of those within a tenth
+/// of it (the ground floor over an upper one of the same plan), the room
+/// with the most of it. By volume, the attic's tall space under the ridge
+/// would win. Where no room has floor at eye height (no storeys), the
+/// largest. Ties by key (never by threads or addresses).
+const Rooms::value_type* largest_on_main_storey(const Rooms& rooms) {
+  std::map<float, size_t> storey_floor_at_eye;
+  for (const auto& [key, room] : rooms) storey_floor_at_eye[key.floor] += room.at_eye;
+  size_t most = 0;
+  for (const auto& [floor, at_eye] : storey_floor_at_eye) most = std::max(most, at_eye);
+  const Rooms::value_type* best = nullptr;
+  if (most == 0) {
+    for (const auto& entry : rooms)
+      if (!best || entry.second.points > best->second.points) best = &entry;
+    return best;
+  }
+  // Storeys from the lowest floor up: the first with nearly the most.
+  const auto main = std::find_if(storey_floor_at_eye.begin(), storey_floor_at_eye.end(),
+                                 [most](const auto& storey) { return 10 * storey.second >= 9 * most; });
+  for (const auto& entry : rooms)
+    if (entry.first.floor == main->first &&
+        (!best || std::pair(entry.second.at_eye, entry.second.points) > std::pair(best->second.at_eye, best->second.points)))
+      best = &entry;
+  return best;
+}
+
+/// Where eyes may stand in a room, and the region it lies in.
+struct ChosenRoom {
+  Space space;
+  int region = -1;
+};
+
+/// The room to look into, in `searched` (the lit region, or with none every
+/// enclosed one: a house's rooms behind closed doors are regions of their
+/// own, and they count for their storey): the largest room of the split (cut
+/// at the storeys' floors) holding a light, else the one of the main storey
+/// (largest_on_main_storey); nullopt when the split finds no room there.
+std::optional<ChosenRoom> choose_room_in(const RayScene& rays, const Regions& regions, const std::vector<const Region*>& searched,
+                                         const Lighting& lights) {
   const auto split = std::make_shared<const RoomSplit>(rays);
-  if (split->list().empty()) return std::nullopt;
+  if (split->list().empty() || searched.empty()) return std::nullopt;
   const auto storeys = std::make_shared<const std::vector<PlanSection>>(plan_sections(rays.scene()));
-  // The room p stands in; room 0 outside the region or every room of the split.
-  const auto key_of = [split, storeys, &regions, id = region.id](const Vec3& p) {
-    if (regions.at(p) != id) return RoomKey{0, 0.f};
-    return RoomKey{split->at(p), storey_floor(*storeys, p)};
+  std::vector<int> ids;
+  Bounds box;
+  for (const Region* r : searched) {
+    ids.push_back(r->id);
+    box.extend(r->box.lo);
+    box.extend(r->box.hi);
+  }
+  // The room p stands in; room 0 outside the regions searched or every room of the split.
+  const auto key_of = [split, storeys, &regions, ids](const Vec3& p) {
+    const int region = regions.at(p);
+    if (std::find(ids.begin(), ids.end(), region) == ids.end()) return RoomKey{};
+    return RoomKey{region, split->at(p), storey_floor(*storeys, p)};
   };
-  // Each room's volume and box, from points on a grid over the region.
-  struct Extent {
-    size_t points = 0;
-    Bounds box;
-    bool lit = false;
-  };
-  std::map<RoomKey, Extent> rooms;
-  const Vec3 extent = region.box.extent();
+  // Each room's volume and box, from points on a grid over the regions.
+  std::map<RoomKey, RoomExtent> rooms;
+  const Vec3 extent = box.extent();
   const float step = std::max(kRoomSample, std::max({extent.x, extent.y, extent.z}) / 80.f);
   glm::ivec3 cells;
   for (int k = 0; k < 3; ++k) cells[k] = std::max(1, int(std::ceil(extent[k] / step)));
@@ -137,28 +191,38 @@ std::optional<Space> choose_room_in(const RayScene& rays, const Regions& regions
   for (int z = 0; z < cells.z; ++z)
     for (int y = 0; y < cells.y; ++y)
       for (int x = 0; x < cells.x; ++x) {
-        const Vec3 p = region.box.lo + (Vec3(float(x), float(y), float(z)) + 0.5f) * cell;
+        const Vec3 p = box.lo + (Vec3(float(x), float(y), float(z)) + 0.5f) * cell;
         const RoomKey key = key_of(p);
-        if (key.first == 0) continue;
-        Extent& room = rooms[key];
+        if (key.room == 0) continue;
+        RoomExtent& room = rooms[key];
         ++room.points;
+        const float over_eye = p.y - (key.floor + kEyeHeight);
+        if (!storeys->empty() && over_eye >= -0.5f * cell.y && over_eye < 0.5f * cell.y) ++room.at_eye;
         room.box.extend(p - 0.5f * cell);
         room.box.extend(p + 0.5f * cell);
       }
   // A light's room by the split alone: its finer grid places a lamp in a window's reveal, where the
   // regions' coarser one may see the outside.
-  for (const Light& l : lights)
-    if (const auto it = rooms.find(RoomKey{split->at(l.position), storey_floor(*storeys, l.position)}); it != rooms.end())
-      it->second.lit = true;
-  // Largest lit first, then largest; ties by key (never by threads or addresses).
+  for (const Light& l : lights) {
+    const int room = split->at(l.position);
+    const float floor = storey_floor(*storeys, l.position);
+    for (auto& [key, lit_room] : rooms)
+      if (key.room == room && key.floor == floor) lit_room.lit = true;
+  }
   const double cell_volume = double(cell.x) * cell.y * cell.z;
-  const std::pair<const RoomKey, Extent>* best = nullptr;
-  for (const auto& entry : rooms) {
-    if (double(entry.second.points) * cell_volume < kLeastRoom) continue;
-    if (!best || std::pair(entry.second.lit, entry.second.points) > std::pair(best->second.lit, best->second.points)) best = &entry;
+  std::erase_if(rooms, [&](const auto& entry) { return double(entry.second.points) * cell_volume < kLeastRoom; });
+  const Rooms::value_type* best = nullptr;
+  const bool any_lit = std::any_of(rooms.begin(), rooms.end(), [](const auto& entry) { return entry.second.lit; });
+  if (any_lit) {
+    // The largest lit room; ties by key (never by threads or addresses).
+    for (const auto& entry : rooms)
+      if (entry.second.lit && (!best || entry.second.points > best->second.points)) best = &entry;
+  } else {
+    best = largest_on_main_storey(rooms);
   }
   if (!best) return std::nullopt;
-  return Space{best->second.box, [key_of, key = best->first](const Vec3& p) { return key_of(p) == key; }, best->first.second};
+  return ChosenRoom{Space{best->second.box, [key_of, key = best->first](const Vec3& p) { return key_of(p) == key; }, best->first.floor},
+                    best->first.region};
 }
 
 /// Whether a light reaches the surface at `q` (normal `n`, turned toward the viewer).
@@ -283,17 +347,33 @@ std::vector<Camera> outside_views(const Scene& scene, float aspect, size_t count
   return out;
 }
 
+/// What the views look into: the lit enclosed region (else the largest
+/// enclosed one) and the room in it (with no lit region, in any enclosed
+/// one); no region: from outside; no room: the region.
+struct Choice {
+  const Region* region = nullptr;
+  std::optional<ChosenRoom> room;
+};
+
+Choice choose(const RayScene& rays, const Regions& regions, const Lighting& lights) {
+  const std::vector<const Region*> enclosed = enclosed_regions(rays, regions);
+  if (enclosed.empty()) return {};
+  const Region* lit = lit_region(enclosed, regions, lights);
+  return {lit ? lit : enclosed.front(), choose_room_in(rays, regions, lit ? std::vector<const Region*>{lit} : enclosed, lights)};
+}
+
 } // namespace
 
 std::vector<Camera> default_views(const RayScene& rays, const Lighting& lights, float aspect, size_t count) {
   count = std::max<size_t>(count, 1);
   const Regions regions(rays);
-  if (const Region* region = choose_region(rays, regions, lights)) {
-    if (const std::optional<Space> room = choose_room_in(rays, regions, *region, lights)) {
-      std::vector<Camera> inside = inside_views(rays, *room, regions.voxel_size(), lights, aspect, count);
-      if (!inside.empty()) return inside;
-    }
-    std::vector<Camera> inside = inside_views(rays, region_space(regions, *region), regions.voxel_size(), lights, aspect, count);
+  const Choice choice = choose(rays, regions, lights);
+  if (choice.room) {
+    std::vector<Camera> inside = inside_views(rays, choice.room->space, regions.voxel_size(), lights, aspect, count);
+    if (!inside.empty()) return inside;
+  }
+  if (choice.region) {
+    std::vector<Camera> inside = inside_views(rays, region_space(regions, *choice.region), regions.voxel_size(), lights, aspect, count);
     if (!inside.empty()) return inside;
   }
   return outside_views(rays.scene(), aspect, count);
@@ -305,8 +385,8 @@ Camera default_view(const RayScene& rays, const Lighting& lights, float aspect) 
 
 int default_view_room(const RayScene& rays, const Lighting& lights) {
   const Regions regions(rays);
-  const Region* region = choose_region(rays, regions, lights);
-  return region ? region->id : -1;
+  const Choice choice = choose(rays, regions, lights);
+  return choice.room ? choice.room->region : choice.region ? choice.region->id : -1;
 }
 
 } // namespace hilight

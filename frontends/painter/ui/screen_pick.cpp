@@ -2,7 +2,7 @@
 
 namespace hilight::painter::ui {
 
-std::optional<SurfacePick> pick_front_face(const RayScene& rays, const Ray& ray, const Visibility& visible) {
+std::optional<Hit> front_hit(const RayScene& rays, const Ray& ray, const Visibility& visible) {
   Vec3 origin = ray.origin;
   float skip = 4.f * rays.epsilon();
   // A handful of culled layers at most (a wall, a ceiling): then give up;
@@ -12,11 +12,16 @@ std::optional<SurfacePick> pick_front_face(const RayScene& rays, const Ray& ray,
     Hit hit = rays.intersect(origin, ray.direction);
     if (!hit.valid()) return std::nullopt;
     Vec3 position = rays.hit_position(hit);
-    if (glm::dot(rays.face_normals()[hit.triangle], ray.direction) < 0.f && visible.point(hit.triangle, position))
-      return SurfacePick{position, rays.hit_normal(hit)};
+    if (glm::dot(rays.face_normals()[hit.triangle], ray.direction) < 0.f && visible.point(hit.triangle, position)) return hit;
     origin = position + skip * ray.direction;
   }
   return std::nullopt;
+}
+
+std::optional<SurfacePick> pick_front_face(const RayScene& rays, const Ray& ray, const Visibility& visible) {
+  const std::optional<Hit> hit = front_hit(rays, ray, visible);
+  if (!hit) return std::nullopt;
+  return SurfacePick{rays.hit_position(*hit), rays.hit_normal(*hit)};
 }
 
 } // namespace hilight::painter::ui

@@ -10,9 +10,12 @@
 
 namespace hilight::painter::ui {
 
+/// The first front-facing triangle along `ray` that `visible` shows (its
+/// `t` counts from where the last culled layer was passed), nullopt on a miss.
+std::optional<Hit> front_hit(const RayScene& rays, const Ray& ray, const Visibility& visible);
+
 /// First front-facing surface along `ray` that `visible` shows (the section
 /// and cutaway hide surfaces from picking as from the eye), nullopt on a miss.
 std::optional<SurfacePick> pick_front_face(const RayScene& rays, const Ray& ray, const Visibility& visible);
-
 
 } // namespace hilight::painter::ui
