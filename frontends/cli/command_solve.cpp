@@ -286,11 +286,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   if (!initial_path.empty()) initial = lights_from_file(initial_path, units, *scene);
   if (!hints_path.empty()) s.spot_hints = read_hints(&scene->frame);
   s.placement = rules_to_local(std::move(s.placement), scene->frame);
-  // Rooms by name (an IFC's IfcSpaces), and a building's lights on its ceiling unless told otherwise.
-  s.placement.resolve_room_names(scene_rooms(scene_path, s.placement, *rays));
-  const bool storeys = ifc_has_storeys(scene_path);
-  if (!s.placement.regions.empty()) refuse_regions_not_rooms(s.placement, *rays, building_kind(*scene, storeys));
-  const std::string building_note = mode == "solve" && s.spot_hints.empty() ? apply_building_default(s.placement, *scene, storeys) : "";
+  // Rooms by name (an IFC's IfcSpaces), no region that is not a room, and a building's lights on its
+  // ceiling unless told otherwise: the painter's path too (settle_placement).
+  const PlacementScene placement_scene{scene, ifc_has_storeys(scene_path),
+                                       [&](const RayScene& r) { return scene_rooms(scene_path, r); }, nullptr};
+  const std::string building_note = settle_placement(s.placement, placement_scene, mode == "solve" && s.spot_hints.empty());
   // --area-light's size is in the scene's unit (a file's opening is in metres already).
   if (s.luminaire && is_area(s.luminaire->type) && !s.luminaire->profile) s.luminaire->size *= float(scene->frame.scale);
   stage.emplace("reading the target");

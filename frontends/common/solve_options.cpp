@@ -2,6 +2,8 @@
 
 #include "hilight/light_bounds.hpp"
 #include "hilight/light_cache_store.hpp"
+#include "hilight/ray_scene.hpp"
+#include "hilight/regions.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -103,9 +105,8 @@ std::string building_kind(const Scene& scene, bool storeys) {
 
 bool offered_as_room(const Region& region) { return !region.at_border && region.box.extent().y >= 1.8f; }
 
-void refuse_regions_not_rooms(const PlacementRules& rules, const RayScene& rays, const std::string& building) {
-  if (building.empty() || rules.regions.empty()) return;
-  const Regions regions(rays);
+void refuse_regions_not_rooms(const PlacementRules& rules, const Regions& regions, const std::string& building) {
+  if (building.empty()) return;
   for (int r : rules.regions)
     if (size_t(r) < regions.list().size() && !offered_as_room(regions.list()[size_t(r)]))
       throw InputError("--place region:" + std::to_string(r) + ": region " + std::to_string(r) + " is not a room of " + building +
@@ -119,6 +120,22 @@ std::string apply_building_default(PlacementRules& rules, const Scene& scene, bo
   if (why.empty()) return "";
   rules.add("ceiling");
   return "lights on the ceiling (" + why + "; --place anywhere lifts it)";
+}
+
+std::string settle_placement(PlacementRules& rules, const PlacementScene& where, bool building_default) {
+  // The ray scene only when a rule needs it (RayScene::shared finds the caller's if it holds one).
+  std::shared_ptr<const RayScene> rays;
+  auto ray_scene = [&]() -> const RayScene& {
+    if (!rays) rays = RayScene::shared(where.scene);
+    return *rays;
+  };
+  if (!rules.region_names.empty() || !rules.not_region_names.empty())
+    rules.resolve_room_names(where.named_rooms ? where.named_rooms(ray_scene()) : std::vector<NamedRoom>{});
+  if (const std::string building = rules.regions.empty() ? "" : building_kind(*where.scene, where.storeys); !building.empty()) {
+    const std::shared_ptr<const Regions> regions = where.regions ? where.regions : std::make_shared<const Regions>(ray_scene());
+    refuse_regions_not_rooms(rules, *regions, building);
+  }
+  return building_default ? apply_building_default(rules, *where.scene, where.storeys) : "";
 }
 
 SolveSpec SolveOptions::to_spec(const Registry& registry) const {

@@ -6,6 +6,8 @@
 #include "hilight/solve/solve_session.hpp"
 
 #include <CLI/CLI.hpp>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -58,7 +60,7 @@ bool offered_as_room(const Region& region);
 /// naming a region not offered as a room (the outside, the void under a
 /// slab) is an InputError: such regions are not offered (issue 34 §5).
 /// `not-region:K` of one stays allowed (it only excludes).
-void refuse_regions_not_rooms(const PlacementRules& rules, const RayScene& rays, const std::string& building);
+void refuse_regions_not_rooms(const PlacementRules& rules, const Regions& regions, const std::string& building);
 
 /// The building default (issue 34 §7): in a building — an IFC with storeys
 /// (`storeys`), or a scene closed on every side (an interior) — lights hang
@@ -66,5 +68,25 @@ void refuse_regions_not_rooms(const PlacementRules& rules, const RayScene& rays,
 /// Products and stages (open scenes) keep free placement. Adds the rule to
 /// `rules` and returns what the summary says; "" when it does not apply.
 std::string apply_building_default(PlacementRules& rules, const Scene& scene, bool storeys);
+
+/// A loaded scene as --place rules meet it (settle_placement).
+struct PlacementScene {
+  std::shared_ptr<const Scene> scene;
+  bool storeys = false;  ///< an IFC with storeys (ifc_has_storeys)
+  /// Its rooms by name (ifc_spaces.hpp scene_rooms); asked only when a rule
+  /// names one. Unset: the scene names none.
+  std::function<std::vector<NamedRoom>(const RayScene&)> named_rooms;
+  /// Its regions as hilight info numbers them, when found already (else
+  /// found here when a region:K asks).
+  std::shared_ptr<const Regions> regions;
+};
+/// Parsed --place rules (in the scene's frame) as a solve takes them: room
+/// and storey names resolved, in a building a region:K that is not a room
+/// refused (InputError), and with `building_default` the building's ceiling
+/// rule added when no rule says where (apply_building_default; its note
+/// returned, "" when it does not apply). The one path of `hilight solve`,
+/// `hilight paint --place` and the painter's place action, so the same text
+/// gives the same rules in each (issue 34 §5, §7).
+std::string settle_placement(PlacementRules& rules, const PlacementScene& where, bool building_default);
 
 } // namespace hilight::cli

@@ -110,19 +110,24 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   if (!o.script.empty()) session = read_session(o.script);
   o.started = std::chrono::steady_clock::now();  // --timings: open_to_first_frame counts from here
   auto loaded = std::make_shared<const Scene>(load_scene(o.scene, {o.max_edge}));
-  // The rules as hilight solve takes them: in the file's coordinates, moved into the scene's frame; rooms
-  // and storeys by name (an IFC's IfcSpaces, else free space split at doors), a bad name refused here.
+  // The rules as hilight solve takes them (cli::settle_placement, as the place action does): in the file's
+  // coordinates, moved into the scene's frame; rooms and storeys by name (an IFC's IfcSpaces, else free
+  // space split at doors), a bad name or a region:K that is not a room refused here; a building's lights
+  // hang from the ceiling unless --place says where (not when --lights gives them: their places are the
+  // user's); the Placement panel says why, Anywhere lifts it.
   PlacementRules& rules = o.job.settings.placement;
   rules = rules_to_local(std::move(rules), loaded->frame);
   std::shared_ptr<const RayScene> rays;  // held: the painter's RayScene::shared finds it built
-  if (!rules.region_names.empty() || !rules.not_region_names.empty()) {
-    rays = RayScene::shared(loaded);
-    o.named_rooms = cli::scene_rooms(o.scene, *rays);
-    rules.resolve_room_names(*o.named_rooms);
-  }
-  // A building's lights hang from the ceiling unless --place says where, as in hilight solve (not when
-  // --lights gives them: their places are the user's); the Placement panel says why, Anywhere lifts it.
-  if (o.lights.empty()) o.building_note = cli::apply_building_default(rules, *loaded, cli::ifc_has_storeys(o.scene));
+  if (!rules.regions.empty()) rays = RayScene::shared(loaded);
+  o.ifc_storeys = cli::ifc_has_storeys(o.scene);
+  const cli::PlacementScene placement_scene{loaded, o.ifc_storeys,
+                                            [&](const RayScene& r) {
+                                              rays = RayScene::shared(loaded);
+                                              o.named_rooms = cli::scene_rooms(o.scene, r);
+                                              return *o.named_rooms;
+                                            },
+                                            nullptr};
+  o.building_note = cli::settle_placement(rules, placement_scene, o.lights.empty());
   if (!o.building_note.empty()) std::fprintf(stderr, "hilight: %s\n", o.building_note.c_str());
   PainterApp painter(o, registry, loaded, std::move(session));
   return painter.run();

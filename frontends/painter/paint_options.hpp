@@ -32,6 +32,9 @@ struct PaintOptions {
   /// with storeys; --place anywhere lifts it)", solve_options.hpp); "" when
   /// it did not apply. The Placement panel says it while the rules are these.
   std::string building_note;
+  /// The scene is an IFC with storeys (a building: cli::ifc_has_storeys), for
+  /// the place action's rules as hilight solve takes them.
+  bool ifc_storeys = false;
   /// The scene's named rooms, when the command line's rules named one (read once).
   std::optional<std::vector<NamedRoom>> named_rooms;
   /// When `hilight paint` began loading (--timings: open_to_first_frame).

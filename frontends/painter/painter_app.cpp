@@ -54,6 +54,8 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
   std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "%s", m_options.job.settings.placement.describe().c_str());
   m_solve_panel.named_rooms = m_options.named_rooms;
+  m_solve_panel.building_note = m_options.building_note;
+  m_solve_panel.noted_rules = m_options.job.settings.placement.describe();
   if (!m_options.no_record || !m_options.record.empty()) {
     const bool interactive = !m_options.exit_after_script;
     if (!m_options.record.empty()) m_record_path = m_options.record;

@@ -223,30 +223,40 @@ void PainterApp::panel_solve() {
 void PainterApp::panel_placement() {
   if (!ImGui::CollapsingHeader("Placement")) return;
   const std::string now = m_job->options().settings.placement.describe();
+  // Each button is a recorded place action, taken as hilight solve takes the same --place text;
+  // one refused (a bad rule, a region that is not a room) says why here.
+  auto apply = [this](const std::string& text) { m_solve_panel.place_error = perform(PlaceAction{text}) ? "" : m_status_panel.line; };
   ImGui::SetNextItemWidth(300);
   ImGui::InputTextWithHint("##place", "ceiling:0.2 height:1:2.5 count:1:4", m_solve_panel.place_text, sizeof(m_solve_panel.place_text));
   tip("Where the next solves may put lights, as hilight solve --place: ceiling[:OFFSET], height:MIN:MAX, "
       "box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX, region:K or region:NAME (a room's or storey's name, "
-      "as hilight info lists them) (space-separated; empty: anywhere free)");
+      "as hilight info lists them), anywhere (space-separated; in a building, lights hang from the ceiling "
+      "unless a rule says where, as in hilight solve)");
   ImGui::BeginDisabled(m_job->busy());
   ImGui::SameLine();
-  if (ImGui::Button("Apply")) perform(PlaceAction{std::string(m_solve_panel.place_text)});
+  if (ImGui::Button("Apply")) apply(m_solve_panel.place_text);
   ImGui::SameLine();
   if (ImGui::Button("On the ceiling")) {
     std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "ceiling:0.2");
-    perform(PlaceAction{std::string(m_solve_panel.place_text)});
+    apply(m_solve_panel.place_text);
   }
   tip("Ceiling lights only: mounted 0.2 below the ceiling above each light");
   ImGui::SameLine();
   if (ImGui::Button("Anywhere")) {
-    m_solve_panel.place_text[0] = '\0';
-    perform(PlaceAction{std::string()});
+    std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "anywhere");
+    apply(m_solve_panel.place_text);
   }
+  tip("Anywhere free, a building's ceiling default lifted (--place anywhere)");
   ImGui::EndDisabled();
   ImGui::TextDisabled("lights may stand: %s", now.empty() ? "anywhere free" : now.c_str());
   // Why they hang from the ceiling when nobody said so (issue 34 §7), while the rules are still the default's.
-  if (!m_options.building_note.empty() && now == m_options.job.settings.placement.describe())
-    ImGui::TextWrapped("A building: %s. The Anywhere button lifts it too.", m_options.building_note.c_str());
+  if (!m_solve_panel.building_note.empty() && now == m_solve_panel.noted_rules)
+    ImGui::TextWrapped("A building: %s. The Anywhere button lifts it too.", m_solve_panel.building_note.c_str());
+  if (!m_solve_panel.place_error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.35f, 1.f));
+    ImGui::TextWrapped("%s", m_solve_panel.place_error.c_str());
+    ImGui::PopStyleColor();
+  }
 }
 
 void PainterApp::panel_lights() {

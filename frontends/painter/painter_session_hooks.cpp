@@ -3,6 +3,7 @@
 #include "hilight/error.hpp"
 #include "ifc_spaces.hpp"
 #include "painter_app.hpp"
+#include "solve_options.hpp"
 #include "ui/screen_pick.hpp"
 #include "ui/screenshot.hpp"
 
@@ -34,10 +35,19 @@ PlayerHooks PainterApp::make_hooks() {
     m_display.colours_dirty = true;
   };
   hooks.log = [this](const std::string& line) { status(line); };
-  hooks.named_rooms = [this] {
-    // Read once, as hilight solve reads them (ifc_spaces.hpp); the command line's rules may have already.
-    if (!m_solve_panel.named_rooms) m_solve_panel.named_rooms = cli::scene_rooms(m_options.scene, *m_rays);
-    return *m_solve_panel.named_rooms;
+  hooks.settle_placement = [this](PlacementRules& rules, std::shared_ptr<const Regions> regions) {
+    // hilight solve's own path, so the same text gives the same rules.
+    const cli::PlacementScene scene{m_scene, m_options.ifc_storeys,
+                                    [this](const RayScene& rays) {
+                                      // Read once, as hilight solve reads them (ifc_spaces.hpp); the command line's rules may have already.
+                                      if (!m_solve_panel.named_rooms) m_solve_panel.named_rooms = cli::scene_rooms(m_options.scene, rays);
+                                      return *m_solve_panel.named_rooms;
+                                    },
+                                    std::move(regions)};
+    const std::string note = cli::settle_placement(rules, scene, true);
+    m_solve_panel.building_note = note;
+    m_solve_panel.noted_rules = rules.describe();
+    return note;
   };
   return hooks;
 }

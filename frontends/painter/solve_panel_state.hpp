@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace hilight::painter {
@@ -14,6 +15,12 @@ struct SolvePanelState {
   char place_text[256] = {};  ///< the placement rules being edited
   /// The scene's named rooms (region:NAME), read on the first rule that names one.
   std::optional<std::vector<NamedRoom>> named_rooms;
+  /// The building default's note (cli::apply_building_default) for the
+  /// rules `noted_rules` describes: shown while the job's rules are those.
+  std::string building_note, noted_rules;
+  /// Why the last Apply was refused (a bad rule, a region that is not a
+  /// room); "" after one that took.
+  std::string place_error;
   std::optional<std::chrono::steady_clock::time_point> stroke_released;
   bool fine_tune_after_stroke = false;
   bool fine_tune_queued = false;  ///< a stroke ended while a job ran

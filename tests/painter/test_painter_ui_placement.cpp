@@ -62,7 +62,7 @@ TEST_CASE("painter ui: the placement panel's rules, recorded as a place action, 
       {{"type", "place"}, {"rules", "ceiling:0.15 count:1:1"}},
       {{"type", "solve"}},
       {{"type", "save_lights"}, {"path", (dir / "ceiling.json").string()}},
-      {{"type", "place"}, {"rules", ""}},
+      {{"type", "place"}, {"rules", "anywhere"}},
       {{"type", "solve"}},
       {{"type", "save_lights"}, {"path", (dir / "anywhere.json").string()}}};
   test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
@@ -73,7 +73,7 @@ TEST_CASE("painter ui: the placement panel's rules, recorded as a place action, 
   const Lighting ceiling = read_lights_json(dir / "ceiling.json");
   REQUIRE(ceiling.size() == 1);  // count:1:1 for two patches
   CHECK(ceiling[0].position.y == Approx(2.85f).margin(1e-3));
-  // Cleared: the lights may stand anywhere again (two patches, two lights near them).
+  // Anywhere: the lights may stand anywhere free again (two patches, two lights near them).
   const Lighting anywhere = read_lights_json(dir / "anywhere.json");
   REQUIRE_FALSE(anywhere.empty());
   // Not pinned to the rule's mount height (2.85) any more: the solve may put

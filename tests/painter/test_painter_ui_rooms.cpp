@@ -3,6 +3,9 @@
 // as `hilight solve` does (frontends/common/ifc_spaces.hpp), hangs the lights
 // from that room's ceiling (the building default, said on stderr and in the
 // Placement panel), and a name no room or storey has is one line, exit 2.
+// A recorded `place` action takes the same text as hilight solve does
+// (cli::settle_placement): region:Wohnen adds the ceiling rule, and a region
+// that is not a room (the outside) is refused, naming the action.
 #include "../support.hpp"
 #include "core/session_player.hpp"
 #include "hilight/fixtures/real_model_scenes.hpp"
@@ -10,6 +13,7 @@
 #include "hilight/io/scene_io.hpp"
 #include "hilight/named_room.hpp"
 #include "hilight/ray_scene.hpp"
+#include "hilight/regions.hpp"
 
 #ifdef HILIGHT_HAVE_IFCPP
 #include "../frontends/common/ifc_spaces.hpp"
@@ -100,5 +104,74 @@ TEST_CASE("painter ui: in the FZK house --place region:Wohnen hangs the lights f
   CHECK(bad_action.exit_code == 2);
   CHECK(test::line_count(bad_action.err) == 1);
   CHECK_THAT(bad_action.err, Catch::Contains("action 0") && Catch::Contains("region:Dachboden"));
+}
+
+TEST_CASE("painter ui: in the FZK house a place action's region:Wohnen hangs the lights from its ceiling as hilight solve does, "
+          "and a region that is not a room is refused",
+          "[painter-ui][placement][rooms]") {
+  if (test::skip_without_display()) return;
+  if (!fs::exists(fzk_house())) {
+    WARN("SKIPPED: " << fzk_house() << " not found (apt install assimp-testmodels)");
+    return;
+  }
+  // No CliOwnPlacement: the command line says --place anywhere, so only the place action can add the ceiling.
+  const fs::path dir = test::output_dir("painter_ui_place_action_rooms");
+  const auto house = std::make_shared<const Scene>(load_scene(fzk_house()));
+  const RayScene rays(*house);
+  const auto rooms = cli::read_ifc_rooms(fzk_house(), *house).rooms;
+  const auto living_found = rooms_named(rooms, "Wohnen");
+  REQUIRE(living_found.size() == 1);
+  const NamedRoom& living = *living_found.front();
+  const Vec3 middle = living.box.center();
+  const Hit floor_hit = rays.intersect(Vec3(middle.x, living.y0 + 1.f, middle.z), Vec3(0.f, -1.f, 0.f));
+  REQUIRE(floor_hit.valid());
+  const Vec3 floor = rays.hit_position(floor_hit);
+
+  const nlohmann::json actions = {
+      {{"type", "camera"}, {"eye", {floor.x, floor.y + 12.f, floor.z + 5.f}}, {"target", {floor.x, floor.y, floor.z}}, {"fov", 40}},
+      {{"type", "brush"}, {"radius", 0.8}, {"colour", 1.0}, {"brightness", 0.6}, {"hardness", 0.7}},
+      {{"type", "stroke"}, {"world", {{floor.x, floor.y, floor.z}}}},
+      {{"type", "place"}, {"rules", "region:Wohnen"}},
+      {{"type", "solve"}},
+      {{"type", "save_lights"}, {"path", (dir / "lights.json").string()}}};
+  test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+  const test::RunResult run = test::run_hilight({"paint", fzk_house().string(), "--size", "320x240", "--bounces", "0", "--samples", "800",
+                                                 "--no-cache", "--no-record", "--exit", "--place", "anywhere", "--script",
+                                                 (dir / "session.json").string()});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.err.find("lights may stand: region:Wohnen; lights on the ceiling (an IFC building with storeys; --place anywhere lifts it)") !=
+        std::string::npos);
+  const Lighting lights = read_lights_json(dir / "lights.json");
+  REQUIRE_FALSE(lights.empty());
+  for (const auto& l : lights) {
+    INFO("light at " << l.position.x << ", " << l.position.y << ", " << l.position.z);
+    CHECK(living.contains(l.position));
+    CHECK(l.position.y == Approx(2.3f).margin(0.01f));  // 0.2 under the living room's ceiling (2.5 m), as hilight solve puts it
+  }
+
+  // The outside (a region at the light bounds' border) is no room: hilight solve refuses
+  // --place region:K of it, and so does the place action, naming it (one line, exit 2).
+  const Regions regions(rays);
+  int outside = -1;
+  for (size_t i = 0; i < regions.list().size() && outside < 0; ++i)
+    if (regions.list()[i].at_border) outside = int(i);
+  REQUIRE(outside >= 0);
+  const std::string rule = "region:" + std::to_string(outside);
+  test::write_text(dir / "bad.json", nlohmann::json{{"actions", {{{"type", "place"}, {"rules", rule}}}}}.dump());
+  const test::RunResult bad = test::run_hilight({"paint", fzk_house().string(), "--size", "320x240", "--no-record", "--exit", "--place",
+                                                 "anywhere", "--script", (dir / "bad.json").string()});
+  INFO(bad.err);
+  CHECK(bad.exit_code == 2);
+  CHECK(test::line_count(bad.err) == 1);
+  CHECK_THAT(bad.err, Catch::Contains("action 0 (place)") && Catch::Contains(rule + ": region " + std::to_string(outside) + " is not a room"));
+  // The same on paint's command line, before any window opens.
+  const test::RunResult bad_flag =
+      test::run_hilight({"paint", fzk_house().string(), "--place", rule, "--exit", "--screenshot", (dir / "never.png").string()});
+  INFO(bad_flag.err);
+  CHECK(bad_flag.exit_code == 2);
+  CHECK(test::line_count(bad_flag.err) == 1);
+  CHECK(bad_flag.err.find("--place " + rule + ": region " + std::to_string(outside) + " is not a room") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "never.png"));
 }
 #endif

@@ -397,21 +397,24 @@ void SessionPlayer::run(const CutAction& a, const Action&, const std::string& wh
 }
 
 void SessionPlayer::run(const PlaceAction& a, const Action&, const std::string& where) {
-  // Space-separated --place rules ("" clears them); a bad rule is an input
-  // error naming the action, and the rules stay as they were.
+  // Space-separated --place rules, taken as hilight solve takes the same text
+  // ("": none given, so a building's default); a bad rule is an input error
+  // naming the action, and the rules stay as they were.
   if (m_job.busy()) finish_solve(where);
   PlacementRules rules;
+  std::string building_note;
   try {
     for (const auto& rule : split_place_rules(a.rules)) rules.add(rule);
-    // Rooms and storeys by name, as hilight solve resolves them.
-    if (!rules.region_names.empty() || !rules.not_region_names.empty())
-      rules.resolve_room_names(m_hooks.named_rooms ? m_hooks.named_rooms() : std::vector<NamedRoom>{});
+    if (!rules.regions.empty()) regions();  // found once, shared with the focus and the light space
+    if (m_hooks.settle_placement) building_note = m_hooks.settle_placement(rules, m_regions);
+    else if (!rules.region_names.empty() || !rules.not_region_names.empty()) rules.resolve_room_names({});  // throws, naming it
   } catch (const InputError& e) {
     throw InputError(where + ": " + e.what());
   }
   m_place_rules = std::move(rules);
   apply_placement();
-  log(where + ": lights may stand: " + (a.rules.empty() ? "anywhere free" : a.rules) +
+  const std::string given = a.rules.empty() && building_note.empty() ? "anywhere free" : a.rules;
+  log(where + ": lights may stand: " + given + (given.empty() || building_note.empty() ? "" : "; ") + building_note +
       (m_focus.empty() ? "" : " (and in the focused rooms)"));
 }
 

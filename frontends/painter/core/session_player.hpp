@@ -70,10 +70,14 @@ struct PlayerHooks {
   std::function<void(const Bounds&)> frame;
   /// One line per finished action or solve result, for a log panel / stderr.
   std::function<void(const std::string&)> log;
-  /// The rooms a `place` action's region:NAME picks from, as `hilight solve`
-  /// reads them (an IFC's IfcSpaces and storeys, else free space split at
-  /// doors: frontends/common/ifc_spaces.hpp); unset: the scene names none.
-  std::function<std::vector<NamedRoom>()> named_rooms;
+  /// A `place` action's parsed rules as `hilight solve` takes the same
+  /// --place text (frontends/common/solve_options.hpp settle_placement): room
+  /// and storey names resolved, a region:K that is not a building's room
+  /// refused (InputError), a building's ceiling rule added when no rule says
+  /// where; returns that default's note ("" when it does not apply).
+  /// `regions`: the player's, when found. Unset: the rules as parsed, and the
+  /// scene names no rooms.
+  std::function<std::string(PlacementRules&, std::shared_ptr<const Regions> regions)> settle_placement;
 };
 
 /// A `place` action's text as --place rules: split at spaces, except that a
