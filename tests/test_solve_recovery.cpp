@@ -179,8 +179,10 @@ double diagonal_of(const fs::path& scene) {
   return json::parse(r.out).at("diagonal").get<double>();
 }
 
-void render(const fs::path& scene, const fs::path& lights, const fs::path& out) {
-  auto r = test::run_hilight({"render", scene.string(), "--lights", lights.string(), "-o", out.string()});
+void render(const fs::path& scene, const fs::path& lights, const fs::path& out, const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args = {"render", scene.string(), "--lights", lights.string(), "-o", out.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  auto r = test::run_hilight(args);
   INFO("render " << scene << " " << lights << ": " << r.err);
   REQUIRE(r.exit_code == 0);
   REQUIRE(fs::exists(out));
@@ -285,14 +287,16 @@ struct Case {
   Lighting truth;
   double diagonal = 0;
 };
-Case make_case(const fs::path& dir, const fs::path& scene, const std::string& lights_text) {
+/// `render_extra`: options of the target's render (e.g. its bounces).
+Case make_case(const fs::path& dir, const fs::path& scene, const std::string& lights_text,
+               const std::vector<std::string>& render_extra = {}) {
   Case c;
   c.scene = scene;
   c.lights = dir / "true-lights.json";
   test::write_text(c.lights, lights_text);
   c.truth = hilight::read_lights_json(c.lights);
   c.target = dir / "target.ply";
-  render(c.scene, c.lights, c.target);
+  render(c.scene, c.lights, c.target, render_extra);
   c.diagonal = diagonal_of(c.scene);
   return c;
 }
@@ -420,27 +424,30 @@ TEST_CASE("a solve with --renderer ism-vulkan recovers the open scene's 2 lights
 TEST_CASE("a solve with --renderer ism-vulkan and a spot hint recovers the spot room's lights", "[solve][recovery][ism][spot]") {
   if (test::skip_without_renderer("ism-vulkan")) return;
   auto dir = test::output_dir("solve_recovery_ism_spot");
-  Case c = make_case(dir, spot_room_scene().write(dir, "spot-room"), spot_room_lights());
+  // Direct light: the spot's cone and the point lamp as ism-vulkan draws
+  // them. Its bounce in a solve is the open scene's case above (and CIE 171
+  // in test_cie171_renderers.cpp): in this closed room its VPLs miss ~10% of
+  // the bounce at the creases (docs/ism-vulkan.md), which left D̄ 3.7% on the
+  // samples, so every count edit was tried and refused, two minutes on lavapipe.
+  const std::vector<std::string> direct = {"--bounces", "0"};
+  Case c = make_case(dir, spot_room_scene().write(dir, "spot-room"), spot_room_lights(), direct);
   const Light& spot = c.truth[1];
   Lighting hints = {Light::spot(spot.position + Vec3(0.1f, -0.1f, 0.1f), spot.direction, spot.cutoff_deg + 3.f, Rgb(1.f),
                                 spot.falloff_deg)};
   hilight::write_lights_json(dir / "hints.json", hints);
-  // No validation layer here (the open scene's solve above runs every Vulkan
-  // call under it), and half the default samples: on lavapipe the
-  // refinement's evaluations are most of this solve's two minutes.
+  // No validation layer here (the open scene's solve above runs every Vulkan call under it).
   Solved s = solve(c.scene, c.target, dir, "found",
-                   {"--renderer", "ism-vulkan", "--samples", "1500", "--spot-hints", (dir / "hints.json").string()});
-  const double embree = embree_dbar(c, s.lights_path, dir);
+                   {"--renderer", "ism-vulkan", "--bounces", "0", "--spot-hints", (dir / "hints.json").string()});
+  const fs::path rendered = dir / "found-by-embree.ply";
+  render(c.scene, s.lights_path, rendered, direct);
+  const double embree = test::dbar(read_points(rendered).colour, read_points(c.target).colour);
   WARN("ism-vulkan spot solve: " << s.lights.size() << " lights in " << s.seconds << " s, D̄ " << s.report.at("dbar").get<double>()
                                  << " (ism-vulkan), " << embree << " (Embree rendering of the result)\nfound:\n"
                                  << describe(s.lights));
   CHECK(count_of(s.lights, LightType::Spot) == 1);
   CHECK(count_of(s.lights, LightType::Point) == 1);
-  // Stated tolerance 3%, not the open scene's 2%: in this closed room the
-  // first bounce is a third of the light, and ism-vulkan's VPLs miss ~10% of
-  // it at the room's creases (docs/ism-vulkan.md), so the intensities the
-  // solve fits come out a little high under Embree (measured 2.1-2.2%).
-  CHECK(embree <= 0.03);
+  CHECK(embree <= 0.02);
+  CHECK(mean_position_error(c.truth, s.lights) / c.diagonal <= kPositionTolerance);
 }
 
 // ---------------------------------------------------------------------------
