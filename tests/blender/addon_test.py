@@ -387,6 +387,18 @@ def load_exr(path):
     return pixels.reshape(h, w, 4)
 
 
+def write_downlight_ies(path, multiplier, ballast, ballast_lamp):
+    """An LM-63 type C downlight, rotationally symmetric: 1000·cos^1.5 γ cd
+    (times the factors) every 5° to the horizontal, where it ends at 0."""
+    angles = list(range(0, 95, 5))
+    candela = [1000.0 * max(0.0, math.cos(math.radians(a))) ** 1.5 for a in angles]
+    with open(path, "w") as f:
+        f.write("IESNA:LM-63-2002\n[TEST] hilight add-on test downlight\nTILT=NONE\n")
+        f.write(f"1 -1 {multiplier} {len(angles)} 1 1 2 0 0 0\n{ballast} {ballast_lamp} 20\n")
+        f.write(" ".join(str(a) for a in angles) + "\n0\n")
+        f.write(" ".join(f"{c:.4f}" for c in candela) + "\n")
+
+
 def case_cycles():
     """The add-on's lights, one of each kind Blender draws, in Cycles against
     hilight's render of the same lights file: the image's mean radiance."""
@@ -402,17 +414,24 @@ def case_cycles():
         {"type": "rectangle", "position": [rng.uniform(2.5, 3.0), 2.45, rng.uniform(2.0, 2.4)], "direction": [0, -1, 0],
          "up": [1, 0, 0], "size": [0.8, 0.4], "intensity": [rng.uniform(2.0, 4.0) for _ in range(3)]},
     ]
+    # A luminaire: a downlight's IES profile whose candela multiplier and
+    # ballast factors Cycles folds into its IES node (ies_level.py).
+    profile = os.path.join(args.work, "downlight.ies")
+    write_downlight_ies(profile, multiplier=2.0, ballast=0.9, ballast_lamp=0.95)
+    lights.append({"type": "luminaire", "profile": profile, "position": [rng.uniform(1.6, 2.4), 2.3, rng.uniform(1.2, 1.8)],
+                   "direction": [0.0, -1.0, 0.0], "intensity": [rng.uniform(2.0, 4.0) for _ in range(3)]})
     lights_path = os.path.join(args.work, "lights.json")
     with open(lights_path, "w") as f:
         json.dump({"lights": lights}, f)
     made = hb.lights.bring_in(bpy.context, lights)
-    check([o.data.type for o in made] == ["POINT", "SPOT", "AREA"], "point, spot and rectangle come in as Blender point, spot and area lights")
+    check([o.data.type for o in made] == ["POINT", "SPOT", "AREA", "POINT"],
+          "point, spot, rectangle and luminaire come in as Blender point, spot, area and point lights")
     scene_path = os.path.join(args.work, "scene.obj")
     hb.scene_io.write_scene(bpy.context, scene_path)
     camera = ",".join("%g" % v for v in (*CAMERA[0], *CAMERA[1], CAMERA[2]))
     # Direct light of each light alone (each conversion, little noise), then
     # all of them with every bounce.
-    runs = [(f"{o.data.type.lower()}_0", [i], "0", 0, 16, 0.01) for i, o in enumerate(made)]
+    runs = [(f"{light['type']}_0", [i], "0", 0, 16, 0.01) for i, light in enumerate(lights)]
     runs.append(("all", [0, 1, 2], "all", 128, 64, 0.03))
     for name, chosen, bounces, cycles_bounces, samples, tolerance in runs:
         subset = os.path.join(args.work, f"{name}.json")

@@ -11,7 +11,7 @@ import math
 import bpy
 from mathutils import Matrix, Vector
 
-from . import compat, units
+from . import compat, ies_level, units
 
 COLLECTION = "hilight lights"
 
@@ -80,11 +80,25 @@ def _divide_cos(data):
 
 
 def _ies_node(data, profile):
+    """The profile's shape on the emission: Cycles' IES Fac over its peak
+    (ies_level.py), so the light's Power sets the peak as hilight's
+    intensity does. A profile Cycles cannot read (EULUMDAT) gets no node:
+    the light then shines its peak every way (its custom property keeps the
+    profile for hilight)."""
+    try:
+        peak = ies_level.cycles_peak(bpy.path.abspath(profile))
+    except (OSError, ies_level.NotIes) as e:
+        print(f"hilight: {e}: the luminaire comes in as a point light of its peak intensity")
+        return
     tree, emission = _emission(data)
     ies = tree.nodes.new("ShaderNodeTexIES")
     ies.mode = "EXTERNAL"
     ies.filepath = profile
-    tree.links.new(ies.outputs["Fac"], emission.inputs["Strength"])
+    level = tree.nodes.new("ShaderNodeMath")
+    level.operation = "MULTIPLY"
+    level.inputs[1].default_value = 1.0 / peak
+    tree.links.new(ies.outputs["Fac"], level.inputs[0])
+    tree.links.new(level.outputs["Value"], emission.inputs["Strength"])
 
 
 def make_light(light, name, scale=1.0):
