@@ -159,8 +159,8 @@ TEST_CASE("moves: the plans are data, decided from the settings", "[moves]") {
     return out;
   };
   SolveSettings s;
-  CHECK(names(point_plan(s)) == std::vector<std::string>{"seeding and cuts", "reference polish", "add missing lights", "merge pairs",
-                                                         "split lamps", "residual polish"});
+  CHECK(names(point_plan(s)) == std::vector<std::string>{"seeding and cuts", "reference polish", "add missing lights",
+                                                         "add a missing spot", "merge pairs", "split lamps", "residual polish"});
   CHECK(names(spot_plan(s, 0.1)).front() == "spots");
   CHECK(spot_plan(s, 0.1).stop_when_empty);
   CHECK(names(fine_tune_plan(s)) == std::vector<std::string>{"reference polish"});

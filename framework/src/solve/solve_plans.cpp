@@ -24,6 +24,7 @@ Plan point_plan(const SolveSettings&) {
   plan.steps.push_back({seed_and_cut_move(), ""});  // times its own parts: seeding, hierarchy, refinement
   plan.steps.push_back({reference_polish_move(false, 3), "reference polish"});
   plan.steps.push_back({add_missing_move(), "reference polish"});
+  plan.steps.push_back({add_missing_spot_move(), "spots"});
   append_count_edits(plan);
   return plan;
 }

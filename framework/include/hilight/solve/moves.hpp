@@ -18,6 +18,9 @@ std::shared_ptr<Move> seed_and_cut_move();
 std::shared_ptr<Move> reference_polish_move(bool keep_count, int rounds);
 /// Eq. 9 upward: a light more where the fit is worst, while it pays.
 std::shared_ptr<Move> add_missing_move();
+/// Eq. 9 upward with spots: spots screened from what the lights leave
+/// unexplained, joined and polished, kept while they pay (a downlight among lamps).
+std::shared_ptr<Move> add_missing_spot_move();
 /// Eq. 9 backward: the nearest two point lights merged (eq. 7), while one fewer will do.
 std::shared_ptr<Move> merge_pairs_move();
 /// The inverse of a merge: the light that owns the worst-explained samples
