@@ -16,6 +16,8 @@ namespace hilight {
 
 namespace {
 
+constexpr double kMostlyUnexplained = 0.5;
+
 class AddMissingSpot final : public Move {
 public:
   std::string name() const override { return "add a missing spot"; }
@@ -33,6 +35,10 @@ std::string AddMissingSpot::premise_fails(const SolveContext& ctx, const Fit& fi
   // A fit this poor is missing a lamp (Judge::kSplitLampDbar); below it a
   // spot would fit the bounce's remaining error.
   if (!judge.split_lamps(fit.dbar)) return "the fit is good enough (D̄ at most kSplitLampDbar)";
+  // Lights that explain less than half the target are not missing one lamp:
+  // the light comes from elsewhere (a product lit from outside; the open
+  // space and the spot search look there).
+  if (fit.dbar > kMostlyUnexplained) return "the lights explain too little for one missing lamp (D̄ above 50%)";
   return {};
 }
 
