@@ -42,6 +42,30 @@ TEST_CASE("painter: a place action's text splits into rules and keeps a storey's
 }
 
 #ifdef HILIGHT_HAVE_IFCPP
+namespace {
+
+/// The FZK house's living room (its IfcSpace "Wohnen") and its floor at the
+/// middle: the first surface down from 1 m over it.
+struct LivingRoom {
+  std::shared_ptr<const RayScene> rays;  ///< the house's
+  NamedRoom room;
+  Vec3 floor;
+};
+
+LivingRoom living_room() {
+  const auto house = std::make_shared<const Scene>(load_scene(fzk_house()));
+  const auto rays = RayScene::shared(house);
+  const auto rooms = cli::read_ifc_rooms(fzk_house(), *house).rooms;
+  const auto living_found = rooms_named(rooms, "Wohnen");
+  REQUIRE(living_found.size() == 1);
+  const NamedRoom& living = *living_found.front();
+  const Vec3 middle = living.box.center();
+  const Hit floor_hit = rays->intersect(Vec3(middle.x, living.y0 + 1.f, middle.z), Vec3(0.f, -1.f, 0.f));
+  REQUIRE(floor_hit.valid());
+  return {rays, living, rays->hit_position(floor_hit)};
+}
+
+} // namespace
 TEST_CASE("painter ui: in the FZK house --place region:Wohnen hangs the lights from the living room's ceiling and a bad name is refused",
           "[painter-ui][placement][rooms]") {
   if (test::skip_without_display()) return;
@@ -51,17 +75,9 @@ TEST_CASE("painter ui: in the FZK house --place region:Wohnen hangs the lights f
   }
   test::CliOwnPlacement own;  // the building default under test
   const fs::path dir = test::output_dir("painter_ui_rooms");
-  const auto house = std::make_shared<const Scene>(load_scene(fzk_house()));
-  const RayScene rays(*house);
-  const auto rooms = cli::read_ifc_rooms(fzk_house(), *house).rooms;
-  const auto living_found = rooms_named(rooms, "Wohnen");
-  REQUIRE(living_found.size() == 1);
-  const NamedRoom& living = *living_found.front();
-  // The living room's floor at its middle: the first surface down from 1 m over it.
-  const Vec3 middle = living.box.center();
-  const Hit floor_hit = rays.intersect(Vec3(middle.x, living.y0 + 1.f, middle.z), Vec3(0.f, -1.f, 0.f));
-  REQUIRE(floor_hit.valid());
-  const Vec3 floor = rays.hit_position(floor_hit);
+  const LivingRoom home = living_room();
+  const NamedRoom& living = home.room;
+  const Vec3 floor = home.floor;
 
   const nlohmann::json actions = {
       {{"type", "camera"}, {"eye", {floor.x, floor.y + 12.f, floor.z + 5.f}}, {"target", {floor.x, floor.y, floor.z}}, {"fov", 40}},
@@ -116,16 +132,9 @@ TEST_CASE("painter ui: in the FZK house a place action's region:Wohnen hangs the
   }
   // No CliOwnPlacement: the command line says --place anywhere, so only the place action can add the ceiling.
   const fs::path dir = test::output_dir("painter_ui_place_action_rooms");
-  const auto house = std::make_shared<const Scene>(load_scene(fzk_house()));
-  const RayScene rays(*house);
-  const auto rooms = cli::read_ifc_rooms(fzk_house(), *house).rooms;
-  const auto living_found = rooms_named(rooms, "Wohnen");
-  REQUIRE(living_found.size() == 1);
-  const NamedRoom& living = *living_found.front();
-  const Vec3 middle = living.box.center();
-  const Hit floor_hit = rays.intersect(Vec3(middle.x, living.y0 + 1.f, middle.z), Vec3(0.f, -1.f, 0.f));
-  REQUIRE(floor_hit.valid());
-  const Vec3 floor = rays.hit_position(floor_hit);
+  const LivingRoom home = living_room();
+  const NamedRoom& living = home.room;
+  const Vec3 floor = home.floor;
 
   const nlohmann::json actions = {
       {{"type", "camera"}, {"eye", {floor.x, floor.y + 12.f, floor.z + 5.f}}, {"target", {floor.x, floor.y, floor.z}}, {"fov", 40}},
@@ -152,7 +161,7 @@ TEST_CASE("painter ui: in the FZK house a place action's region:Wohnen hangs the
 
   // The outside (a region at the light bounds' border) is no room: hilight solve refuses
   // --place region:K of it, and so does the place action, naming it (one line, exit 2).
-  const Regions regions(rays);
+  const Regions regions(*home.rays);
   int outside = -1;
   for (size_t i = 0; i < regions.list().size() && outside < 0; ++i)
     if (regions.list()[i].at_border) outside = int(i);
