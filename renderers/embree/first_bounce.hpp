@@ -50,6 +50,14 @@ public:
   /// `vertex_direct` — per scene vertex, two values: the side its normal
   /// points to, then the other — instead of shadow rays.
   Rgb interpolated_indirect_irradiance(size_t i, const float* vertex_direct, const HotSpots* hot, const Vec3& x) const;
+  /// The same for up to kLightBlock lights at once, each light's sum in the
+  /// same order (so the same floats): the hits are decoded once, not once a
+  /// light (issue 33). `vertex_direct` is laid out [vertex side][light], a
+  /// vertex side's lights `stride` floats apart, light 0 of the block first;
+  /// `hot[j]` is light j's patches (null: none). Writes out[0..lights).
+  static constexpr size_t kLightBlock = 16;
+  void interpolated_indirect_irradiance(size_t i, const float* vertex_direct, size_t stride, size_t lights,
+                                        const HotSpots* const* hot, const Vec3& x, Rgb* out) const;
   /// Irradiance at point i gathered from a field of irradiance given per
   /// (vertex, side) as vertex_sides_read() indexes it, interpolated across
   /// each hit triangle: (2/N) Σ ρ(y) F(y), over hemisphere `side` (0: the
