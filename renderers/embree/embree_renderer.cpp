@@ -205,11 +205,20 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
   // at a vertex side together: vertex_direct turned to [vertex side][light].
   const bool interpolated = gather && m_settings.vertex_interpolated_bounce;
   const size_t l_count = prepared.size();
+  // And per vertex side and block, whether any of the block's lights reaches
+  // it (a hit on dark corners only is passed by).
   std::vector<float> direct_by_side;
+  std::vector<uint8_t> lit;
+  const size_t blocks = (l_count + BounceGather::kLightBlock - 1) / BounceGather::kLightBlock;
   if (interpolated) {
     direct_by_side.resize(vertex_direct.size());
+    lit.assign(2 * v_count * blocks, 0);
     tbb::parallel_for(size_t(0), 2 * v_count, [&](size_t entry) {
-      for (size_t j = 0; j < l_count; ++j) direct_by_side[entry * l_count + j] = vertex_direct[j * 2 * v_count + entry];
+      for (size_t j = 0; j < l_count; ++j) {
+        const float e = vertex_direct[j * 2 * v_count + entry];
+        direct_by_side[entry * l_count + j] = e;
+        lit[entry * blocks + j / BounceGather::kLightBlock] |= uint8_t(e != 0.f);
+      }
     });
     if (bounced.empty()) std::vector<float>().swap(vertex_direct);
   }
@@ -227,7 +236,8 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
         for (size_t i = begin; i != end; ++i)
           for (size_t j0 = 0; j0 < l_count; j0 += BounceGather::kLightBlock)
             gather->interpolated_indirect_irradiance(i, &direct_by_side[j0], l_count, std::min(BounceGather::kLightBlock, l_count - j0),
-                                                     &hot_of[j0], (*shading_owner)[i].position, &indirect[(i - begin) * l_count + j0]);
+                                                     &hot_of[j0], &lit[j0 / BounceGather::kLightBlock], blocks,
+                                                     (*shading_owner)[i].position, &indirect[(i - begin) * l_count + j0]);
       }
       for (size_t j = 0; j < prepared.size(); ++j) {
         const PreparedLight& light = prepared[j];
