@@ -200,26 +200,69 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
   const size_t grain = work < 200000 ? std::max<size_t>(32, points.size() / 8) : 32;
   CallProgress::Phase phase(progress, "lighting the points", double(points.size()),
                             double(points.size()) * double(prepared.size()) * point_rays(transport));
+  // The interpolated bounce walks each point's gather hits once for a block
+  // of lights (BounceGather::kLightBlock), reading the lights' direct light
+  // at a vertex side together: vertex_direct turned to [vertex side][light].
+  const bool interpolated = gather && m_settings.vertex_interpolated_bounce;
+  const size_t l_count = prepared.size();
+  // And per vertex side and block, whether any of the block's lights reaches
+  // it (a hit on dark corners only is passed by).
+  std::vector<float> direct_by_side;
+  std::vector<uint8_t> lit;
+  const size_t blocks = (l_count + BounceGather::kLightBlock - 1) / BounceGather::kLightBlock;
+  if (interpolated) {
+    direct_by_side.resize(vertex_direct.size());
+    lit.assign(2 * v_count * blocks, 0);
+    tbb::parallel_for(size_t(0), 2 * v_count, [&](size_t entry) {
+      for (size_t j = 0; j < l_count; ++j) {
+        const float e = vertex_direct[j * 2 * v_count + entry];
+        direct_by_side[entry * l_count + j] = e;
+        lit[entry * blocks + j / BounceGather::kLightBlock] |= uint8_t(e != 0.f);
+      }
+    });
+    if (bounced.empty()) std::vector<float>().swap(vertex_direct);
+  }
+  std::vector<const HotSpots*> hot_of(l_count, nullptr);
+  for (size_t j = 0; j < hot.size(); ++j) hot_of[j] = &hot[j];
+  tbb::combinable<std::vector<Rgb>> indirect_buffer;
+  constexpr size_t kChunk = 32;  // points whose bounce is gathered before the lights' loop
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), grain), [&](const tbb::blocked_range<size_t>& range) {
     uint64_t& local_rays = rays.local();
-    for (size_t j = 0; j < prepared.size(); ++j) {
-      const PreparedLight& light = prepared[j];
-      for (size_t i = range.begin(); i != range.end(); ++i) {
-        const Vec3& n = points.normals[i];
-        Rgb e(want_direct ? unit_direct_irradiance(*m_embree, (*shading_owner)[i], n, n, light, local_rays) : 0.f);
-        if (gather) {
-          const ShadingPoint& at = (*shading_owner)[i];
-          const HotSpots* h = hot.empty() ? nullptr : &hot[j];
-          if (m_settings.vertex_interpolated_bounce) {
-            e += gather->interpolated_indirect_irradiance(i, &vertex_direct[j * 2 * v_count], h, at.position);
-            if (h && !h->empty()) e += h->irradiance_seen(at, n, h->sees_light(*m_embree, at, n, local_rays));
-          } else {
-            e += gather->unit_indirect_irradiance(i, light, h, at.position, local_rays);
-            if (h) e += h->irradiance(*m_embree, at, n, local_rays);
+    std::vector<Rgb>& indirect = indirect_buffer.local();
+    for (size_t begin = range.begin(); begin < range.end(); begin += kChunk) {
+      const size_t end = std::min(range.end(), begin + kChunk);
+      if (interpolated) {
+        indirect.resize((end - begin) * l_count);
+        for (size_t i = begin; i != end; ++i)
+          for (size_t j0 = 0; j0 < l_count; j0 += BounceGather::kLightBlock)
+            gather->interpolated_indirect_irradiance(i, &direct_by_side[j0], l_count, std::min(BounceGather::kLightBlock, l_count - j0),
+                                                     &hot_of[j0], &lit[j0 / BounceGather::kLightBlock], blocks,
+                                                     (*shading_owner)[i].position, &indirect[(i - begin) * l_count + j0]);
+      }
+      for (size_t j = 0; j < prepared.size(); ++j) {
+        const PreparedLight& light = prepared[j];
+        for (size_t i = begin; i != end; ++i) {
+          const Vec3& n = points.normals[i];
+          Rgb e(want_direct ? unit_direct_irradiance(*m_embree, (*shading_owner)[i], n, n, light, local_rays) : 0.f);
+          if (gather) {
+            const ShadingPoint& at = (*shading_owner)[i];
+            const HotSpots* h = hot_of[j];
+            if (interpolated) {
+              e += indirect[(i - begin) * l_count + j];
+              // The patches' light without its shadow first: where it is 0
+              // (the point behind or near every patch) no shadow ray can change it.
+              if (h && !h->empty()) {
+                const Rgb seen = h->irradiance_seen(at, n, true);
+                if (seen != Rgb(0.f) && h->sees_light(*m_embree, at, n, local_rays)) e += seen;
+              }
+            } else {
+              e += gather->unit_indirect_irradiance(i, light, h, at.position, local_rays);
+              if (h) e += h->irradiance(*m_embree, at, n, local_rays);
+            }
+            if (!bounced.empty()) e += gather->field_irradiance(i, BounceGather::kBothSides, &bounced[j * 2 * v_count]);
           }
-          if (!bounced.empty()) e += gather->field_irradiance(i, BounceGather::kBothSides, &bounced[j * 2 * v_count]);
+          visit(i, j, points.albedo[i] * float(1.0 / kPi) * e);
         }
-        visit(i, j, points.albedo[i] * float(1.0 / kPi) * e);
       }
     }
     phase.advance(double(range.size()));

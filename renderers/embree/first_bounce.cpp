@@ -114,25 +114,45 @@ Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light,
 
 namespace hilight::embree {
 
-Rgb BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex_direct, const HotSpots* hot,
-                                                   const Vec3& x) const {
+void BounceGather::interpolated_indirect_irradiance(size_t i, const float* vertex_direct, size_t stride, size_t lights,
+                                                    const HotSpots* const* hot, const uint8_t* lit, size_t lit_stride,
+                                                    const Vec3& x, Rgb* out) const {
   const Scene& scene = m_es.scene();
-  Rgb sum(0.f);
+  lights = std::min(lights, kLightBlock);
+  // Per light, its components apart, so the loop over lights vectorizes.
+  float r[kLightBlock] = {}, g[kLightBlock] = {}, b[kLightBlock] = {}, keep[kLightBlock];
+  bool any_hot = false;
+  for (size_t j = 0; j < lights; ++j) any_hot |= hot[j] && !hot[j]->empty();
   const GatherHit* hits = &m_hits[i * m_samples];
   for (int k = 0; k < m_samples; ++k) {
     const GatherHit& hit = hits[k];
     if (!hit.valid()) continue;
     const auto& tri = scene.triangles[hit.triangle()];
-    const float u = hit.u(), v = hit.v();
-    if (hot && hot->handles(x, (1.f - u - v) * scene.positions[tri[0]] + u * scene.positions[tri[1]] + v * scene.positions[tri[2]],
-                            m_es.face_normals()[hit.triangle()]))
-      continue;
-    // Each vertex holds both sides' values; take the side facing the gatherer.
-    auto on_side = [&](int corner) { return vertex_direct[2 * tri[corner] + ((hit.vertex_sides() >> corner) & 1 ? 0 : 1)]; };
-    float e = (1.f - u - v) * on_side(0) + u * on_side(1) + v * on_side(2);
-    if (e > 0.f) sum += scene.triangle_albedo(hit.triangle()) * e;
+    uint32_t entry[3];
+    for (int c = 0; c < 3; ++c) entry[c] = 2 * tri[c] + ((hit.vertex_sides() >> c) & 1 ? 0u : 1u);
+    if (lit && !(lit[entry[0] * lit_stride] | lit[entry[1] * lit_stride] | lit[entry[2] * lit_stride])) continue;
+    const float u = hit.u(), v = hit.v(), w = 1.f - u - v;
+    for (size_t j = 0; j < lights; ++j) keep[j] = 1.f;
+    if (any_hot) {
+      const Vec3 y = w * scene.positions[tri[0]] + u * scene.positions[tri[1]] + v * scene.positions[tri[2]];
+      const Vec3& face_normal = m_es.face_normals()[hit.triangle()];
+      for (size_t j = 0; j < lights; ++j)
+        if (hot[j] && hot[j]->handles(x, y, face_normal)) keep[j] = 0.f;
+    }
+    const float* d[3];
+    for (int c = 0; c < 3; ++c) d[c] = vertex_direct + entry[c] * stride;
+    const Rgb albedo = scene.triangle_albedo(hit.triangle());
+    for (size_t j = 0; j < lights; ++j) {
+      const float e = w * d[0][j] + u * d[1][j] + v * d[2][j];
+      // A skipped hit adds an exact 0 (the sums are never -0), as the one-light form skips it.
+      const float s = e > 0.f && keep[j] != 0.f ? e : 0.f;
+      r[j] += albedo.r * s;
+      g[j] += albedo.g * s;
+      b[j] += albedo.b * s;
+    }
   }
-  return sum * (2.f / float(m_samples));
+  const float scale = 2.f / float(m_samples);
+  for (size_t j = 0; j < lights; ++j) out[j] = Rgb(r[j], g[j], b[j]) * scale;
 }
 
 Rgb BounceGather::field_irradiance(size_t i, int side, const Rgb* field) const {

@@ -46,10 +46,20 @@ public:
   /// at `x`, from its gather hits — less those the light's hot patches count
   /// instead (`hot` may be null; add hot->irradiance() for their share).
   Rgb unit_indirect_irradiance(size_t i, const PreparedLight& light, const HotSpots* hot, const Vec3& x, uint64_t& rays) const;
-  /// The same with the direct irradiance at each hit interpolated from
-  /// `vertex_direct` — per scene vertex, two values: the side its normal
-  /// points to, then the other — instead of shadow rays.
-  Rgb interpolated_indirect_irradiance(size_t i, const float* vertex_direct, const HotSpots* hot, const Vec3& x) const;
+  /// The same for up to kLightBlock lights at once, with the direct
+  /// irradiance at each hit interpolated from `vertex_direct` instead of
+  /// shadow rays: per (vertex, side) — 2·vertex + (0: the side its normal
+  /// points to, 1: the other) — the block's lights, `stride` floats apart,
+  /// light 0 of the block first. The hits are decoded once for all the
+  /// block's lights (issue 33); each light's sum runs in hit order. `hot[j]`
+  /// is light j's patches (null: none). `lit` (null: all lit) says per vertex
+  /// side, `lit_stride` bytes apart, whether any of the block's lights
+  /// reaches it: a hit whose three corners are dark adds nothing and is
+  /// passed by. Writes out[0..lights).
+  static constexpr size_t kLightBlock = 16;
+  void interpolated_indirect_irradiance(size_t i, const float* vertex_direct, size_t stride, size_t lights,
+                                        const HotSpots* const* hot, const uint8_t* lit, size_t lit_stride, const Vec3& x,
+                                        Rgb* out) const;
   /// Irradiance at point i gathered from a field of irradiance given per
   /// (vertex, side) as vertex_sides_read() indexes it, interpolated across
   /// each hit triangle: (2/N) Σ ρ(y) F(y), over hemisphere `side` (0: the
