@@ -1,6 +1,7 @@
 // hilight bench: renderer throughput as JSON lines on stdout (one object per
 // figure set), so runs can be compared by scripts. Medians over --repeat runs.
 #include "bench_commands.hpp"
+#include "bench_stats.hpp"
 #include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
@@ -12,18 +13,6 @@
 namespace hilight::bench {
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
-template <class F>
-double seconds_of(F&& f) {
-  auto t0 = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 /// The furnished room refined until it has at least `min_triangles`.
 Scene bench_scene(size_t min_triangles) {

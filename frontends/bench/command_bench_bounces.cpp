@@ -5,31 +5,19 @@
 // the ratio to the first model are printed as JSON lines. Memory is the
 // process's: run one model per process (--bounces all) to compare it.
 #include "bench_commands.hpp"
+#include "bench_stats.hpp"
 #include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/fixtures/real_model_scenes.hpp"
 #include "hilight/solve/solve_session.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <random>
-#include <sys/resource.h>
 
 namespace hilight::bench {
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
-double peak_rss_mb() {
-  rusage usage{};
-  ::getrusage(RUSAGE_SELF, &usage);
-  return double(usage.ru_maxrss) / 1024.0;
-}
 
 struct BenchScene {
   std::string name;
@@ -50,7 +38,6 @@ void bench_scene_bounces(const BenchScene& b, const std::vector<std::string>& mo
   for (const auto& model : models) {
     SolveSpec spec;
     spec.renderer_settings = {"bounces=" + model};
-    spec.settings.cache_dir.clear();
     sessions.push_back(std::make_unique<SolveSession>(registry, spec, scene, rays));
   }
   std::vector<std::vector<double>> seconds(models.size());
@@ -58,9 +45,8 @@ void bench_scene_bounces(const BenchScene& b, const std::vector<std::string>& mo
   for (int r = 0; r < repeat; ++r)
     for (size_t k = 0; k < models.size(); ++k) {
       const size_t m = (k + size_t(r)) % models.size();  // alternate which model runs first
-      const auto t0 = std::chrono::steady_clock::now();
-      const std::vector<Rgb> values = sessions[m]->reference().illuminate(points, lights);
-      seconds[m].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      std::vector<Rgb> values;
+      seconds[m].push_back(seconds_of([&] { values = sessions[m]->reference().illuminate(points, lights); }));
       double sum = 0;
       for (const Rgb& v : values) sum += double(v.r + v.g + v.b) / 3.0;
       mean_value[m] = values.empty() ? 0.0 : sum / double(values.size());

@@ -4,6 +4,7 @@
 // unit lights (default 1,000), plus each renderer's own stage figures
 // (ism-vulkan: GPU seconds per stage from timestamps). JSON lines on stdout.
 #include "bench_commands.hpp"
+#include "bench_stats.hpp"
 #include "hilight/fixtures/scene_builders.hpp"
 #include "hilight/threads.hpp"
 
@@ -14,21 +15,6 @@
 #include <random>
 
 namespace hilight::bench {
-
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
-template <class F> double seconds_of(F&& f) {
-  auto start = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-} // namespace
 
 int run_bench_renderers(const std::vector<std::string>& args, Registry& registry) {
   CLI::App app("Compare renderers on the same scene and lights; prints one JSON object per line", "bench renderers");

@@ -3,6 +3,7 @@
 // start (cache on disk), fine-tune after a small edit. JSON lines on stdout;
 // medians over --repeat runs, all in one process so the figures compare.
 #include "bench_commands.hpp"
+#include "bench_stats.hpp"
 #include "hilight/fixtures/built_scenes.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/light_cache_store.hpp"
@@ -19,16 +20,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <nlohmann/json.hpp>
-#include <sys/resource.h>
 
 namespace hilight::bench {
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 /// The bench's cache folder: --cache-dir as given (only its light caches are
 /// ever removed), or a new private temporary folder, removed whole at the end.
@@ -53,13 +48,6 @@ private:
   const std::string& m_path;
   bool m_owned = false;
 };
-
-/// The process's peak resident memory so far, in MB (getrusage).
-double peak_rss_mb() {
-  rusage usage{};
-  ::getrusage(RUSAGE_SELF, &usage);
-  return double(usage.ru_maxrss) / 1024.0;
-}
 
 /// Mean distance from each true light to the nearest found light.
 double mean_position_error(const Lighting& truth, const Lighting& found) {

@@ -65,7 +65,16 @@ LivingRoom living_room() {
   return {rays, living, rays->hit_position(floor_hit)};
 }
 
+/// A session's first actions: the camera over `floor`, a brush, one stroke painting it.
+nlohmann::json paint_floor(const Vec3& floor) {
+  return nlohmann::json::array({
+      {{"type", "camera"}, {"eye", {floor.x, floor.y + 12.f, floor.z + 5.f}}, {"target", {floor.x, floor.y, floor.z}}, {"fov", 40}},
+      {{"type", "brush"}, {"radius", 0.8}, {"colour", 1.0}, {"brightness", 0.6}, {"hardness", 0.7}},
+      {{"type", "stroke"}, {"world", {{floor.x, floor.y, floor.z}}}}});
+}
+
 } // namespace
+
 TEST_CASE("painter ui: in the FZK house --place region:Wohnen hangs the lights from the living room's ceiling and a bad name is refused",
           "[painter-ui][placement][rooms]") {
   if (test::skip_without_display()) return;
@@ -79,14 +88,11 @@ TEST_CASE("painter ui: in the FZK house --place region:Wohnen hangs the lights f
   const NamedRoom& living = home.room;
   const Vec3 floor = home.floor;
 
-  const nlohmann::json actions = {
-      {{"type", "camera"}, {"eye", {floor.x, floor.y + 12.f, floor.z + 5.f}}, {"target", {floor.x, floor.y, floor.z}}, {"fov", 40}},
-      {{"type", "brush"}, {"radius", 0.8}, {"colour", 1.0}, {"brightness", 0.6}, {"hardness", 0.7}},
-      {{"type", "stroke"}, {"world", {{floor.x, floor.y, floor.z}}}},
-      {{"type", "solve"}},
-      {{"type", "save_lights"}, {"path", (dir / "lights.json").string()}},
-      // The Placement panel's rules as typed: a storey's name, resolved as the command line's are.
-      {{"type", "place"}, {"rules", "ceiling:0.2 region:0. Erdgeschoss"}}};
+  nlohmann::json actions = paint_floor(floor);
+  actions.push_back({{"type", "solve"}});
+  actions.push_back({{"type", "save_lights"}, {"path", (dir / "lights.json").string()}});
+  // The Placement panel's rules as typed: a storey's name, resolved as the command line's are.
+  actions.push_back({{"type", "place"}, {"rules", "ceiling:0.2 region:0. Erdgeschoss"}});
   test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
   const test::RunResult run = test::run_hilight({"paint", fzk_house().string(), "--size", "360x270", "--bounces", "0", "--samples", "800",
                                                  "--no-cache", "--no-record", "--exit", "--place", "region:Wohnen", "--script",
@@ -136,13 +142,10 @@ TEST_CASE("painter ui: in the FZK house a place action's region:Wohnen hangs the
   const NamedRoom& living = home.room;
   const Vec3 floor = home.floor;
 
-  const nlohmann::json actions = {
-      {{"type", "camera"}, {"eye", {floor.x, floor.y + 12.f, floor.z + 5.f}}, {"target", {floor.x, floor.y, floor.z}}, {"fov", 40}},
-      {{"type", "brush"}, {"radius", 0.8}, {"colour", 1.0}, {"brightness", 0.6}, {"hardness", 0.7}},
-      {{"type", "stroke"}, {"world", {{floor.x, floor.y, floor.z}}}},
-      {{"type", "place"}, {"rules", "region:Wohnen"}},
-      {{"type", "solve"}},
-      {{"type", "save_lights"}, {"path", (dir / "lights.json").string()}}};
+  nlohmann::json actions = paint_floor(floor);
+  actions.push_back({{"type", "place"}, {"rules", "region:Wohnen"}});
+  actions.push_back({{"type", "solve"}});
+  actions.push_back({{"type", "save_lights"}, {"path", (dir / "lights.json").string()}});
   test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
   const test::RunResult run = test::run_hilight({"paint", fzk_house().string(), "--size", "320x240", "--bounces", "0", "--samples", "800",
                                                  "--no-cache", "--no-record", "--exit", "--place", "anywhere", "--script",

@@ -80,8 +80,10 @@ Fit AddMissingSpot::run(SolveContext& ctx, const Fit& fit) {
   joined.insert(joined.end(), added.begin(), added.end());
   // Settled as the spot search settles its answer (the cones' geometry with
   // the bounce re-taken where they went), then the reference's last word.
-  const Fit settled = settle_lights(samples, ctx.space, ctx.renderer, ctx.reference, joined);
-  Fit after = polish_with_reference(ctx, samples, settled.lights, false);
+  const auto settle = [&](const Lighting& lights) {
+    return polish_with_reference(ctx, samples, settle_lights(samples, ctx.space, ctx.renderer, ctx.reference, lights).lights, false);
+  };
+  Fit after = settle(joined);
   bool pruned = false;
   // Eq. 9 backward on the spots added: one that one light fewer will do
   // without (a narrow beam fitting the residual's noise) goes.
@@ -97,7 +99,7 @@ Fit AddMissingSpot::run(SolveContext& ctx, const Fit& fit) {
   }
   // The spots kept were settled beside the ones that went: settle them again alone.
   if (pruned && after.lights.size() > fit.lights.size()) {
-    Fit again = polish_with_reference(ctx, samples, settle_lights(samples, ctx.space, ctx.renderer, ctx.reference, after.lights).lights, false);
+    Fit again = settle(after.lights);
     if (again.dbar < after.dbar && again.lights.size() == after.lights.size()) after = std::move(again);
   }
   // Each light more must pay (eq. 9): together by ε_impro, or by ε_w each.
