@@ -132,3 +132,76 @@ TEST_CASE("bad photometry files are refused in one line naming the file, exit 2"
   CHECK(ok.exit_code == 0);
   CHECK_THAT(ok.out, Catch::Contains("\"flux_lm\""));
 }
+
+// Issue 37: a EULUMDAT luminaire reaches Cycles, which reads only IES, as an
+// IES file hilight writes (`hilight luminaire F.ldt --ies F.ies`). Each
+// symmetry, with a profile that tells every plane apart that the symmetry
+// allows, written and read back: the same candela at angles off the nodes,
+// the same flux, rated lumens, watts and opening.
+TEST_CASE("EULUMDAT of every symmetry written as IES reads back with the same candela everywhere", "[photometry][ies-writer]") {
+  const auto gammas = angles(0, 180, 7.5), c_all = angles(0, 345, 15);
+  struct Case {
+    int isym;
+    std::function<double(double, double)> f;  // cd/klm at (C, γ), in degrees
+  };
+  const double d = kPi / 180.0;
+  const std::vector<Case> cases = {
+      {0, [d](double c, double g) { return 120.0 + 80.0 * std::cos(g * d) + 30.0 * std::sin(c * d) * std::sin(g * d) + 0.1 * c; }},
+      {1, [d](double, double g) { return 150.0 + 100.0 * std::cos(g * d); }},
+      {2, [d](double c, double g) { return 120.0 + 60.0 * std::cos(c * d) * std::sin(g * d) + 20.0 * std::cos(g * d); }},
+      {3, [d](double c, double g) { return 120.0 + 60.0 * std::sin(c * d) * std::sin(g * d) + 20.0 * std::cos(g * d); }},
+      {4, [d](double c, double g) { return 120.0 + 50.0 * std::cos(2.0 * c * d) * std::sin(g * d) + 10.0 * std::cos(g * d); }}};
+  for (const Case& k : cases) {
+    INFO("Isym " << k.isym);
+    std::vector<std::vector<double>> planes;
+    for (double c : c_all) {
+      const bool stored = k.isym == 0 || (k.isym == 2 && c <= 180) || (k.isym == 3 && c >= 90 && c <= 270) || (k.isym == 4 && c <= 90);
+      if (k.isym == 1 ? planes.empty() : stored) {
+        std::vector<double> plane;
+        for (double g : gammas) plane.push_back(k.f(c, g));
+        planes.push_back(plane);
+      }
+    }
+    const Photometry ldt_profile = parse_ldt(ldt(k.isym, c_all, gammas, planes, 3000), "profile.ldt");
+    const std::string text = ies_text(ldt_profile);
+    const Photometry back = parse_ies(text, "profile.ies");
+    CHECK(back.type == Photometry::Type::C);
+    CHECK(back.rated_lumens == Approx(ldt_profile.rated_lumens));
+    CHECK(back.input_watts == Approx(ldt_profile.input_watts));
+    CHECK(back.flux() == Approx(ldt_profile.flux()).epsilon(1e-6));
+    double worst = 0;
+    for (double c = 0.0; c < 360.0; c += 11.3)
+      for (double g = 0.0; g <= 180.0; g += 6.1) {
+        const double want = ldt_profile.intensity(c, g);
+        worst = std::max(worst, std::abs(back.intensity(c, g) - want) / want);
+      }
+    CHECK(worst < 1e-6);
+    // At every node the file states the analytic value (3 klm: cd/klm × 3;
+    // the EULUMDAT text keeps 6 digits), the symmetry applied.
+    for (double c : c_all)
+      for (double g : gammas) {
+        const double analytic = k.isym == 1 ? k.f(0.0, g) : k.f(c, g);
+        CHECK(back.intensity(c, g) == Approx(3.0 * analytic).epsilon(2e-5));
+      }
+  }
+}
+
+TEST_CASE("hilight luminaire --ies writes an IES file that reads back, and refuses another extension", "[photometry][ies-writer][cli]") {
+  const auto dir = test::output_dir("photometry_ies_out");
+  const auto gammas = angles(0, 180, 10);
+  std::vector<std::vector<double>> planes;
+  for (double c : angles(0, 90, 15)) planes.push_back(std::vector<double>(gammas.size(), 100.0 + c));
+  std::ofstream(dir / "quad.ldt") << ldt(4, angles(0, 345, 15), gammas, planes, 1000);
+  std::filesystem::remove(dir / "quad.ies");
+  const auto r = test::run_hilight({"luminaire", (dir / "quad.ldt").string(), "--ies", (dir / "quad.ies").string()});
+  REQUIRE(r.exit_code == 0);
+  const Photometry in = read_photometry(dir / "quad.ldt"), out = read_photometry(dir / "quad.ies");
+  CHECK(out.peak() == Approx(in.peak()));
+  CHECK(out.intensity(150, 50) == Approx(in.intensity(150, 50)));
+  CHECK(out.intensity(250, 75) == Approx(in.intensity(250, 75)));
+  const auto bad = test::run_hilight({"luminaire", (dir / "quad.ldt").string(), "--ies", (dir / "quad.txt").string()});
+  CHECK(bad.exit_code == 2);
+  CHECK(test::line_count(bad.err) == 1);
+  CHECK_THAT(bad.err, Catch::Contains("quad.txt"));
+  CHECK(!std::filesystem::exists(dir / "quad.txt"));
+}

@@ -399,6 +399,24 @@ def write_downlight_ies(path, multiplier, ballast, ballast_lamp):
         f.write(" ".join(f"{c:.4f}" for c in candela) + "\n")
 
 
+def write_panel_ldt(path):
+    """A EULUMDAT panel (Isym 4: C0–C90 stored), wide along C0–C180 and
+    narrow across it, so a plane turned the wrong way shows: (120 + 90 cos 2C
+    sin γ) cos γ cd/klm below the horizontal, 2000 lm, 20 W."""
+    c_angles, gammas = list(range(0, 360, 15)), list(range(0, 185, 5))
+    stored = [c for c in c_angles if c <= 90]
+    lines = ["hilight add-on test", "1", "4", str(len(c_angles)), "15", str(len(gammas)), "5", "report", "test panel", "P1",
+             "panel.ldt", "2026-11-27"] + ["600"] * 5 + ["0"] * 4 + ["100", "80", "1", "0", "1", "1", "LED", "2000", "3000", "80", "20"]
+    lines += ["0.5"] * 10 + [str(c) for c in c_angles] + [str(g) for g in gammas]
+    for c in stored:
+        for g in gammas:
+            cos_g = math.cos(math.radians(g))
+            value = (120.0 + 90.0 * math.cos(math.radians(2 * c)) * math.sin(math.radians(g))) * cos_g if g < 90 else 0.0
+            lines.append(f"{max(0.0, value):.4f}")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
 def case_cycles():
     """The add-on's lights, one of each kind Blender draws, in Cycles against
     hilight's render of the same lights file: the image's mean radiance."""
@@ -420,18 +438,32 @@ def case_cycles():
     write_downlight_ies(profile, multiplier=2.0, ballast=0.9, ballast_lamp=0.95)
     lights.append({"type": "luminaire", "profile": profile, "position": [rng.uniform(1.6, 2.4), 2.3, rng.uniform(1.2, 1.8)],
                    "direction": [0.0, -1.0, 0.0], "intensity": [rng.uniform(2.0, 4.0) for _ in range(3)]})
+    # A EULUMDAT luminaire, which Cycles cannot read: the add-on gives Cycles
+    # the IES text hilight writes for it (ies_level.py), turned about its aim.
+    panel = os.path.join(args.work, "panel.ldt")
+    write_panel_ldt(panel)
+    lights.append({"type": "luminaire", "profile": panel, "position": [rng.uniform(2.6, 3.2), 2.3, rng.uniform(2.2, 2.8)],
+                   "direction": [0.0, -1.0, 0.0], "spin_deg": rng.uniform(20.0, 70.0),
+                   "intensity": [rng.uniform(2.0, 4.0) for _ in range(3)]})
     lights_path = os.path.join(args.work, "lights.json")
     with open(lights_path, "w") as f:
         json.dump({"lights": lights}, f)
     made = hb.lights.bring_in(bpy.context, lights)
-    check([o.data.type for o in made] == ["POINT", "SPOT", "AREA", "POINT"],
-          "point, spot, rectangle and luminaire come in as Blender point, spot, area and point lights")
+    check([o.data.type for o in made] == ["POINT", "SPOT", "AREA", "POINT", "POINT"],
+          "point, spot, rectangle and luminaires come in as Blender point, spot, area and point lights")
+    ldt_nodes = [n for n in made[4].data.node_tree.nodes if n.type == "TEX_IES"] if made[4].data.node_tree else []
+    check(len(ldt_nodes) == 1 and ldt_nodes[0].mode == "INTERNAL" and ldt_nodes[0].ies is not None,
+          "the EULUMDAT luminaire has an IES node reading hilight's IES text, kept in the .blend")
+    back = hb.lights.to_hilight(made[4])
+    turn = (back["spin_deg"] - lights[4]["spin_deg"] + 180.0) % 360.0 - 180.0
+    check(abs(turn) < 1e-3 and max(abs(a - b) for a, b in zip(back["direction"], lights[4]["direction"])) < 1e-6,
+          f"the luminaire's aim and spin read back from Blender ({back['spin_deg']:.4f} for {lights[4]['spin_deg']:.4f})")
     scene_path = os.path.join(args.work, "scene.obj")
     hb.scene_io.write_scene(bpy.context, scene_path)
     camera = ",".join("%g" % v for v in (*CAMERA[0], *CAMERA[1], CAMERA[2]))
     # Direct light of each light alone (each conversion, little noise), then
     # all of them with every bounce.
-    runs = [(f"{light['type']}_0", [i], "0", 0, 16, 0.01) for i, light in enumerate(lights)]
+    runs = [(f"{light['type']}_{i}", [i], "0", 0, 16, 0.01) for i, light in enumerate(lights)]
     runs.append(("all", [0, 1, 2], "all", 128, 64, 0.03))
     for name, chosen, bounces, cycles_bounces, samples, tolerance in runs:
         subset = os.path.join(args.work, f"{name}.json")
@@ -450,6 +482,16 @@ def case_cycles():
         check(covered.mean() > 0.99 and c[..., :3].sum() > 0, f"{name}: both images cover the frame, lit")
         check(abs(ratio - 1.0) <= tolerance,
               f"{name} (hilight --bounces {bounces}): hilight/Cycles pixel mean {ratio:.4f} (within {tolerance:.0%}; Cycles {samples} samples, {cycles_bounces} bounces, {seconds:.1f} s)")
+        if name.startswith("luminaire"):
+            # Where the light falls, not only how much: a profile turned or
+            # mirrored moves its wide lobe to other blocks of the image.
+            hs, cs = h[..., :3].sum(axis=2), c[..., :3].sum(axis=2)
+            bh, bw = hs.shape[0] // 4, hs.shape[1] // 4
+            ratios = [hs[y:y + bh, x:x + bw].mean() / cs[y:y + bh, x:x + bw].mean()
+                      for y in range(0, 4 * bh, bh) for x in range(0, 4 * bw, bw)
+                      if cs[y:y + bh, x:x + bw].mean() > 0.05 * cs.mean()]
+            worst = max(abs(r - 1.0) for r in ratios)
+            check(worst <= 0.05, f"{name}: each lit 4x4 block of the image within 5% of Cycles' (worst {worst:.3f}, {len(ratios)} blocks)")
     finish()
 
 

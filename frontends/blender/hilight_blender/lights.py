@@ -7,11 +7,13 @@ from the object, so a light the user moved or dimmed is fine-tuned as it is.
 """
 import json
 import math
+import os
+import subprocess
 
 import bpy
 from mathutils import Matrix, Vector
 
-from . import compat, ies_level, units
+from . import compat, ies_level, scene_io, units
 
 COLLECTION = "hilight lights"
 
@@ -79,26 +81,60 @@ def _divide_cos(data):
     tree.links.new(divide.outputs["Value"], emission.inputs["Strength"])
 
 
+def _hilight():
+    from . import runner  # runner imports this module
+    return runner.executable(bpy.context)
+
+
 def _ies_node(data, profile):
     """The profile's shape on the emission: Cycles' IES Fac over its peak
     (ies_level.py), so the light's Power sets the peak as hilight's
-    intensity does. A profile Cycles cannot read (EULUMDAT) gets no node:
-    the light then shines its peak every way (its custom property keeps the
-    profile for hilight)."""
+    intensity does; the profile as the IES text hilight writes for it, its
+    planes mirrored for Cycles, kept in the .blend. Without hilight an IES
+    file is read as it is (a profile symmetric in C comes out right). A
+    profile that cannot be read gets no node: the light then shines its peak
+    every way (its custom property keeps the profile for hilight)."""
+    path = bpy.path.abspath(profile)
+    internal = None
     try:
-        peak = ies_level.cycles_peak(bpy.path.abspath(profile))
-    except (OSError, ies_level.NotIes) as e:
+        try:
+            text = ies_level.ies_for_cycles(path, _hilight())
+        except scene_io.InputError:  # no hilight to ask
+            if ies_level.is_eulumdat(path):
+                raise
+            text = None
+        if text is not None:
+            peak = ies_level.cycles_peak_of_text(text, path)
+            internal = bpy.data.texts.new(os.path.basename(path) + ".ies")
+            internal.write(text)
+        else:
+            peak = ies_level.cycles_peak(path)
+    except (OSError, ValueError, subprocess.SubprocessError, scene_io.InputError) as e:  # NotIes is a ValueError
         print(f"hilight: {e}: the luminaire comes in as a point light of its peak intensity")
         return
     tree, emission = _emission(data)
     ies = tree.nodes.new("ShaderNodeTexIES")
-    ies.mode = "EXTERNAL"
-    ies.filepath = profile
+    if internal is not None:
+        ies.mode = "INTERNAL"
+        ies.ies = internal
+    else:
+        ies.mode = "EXTERNAL"
+        ies.filepath = profile
     level = tree.nodes.new("ShaderNodeMath")
     level.operation = "MULTIPLY"
     level.inputs[1].default_value = 1.0 / peak
     tree.links.new(ies.outputs["Fac"], level.inputs[0])
     tree.links.new(level.outputs["Value"], emission.inputs["Strength"])
+
+
+def luminaire_matrix(position, direction, spin_deg):
+    """A luminaire's Blender frame: local −Z its aim, local X hilight's C = 90°
+    plane and −Y its C = 0° (LuminaireFrame: C = 0 along hilight's +X made
+    perpendicular to the aim, +Z where the aim is near ±X, turned by the spin
+    about the aim), which is where Cycles reads the mirrored profile's C."""
+    reference = (1.0, 0.0, 0.0) if abs(direction[0]) <= 0.9 else (0.0, 0.0, 1.0)
+    base = frame(position, units.to_blender(direction), units.to_blender(reference))  # local X: C = 0, Y: C = 90
+    return base @ Matrix.Rotation(math.radians(spin_deg) + math.pi / 2.0, 4, "Z")
 
 
 def make_light(light, name, scale=1.0):
@@ -133,9 +169,7 @@ def make_light(light, name, scale=1.0):
         data = bpy.data.lights.new(name, "POINT")
         if light.get("profile"):
             _ies_node(data, light["profile"])
-        spin = math.radians(light.get("spin_deg", 0.0))
-        base = frame(position, minus_z, (1.0, 0.0, 0.0))
-        matrix = base @ Matrix.Rotation(spin, 4, "Z")
+        matrix = luminaire_matrix(position, direction, light.get("spin_deg", 0.0))
     else:
         raise ValueError(f"light type {kind!r} has no Blender light")
     data.shadow_soft_size = 0.0 if data.type != "AREA" else data.shadow_soft_size
@@ -187,7 +221,20 @@ def to_hilight(obj, scale=1.0):
         light["size"] = [data.size * scale] + ([data.size_y * scale] if kind == "rectangle" else [])
     if kind == "disk" and data.type == "AREA":
         light["size"] = [data.size * scale]
+    if kind == "luminaire":
+        light["spin_deg"] = luminaire_spin(matrix, light["direction"])
     return light
+
+
+def luminaire_spin(matrix, direction):
+    """The spin luminaire_matrix turned a luminaire by: its C = 0 plane (the
+    object's −Y) against the unturned one, about the aim."""
+    nadir = Vector(direction).normalized()
+    reference = Vector((1.0, 0.0, 0.0) if abs(nadir.x) <= 0.9 else (0.0, 0.0, 1.0))
+    c0 = (reference - nadir * reference.dot(nadir)).normalized()
+    c90 = c0.cross(nadir)
+    turned = Vector(units.from_blender((matrix.to_3x3() @ Vector((0.0, -1.0, 0.0))).normalized()))
+    return math.degrees(math.atan2(turned.dot(c90), turned.dot(c0)))
 
 
 def figures(obj, scale=1.0):

@@ -26,6 +26,13 @@ Photometry read_photometry(const std::filesystem::path& path);
 Photometry parse_ies(const std::string& text, const std::string& source);
 Photometry parse_ldt(const std::string& text, const std::string& source);
 
+/// The photometry as an IES LM-63-2002 file (type C, metres, one lamp of
+/// the rated flux, multiplier 1): the stored planes extended by their
+/// symmetry to the full circle (a rotational profile keeps one plane), so a
+/// EULUMDAT file reaches tools that read only IES. The candela are
+/// hilight's at every node; a type B profile is sampled every 1° by 2.5°.
+std::string ies_text(const Photometry& photometry);
+
 /// A product name from a file's fields: each trimmed, control characters
 /// and stray bytes dropped, the non-empty ones joined by blanks, at most
 /// 200 characters (Photometry::product).
