@@ -14,6 +14,7 @@
 #include "hilight/io/photometry_io.hpp"
 #include "hilight/units.hpp"
 #include "hilight/scene_origin.hpp"
+#include "hilight/solve/fit_notes.hpp"
 #include "hilight/solve/judge.hpp"
 #include "hilight/solve/solve_session.hpp"
 #include "hilight/threads.hpp"
@@ -414,29 +415,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       if (lights[j].profile && luminaire_dimming(lights[j]) > 1.0 + 1e-6)
         std::fprintf(stderr, "hilight: warning: light %zu needs %.0f%% of the luminaire's rated output (more luminaires, or a brighter one)\n", j,
                      100.0 * luminaire_dimming(lights[j]));
-  // A count the solve could not reach is said, and why (issue 35): no free
-  // place was left where one more light changes the fit.
-  if (s.fixed_count > 0 && report.chosen < s.fixed_count)
-    std::fprintf(stderr,
-                 "hilight: warning: --lights %zu: the solve placed %zu: no place was left in the scene where one more light "
-                 "changes the fit (D̄ %.2f%%)\n",
-                 s.fixed_count, report.chosen, 100.0 * report.dbar);
-  // No silent failure: a poor fit says so, whatever --quiet says, and
-  // --max-dbar makes it an error (after the files are written).
-  if (report.dbar > kPoorFit && report.unreachable >= 0.1)
-    std::fprintf(stderr,
-                 "hilight: warning: poor fit, D̄ %.1f%% with %zu light%s: %.0f%% of the target's light is on points that no "
-                 "place a light may stand can see (inside solids, or shut off by the --place rules)\n",
-                 100.0 * report.dbar, report.chosen, report.chosen == 1 ? "" : "s", 100.0 * report.unreachable);
-  else if (report.dbar > kPoorFit)
-    std::fprintf(stderr,
-                 "hilight: warning: poor fit, D̄ %.1f%% with %zu light%s: parts of the target may be unreachable by any "
-                 "light, or need another light count (--lights N) or spotlight hints (--spot-hints)\n",
-                 100.0 * report.dbar, report.chosen, report.chosen == 1 ? "" : "s");
-  // A poor fit under the building default may be the default's doing: say how to lift it.
-  if (report.dbar > kPoorFit && !building_note.empty())
-    std::fprintf(stderr, "hilight: the lights were held on the ceiling (a building's default): if the target's lamps hang lower, "
-                         "--place anywhere frees them\n");
+  // A count not reached, a poor fit and why, whatever --quiet says (no silent
+  // failure; --max-dbar makes it an error after the files are written). The
+  // painter's Solve panel says the same (fit_notes.hpp).
+  for (const FitNote& note : fit_notes(report, {s.fixed_count, !building_note.empty()}))
+    std::fprintf(stderr, "hilight: %s%s\n", note.warning ? "warning: " : "", note.text.c_str());
   if (max_dbar >= 0 && report.dbar > max_dbar) {
     std::fprintf(stderr, "hilight: %s: D̄ %.2f%% is above --max-dbar %.2f%% (lights written to %s)\n", target_path.c_str(),
                  100.0 * report.dbar, 100.0 * max_dbar, output.c_str());
