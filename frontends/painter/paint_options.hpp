@@ -1,5 +1,6 @@
 #pragma once
 /// What `hilight paint` was asked to do (parsed by paint_command.cpp).
+#include "core/session.hpp"
 #include "core/solve_job.hpp"
 #include "hilight/named_room.hpp"
 
@@ -37,6 +38,11 @@ struct PaintOptions {
   bool ifc_storeys = false;
   /// The scene's named rooms, when the command line's rules named one (read once).
   std::optional<std::vector<NamedRoom>> named_rooms;
+  /// After an `open_scene`: the session recorded so far (the new scene's
+  /// actions follow it, so the recording replays from the first scene), and
+  /// why the scene asked for could not be opened ("" when it was).
+  std::optional<Session> recorded_before;
+  std::string open_error;
   /// When `hilight paint` began loading (--timings: open_to_first_frame).
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };

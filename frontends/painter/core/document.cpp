@@ -17,7 +17,7 @@ bool PaintState::operator==(const PaintState& other) const {
 }
 
 Document::Document(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays)
-    : m_scene(std::move(scene)), m_rays(std::move(rays)) {
+    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_albedo(m_scene->vertex_albedo()) {
   m_state.psi.assign(m_scene->positions.size(), Rgb(0.f));
   m_state.weight.assign(m_scene->positions.size(), 0.f);
 }

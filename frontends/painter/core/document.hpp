@@ -35,6 +35,8 @@ public:
 
   const Scene& scene() const { return *m_scene; }
   const RayScene& rays() const { return *m_rays; }
+  /// Per scene vertex (Scene::vertex_albedo, read once): what the brush's paint meaning reads.
+  const std::vector<Rgb>& albedo() const { return m_albedo; }
 
   const PaintState& state() const { return m_state; }
   /// Increases on every change of state() (edits, undo, redo): the UI
@@ -98,6 +100,7 @@ private:
 
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
+  std::vector<Rgb> m_albedo;
   PaintState m_state;
   PaintState m_edit_start;
   bool m_editing = false;
