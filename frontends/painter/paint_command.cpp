@@ -53,11 +53,15 @@ struct OpenedScene {
 
 /// Loads `o.scene` (unless `loaded` holds it) and settles the command line's
 /// rules on it (o's job placement, building note, storeys and named rooms).
-OpenedScene open_scene(PaintOptions& o, const PlacementRules& given_rules, std::shared_ptr<const Scene> loaded = nullptr) {
+OpenedScene open_scene(PaintOptions& o, const PlacementRules& given_rules, const std::optional<Light>& given_luminaire,
+                       std::shared_ptr<const Scene> loaded = nullptr) {
   o.started = std::chrono::steady_clock::now();  // --timings: open_to_first_frame counts from here
   OpenedScene opened;
   if (!loaded) loaded = std::make_shared<const Scene>(load_scene(o.scene, {o.max_edge}));
   opened.scene = loaded;
+  // --area-light's size is in the scene's unit (a luminaire file's opening is in metres already).
+  o.job.settings.luminaire = given_luminaire;
+  if (given_luminaire && is_area(given_luminaire->type) && !given_luminaire->profile) o.job.settings.luminaire->size *= float(loaded->frame.scale);
   // The rules as hilight solve takes them (cli::settle_placement, as the place action does): in the file's
   // coordinates, moved into the scene's frame; rooms and storeys by name (an IFC's IfcSpaces, else free
   // space split at doors), a bad name or a region:K that is not a room refused here; a building's lights
@@ -97,9 +101,12 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--max-edge", o.max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::Range(0.f, 1e30f));
   app.add_option("--target", target, "target PLY or glTF with vertex colours to start from (as `hilight solve --target` reads)");
   app.add_option("--lights", lights, "lights JSON or glTF (KHR_lights_punctual) to start from");
+  solve.add_placement(app);
+  solve.add_luminaire(app);
+  solve.add_units(app);
   solve.add_renderer(app);
   solve.add_plugins(app);
-  solve.add_placement(app);
+  solve.add_luminaire_tuning(app, "");
   app.add_option("--script", script, "session JSON to replay ({\"actions\": [...]}, docs/painter.md)");
   app.add_option("--screenshot", screenshot, "write the final frame (after the script) as PNG");
   app.add_option("--window-screenshot", window_screenshot, "the final frame with the panels, as PNG (for bug reports)");
@@ -127,6 +134,10 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   o.auto_fine_tune = !no_auto;
   o.job = solve.to_spec(registry);
   o.job.settings.placement = solve.placement();
+  // As hilight solve takes them (solve_options.hpp): every light this luminaire; the files in these units.
+  const std::optional<Light> given_luminaire = solve.luminaire();
+  o.units = solve.units();
+  o.quantity = solve.target_quantity();
   if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty() && window_screenshot.empty())
     throw InputError("paint: --exit without --script, --screenshot or --bench would do nothing");
   set_thread_limit(solve.renderer.threads);
@@ -153,7 +164,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   for (;;) {
     OpenedScene opened;
     try {
-      opened = open_scene(o, given_rules, std::move(next_loaded));
+      opened = open_scene(o, given_rules, given_luminaire, std::move(next_loaded));
     } catch (const InputError& e) {
       if (previous.empty() || o.exit_after_script) throw;
       o.open_error = std::string("cannot open the scene: ") + e.what();
@@ -161,7 +172,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
       // The recording goes on from the old scene, without the open that failed.
       if (o.recorded_before && !o.recorded_before->actions.empty() && o.recorded_before->actions.back().type == OpenSceneAction::kType)
         o.recorded_before->actions.pop_back();
-      opened = open_scene(o, given_rules);
+      opened = open_scene(o, given_rules, given_luminaire);
     }
     std::optional<PainterApp::NextScene> next;
     int code = 0;

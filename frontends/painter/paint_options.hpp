@@ -3,6 +3,7 @@
 #include "core/session.hpp"
 #include "core/solve_job.hpp"
 #include "hilight/named_room.hpp"
+#include "hilight/units.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -28,7 +29,9 @@ struct PaintOptions {
   int width = 1280, height = 800;
   std::string view = "result";       ///< the view to start in: result, target, difference
   bool auto_fine_tune = true;        ///< fine-tune after each stroke when there are lights
-  SolveJobOptions job;               ///< renderer, optimizer, sampler and solve settings
+  SolveJobOptions job;               ///< renderer, optimizer, sampler and solve settings (--luminaire: its settings.luminaire)
+  Units units = Units::Radiometric;  ///< --units: the lights and target files' numbers
+  TargetQuantity quantity = TargetQuantity::Radiance;  ///< --target-quantity: what a target file's values are
   /// The building default's note ("lights on the ceiling (an IFC building
   /// with storeys; --place anywhere lifts it)", solve_options.hpp); "" when
   /// it did not apply. The Placement panel says it while the rules are these.

@@ -51,6 +51,7 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_albedo = m_scene->vertex_albedo();
   m_preview = preview_radiance(*m_scene, m_albedo);
   m_document = std::make_unique<Document>(m_scene, m_rays);
+  m_document->set_units(m_options.units, m_options.quantity);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
   std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "%s", m_options.job.settings.placement.describe().c_str());
   m_solve_panel.named_rooms = m_options.named_rooms;

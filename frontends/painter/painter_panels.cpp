@@ -2,6 +2,7 @@
 // Buttons call perform() with the same actions a session script holds.
 #include "painter_app.hpp"
 #include "ui/tooltip.hpp"
+#include "hilight/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -291,10 +292,19 @@ void PainterApp::panel_lights() {
   char title[64];
   std::snprintf(title, sizeof title, "Lights (%zu)###lights", lights.size());
   if (!ImGui::CollapsingHeader(title)) return;
+  // Intensities in the unit the files use (--units): W/sr, or candela.
+  const Units units = m_document->units();
+  const Lighting shown = lights_to_units(lights, units);
+  const char* unit = units == Units::Photometric ? "cd" : "W/sr";
   for (size_t i = 0; i < lights.size(); ++i) {
     const Light& l = lights[i];
-    ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  I (%.3g, %.3g, %.3g)", i, to_string(l.type), l.position.x, l.position.y,
-                l.position.z, l.intensity.r, l.intensity.g, l.intensity.b);
+    const Rgb& I = shown[i].intensity;
+    if (l.type == LightType::Luminaire && l.profile)
+      ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  dimmed to %.0f%%", i, std::filesystem::path(l.profile_path).filename().string().c_str(),
+                  l.position.x, l.position.y, l.position.z, 100.0 * luminaire_dimming(l));
+    else
+      ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  I (%.3g, %.3g, %.3g) %s", i, to_string(l.type), l.position.x, l.position.y, l.position.z,
+                  I.r, I.g, I.b, unit);
     if (l.type == LightType::Spot && ImGui::IsItemHovered())
       ImGui::SetTooltip("direction (%.2f, %.2f, %.2f), cutoff %.1f deg, soft edge %.1f deg", l.direction.x, l.direction.y,
                         l.direction.z, l.cutoff_deg, l.falloff_deg);

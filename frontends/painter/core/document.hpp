@@ -8,6 +8,7 @@
 #include "hilight/lighting.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/target.hpp"
+#include "hilight/units.hpp"
 
 #include <cstdint>
 #include <deque>
@@ -81,6 +82,14 @@ public:
   Target target() const;
   /// Only the painted vertices `keep` accepts (a room focus); InputError(`if_none`) if none is.
   Target target(const std::function<bool(uint32_t)>& keep, const std::string& if_none) const;
+  /// What the files' numbers mean (--units, --target-quantity): lights files
+  /// read and written in `units` (W/sr or cd), targets read as `hilight
+  /// solve` reads them with the same options and written so that it reads
+  /// them back the same. Radiometric radiance until set.
+  void set_units(Units units, TargetQuantity quantity);
+  Units units() const { return m_units; }
+  /// Ψ per vertex in the files' units (set_units).
+  std::vector<Rgb> psi_in_file_units() const;
   /// Writes the painted vertices as a target PLY `hilight solve --target` reads.
   void save_target(const std::filesystem::path& path) const;
   /// Reads a target PLY (any `hilight solve` accepts): each point goes to the
@@ -101,6 +110,8 @@ private:
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
   std::vector<Rgb> m_albedo;
+  Units m_units = Units::Radiometric;
+  TargetQuantity m_quantity = TargetQuantity::Radiance;
   PaintState m_state;
   PaintState m_edit_start;
   bool m_editing = false;
