@@ -74,6 +74,7 @@ void PainterApp::show_fit(const JobResult& result) {
   m_solve_panel.fit_notes = fit_notes(r, {settings.fixed_count, building_default});
   for (const FitNote& note : m_solve_panel.fit_notes) status((note.warning ? "warning: " : "") + note.text);
   m_display.unreachable = result.unreachable_vertices;
+  if (const auto it = r.seconds.find("diagnosis"); it != r.seconds.end()) m_timer.add_latency("poor_fit_diagnosis", 1000.0 * it->second);
   m_display.colours_dirty = true;
 }
 

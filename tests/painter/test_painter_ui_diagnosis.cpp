@@ -51,7 +51,10 @@ TEST_CASE("painter ui: a poor fit says why in the window and stripes the painted
       {{"type", "stroke"}, {"world", {{4.5, 0.0, 1.5}}}},
       {{"type", "place"}, {"rules", "ceiling:0.2"}},
       {{"type", "solve"}},
-      {{"type", "save_target"}, {"path", (dir / "target.ply").string()}}};
+      {{"type", "save_target"}, {"path", (dir / "target.ply").string()}},
+      // A fine-tune's answer is diagnosed too (the solve's own look covers only solves).
+      {{"type", "stroke"}, {"world", {{4.0, 0.0, 2.0}}}},
+      {{"type", "fine_tune"}}};
   test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
   const test::RunResult run =
       test::run_hilight({"paint", room, "--size", "1100x820", "--set", "bounce_samples=16", "--samples", "800", "--no-cache", "--no-record",
@@ -62,6 +65,9 @@ TEST_CASE("painter ui: a poor fit says why in the window and stripes the painted
   // The window's log (stderr in a replay) says what hilight solve says.
   const int painter_share = unreachable_percent(run.err);
   CHECK(painter_share >= 10);
+  size_t warnings = 0;
+  for (size_t at = 0; (at = run.err.find("hilight: warning: poor fit", at)) != std::string::npos; ++at) ++warnings;
+  CHECK(warnings == 2);  // the solve's and the fine-tune's
   // The underside shows striped in the view, and the panels say what the stripes are.
   const size_t striped = magenta_pixels(dir / "view.png");
   INFO("magenta pixels " << striped);

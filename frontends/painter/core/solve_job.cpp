@@ -3,6 +3,7 @@
 #include "hilight/error.hpp"
 #include "hilight/solve/diagnosis.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
 namespace hilight::painter {
@@ -22,7 +23,9 @@ namespace {
 /// sample, and fine-tunes and adds not at all): the window marks them.
 void diagnose(const Solver& solver, const Target& target, JobResult& result) {
   if (!solver.judge().poor_fit(result.report.dbar)) return;
+  const auto start = std::chrono::steady_clock::now();
   const Unreachable found = find_unreachable(target, solver.light_space());
+  result.report.seconds["diagnosis"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.report.unreachable = found.share;
   for (uint32_t i : found.points)
     if (target.vertex[i] >= 0) result.unreachable_vertices.push_back(uint32_t(target.vertex[i]));
