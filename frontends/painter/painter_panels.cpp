@@ -107,9 +107,14 @@ void PainterApp::panel_tools() {
   changed |= ImGui::ColorEdit3("colour", &brush.colour.r, ImGuiColorEditFlags_Float);
   tip(brush.meaning == PaintMeaning::LampColour ? "The lamp's colour (linear RGB): the surface shows it as its own colour lit by such a lamp"
                                                 : "The light the surface should reflect (linear RGB), its own colour included");
-  changed |= ImGui::SliderFloat("brightness", &brush.brightness, 0.f, 20.f, "%.2f",
+  // In the files' unit (--units, --target-quantity): W/(sr m2), cd/m2, or the lux the surface receives.
+  const bool photometric = m_document->units() == Units::Photometric, lux = m_document->quantity() == TargetQuantity::Illuminance;
+  const char* brightness_label = lux ? "brightness (lux)" : photometric ? "brightness (cd/m2)" : "brightness";
+  changed |= ImGui::SliderFloat(brightness_label, &brush.brightness, 0.f, photometric ? 20000.f : 20.f, "%.2f",
                                 ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-  tip("How bright the surface should look: its luminance = that of colour x brightness");
+  tip(lux ? "The light the surface should receive, in lux (its colour the lamp's)"
+          : photometric ? "How bright the surface should look: its luminance in cd/m2 = that of colour x brightness"
+                        : "How bright the surface should look: its luminance in W/(sr m2) = that of colour x brightness");
   int meaning = int(brush.meaning);
   ImGui::TextUnformatted("paint means");
   ImGui::SameLine();

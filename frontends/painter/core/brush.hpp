@@ -39,8 +39,9 @@ float brush_coverage(const BrushSettings& brush, float distance);
 
 /// Applies one dab to `state`; returns how many vertices it touched.
 /// Vertices `visible` hides (clipped by the section or cut away) get no paint.
-/// `albedo`: per scene vertex (Document::albedo()), what the paint's meaning reads.
-size_t apply_dab(const Scene& scene, const std::vector<Rgb>& albedo, PaintState& state, const BrushSettings& brush, BrushMode mode,
+/// `state` is `document`'s open edit; the document says what the paint
+/// asks of each vertex (Document::painted_target: its albedo, the units).
+size_t apply_dab(const Document& document, PaintState& state, const BrushSettings& brush, BrushMode mode,
                  const SurfacePick& centre, const Visibility* visible = nullptr);
 
 /// One stroke = one undo step. Dabs show at once (the document's revision

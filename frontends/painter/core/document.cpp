@@ -122,6 +122,12 @@ void Document::set_units(Units units, TargetQuantity quantity) {
   m_quantity = quantity;
 }
 
+Rgb Document::painted_target(const Rgb& paint, PaintMeaning meaning, size_t v) const {
+  const float per_watt = m_units == Units::Photometric ? float(kLumensPerWatt) : 1.f;
+  if (m_quantity == TargetQuantity::Illuminance) return m_albedo[v] * paint / (per_watt * float(kPi));
+  return painted_radiance(paint, m_albedo[v], meaning) / per_watt;
+}
+
 std::vector<Rgb> Document::psi_in_file_units() const {
   // The inverse of target_from_units: cd/m² (683 lm/W), and for lux E = π L / ρ per channel.
   const float per_watt = m_units == Units::Photometric ? float(kLumensPerWatt) : 1.f;

@@ -9,6 +9,7 @@
 #include "hilight/ray_scene.hpp"
 #include "hilight/target.hpp"
 #include "hilight/units.hpp"
+#include "core/paint_meaning.hpp"
 
 #include <cstdint>
 #include <deque>
@@ -88,6 +89,12 @@ public:
   /// them back the same. Radiometric radiance until set.
   void set_units(Units units, TargetQuantity quantity);
   Units units() const { return m_units; }
+  TargetQuantity quantity() const { return m_quantity; }
+  /// The Ψ that `paint` (colour × brightness, in the files' units: W/(sr m²),
+  /// cd/m², or lux with an illuminance quantity) asks of vertex `v`, read
+  /// as `meaning` says (core/paint_meaning.hpp). Lux is the light the
+  /// surface receives, its colour the lamp's: Ψ = ρ ⊙ E / π, either meaning.
+  Rgb painted_target(const Rgb& paint, PaintMeaning meaning, size_t v) const;
   /// Ψ per vertex in the files' units (set_units).
   std::vector<Rgb> psi_in_file_units() const;
   /// Writes the painted vertices as a target PLY `hilight solve --target` reads.
