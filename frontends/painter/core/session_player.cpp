@@ -461,7 +461,7 @@ void SessionPlayer::commit(JobResult& result) {
     return;
   }
   std::ostringstream label;
-  label << to_string(result.kind) << ": " << result.lights.size() << " lights";
+  label << to_string(result.kind) << ": " << result.lights.size() << (result.lights.size() == 1 ? " light" : " lights");
   m_document.set_lights(result.lights, label.str());
   std::ostringstream line;
   line << label.str() << ", D̄ " << 100.0 * result.report.dbar << "%";
