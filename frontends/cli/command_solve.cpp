@@ -14,6 +14,7 @@
 #include "hilight/io/photometry_io.hpp"
 #include "hilight/units.hpp"
 #include "hilight/scene_origin.hpp"
+#include "hilight/solve/fit_notes.hpp"
 #include "hilight/solve/judge.hpp"
 #include "hilight/solve/solve_session.hpp"
 #include "hilight/threads.hpp"
@@ -81,32 +82,6 @@ nlohmann::json report_json(const SolveReport& r, const std::string& renderer, co
 
 } // namespace
 
-namespace {
-
-/// `--area-light rectangle:WxH | disk:D | line:L`: a Lambertian source aimed
-/// straight down, its first side (or length) along +X.
-Light area_light_template(const std::string& spec) {
-  const size_t colon = spec.find(':');
-  const std::string shape = spec.substr(0, colon), sizes = colon == std::string::npos ? "" : spec.substr(colon + 1);
-  LightType type;
-  const bool known = light_type_from_string(shape, type) && is_area(type);
-  glm::vec2 size(0.f);
-  char* end = nullptr;
-  size[0] = std::strtof(sizes.c_str(), &end);
-  bool ok = known && end != sizes.c_str();
-  if (ok && type == LightType::Rectangle) {
-    ok = *end == 'x';
-    const char* second = end + 1;
-    if (ok) size[1] = std::strtof(second, &end), ok = end != second;
-  }
-  ok = ok && *end == '\0';
-  Light l = Light::area(known ? type : LightType::Rectangle, Vec3(0.f), {0.f, -1.f, 0.f}, {1.f, 0.f, 0.f}, size, Rgb(1.f));
-  if (!ok || !area_light_problem(l).empty())
-    throw InputError("--area-light " + spec + ": give rectangle:WxH, disk:D or line:L with positive sizes, e.g. rectangle:0.6x0.6");
-  return l;
-}
-
-} // namespace
 
 int run_solve(const std::vector<std::string>& args, Registry& registry) {
   CommandProgress progress;  // first: the summary's time is the whole command's
@@ -126,10 +101,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   float mount_offset = -1.f;
   bool vertex_colours = false;
   std::string html_path;
-  std::string luminaire_path;
-  float luminaire_spin = 0.f;
-  std::string luminaire_size, area_light;
-  std::string units_name = "radiometric", quantity_name = "luminance";
+  const std::string& units_name = solve.units_name;
   SceneLoadOptions scene_options;
   // What a user needs, in the order they need it; the rest under kSolveAdvanced.
   app.add_option("scene", scene_path, "the scene: any format assimp reads (OBJ, glTF, FBX, IFC, ...)")->required();
@@ -141,21 +113,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       ->required();
   app.add_option("--lights", s.fixed_count, "how many lights (default: the solve decides)")->check(CLI::Range(1, 10000));
   solve.add_placement(app);
-  app.add_option("--luminaire", luminaire_path,
-                 "every light is this luminaire (an .ies or .ldt file), aimed down: the solve finds how many, where, and their dimming");
-  app.add_option("--area-light", area_light,
-                 "every light is a flat panel or tube aimed down: rectangle:WxH, disk:D or line:L (in the scene's unit)");
+  solve.add_luminaire(app);  // --luminaire, --area-light (hilight paint takes them too)
   app.add_option("--mount", mount, "ceiling: every light hangs --offset below the ceiling (the same as --place ceiling:OFFSET)")
       ->check(CLI::IsMember({"ceiling"}));
   app.add_option("--offset", mount_offset, "with --mount ceiling: how far below the ceiling")->check(CLI::Range(1e-6, 1e6));
-  app.add_option("--units", units_name,
-                 "radiometric: intensities in W/sr, painted values in W/(sr m2); photometric: candela, and cd/m2 or lux "
-                 "(--target-quantity). A lights file that states its intensity_unit is read in it")
-      ->check(CLI::IsMember({"radiometric", "photometric"}))
-      ->capture_default_str();
-  app.add_option("--target-quantity", quantity_name, "what the painted values are: luminance, or illuminance (lux on the surface; photometric)")
-      ->check(CLI::IsMember({"luminance", "radiance", "illuminance"}))
-      ->capture_default_str();
+  solve.add_units(app);  // --units, --target-quantity
   app.add_option("--report-html", html_path,
                  "write a page to look at: target, result and difference from three views, a plan of each storey, the lights, timings");
   app.add_option("--report", report_path, "write the figures as JSON (D̄, light count, flux, timings)");
@@ -172,13 +134,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
 
   // Advanced: the paper's parameters, the plugins and their tuning.
   app.add_option("--spot-hints", hints_path, "lights JSON of spotlights wanted (position, direction, cutoff; intensity ignored)")->group(kSolveAdvanced);
-  app.add_option("--luminaire-spin", luminaire_spin, "turn the luminaire's C0 plane about its aim, degrees")
-      ->check(CLI::Range(-360.0, 360.0))
-      ->group(kSolveAdvanced);
-  app.add_option("--luminaire-size", luminaire_size,
-                 "auto: the luminaire is its file's luminous opening (a rectangle, disk or line), integrated over it; W,L: a "
-                 "rectangle W across and L along its C0 plane, metres")
-      ->group(kSolveAdvanced);
+  solve.add_luminaire_tuning(app, kSolveAdvanced);
   app.add_flag("--vertex-colours", vertex_colours, "with a .gltf/.glb output: the result as COLOR_0 and the target as COLOR_1 (alpha: weight) per vertex")
       ->group(kSolveAdvanced);
   app.add_option("--energy-tolerance", criteria.design.energy_tolerance,
@@ -209,40 +165,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   if (!report_path.empty()) check_writable(report_path);
   if (!html_path.empty()) check_writable(html_path);
   if (vertex_colours && !is_gltf_path(output)) throw InputError("--vertex-colours needs a .gltf or .glb output, not " + output);
-  if (!luminaire_path.empty()) {
-    Light luminaire;
-    luminaire.type = LightType::Luminaire;
-    luminaire.profile = std::make_shared<const Photometry>(read_photometry(luminaire_path));
-    luminaire.profile_path = std::filesystem::absolute(luminaire_path).lexically_normal().string();
-    luminaire.direction = Vec3(0.f, -1.f, 0.f);
-    luminaire.spin_deg = luminaire_spin;
-    if (!(luminaire.profile->peak() > 0)) throw InputError(luminaire_path, "the luminaire emits no light (all candela 0)");
-    s.luminaire = std::move(luminaire);
-  } else if (luminaire_spin != 0.f) {
-    throw InputError("--luminaire-spin needs --luminaire");
-  }
+  s.luminaire = solve.luminaire();  // --luminaire (sized, turned) or --area-light, checked
   check_criteria_options(app, is_criteria_target(target_path));
-  if (!luminaire_size.empty()) {
-    if (!s.luminaire) throw InputError("--luminaire-size needs --luminaire");
-    if (luminaire_size != "auto") {  // W,L: the file's opening replaced
-      const size_t comma = luminaire_size.find(',');
-      char* end = nullptr;
-      const double w = std::strtod(luminaire_size.c_str(), &end);
-      const bool first = comma != std::string::npos && end == luminaire_size.c_str() + comma;
-      const double l = first ? std::strtod(luminaire_size.c_str() + comma + 1, &end) : 0.0;
-      if (!first || *end != '\0' || !(w > 0 && w <= 100) || !(l > 0 && l <= 100))
-        throw InputError("--luminaire-size " + luminaire_size + ": give auto, or W,L in metres (each in (0, 100]), e.g. 0.6,0.6");
-      Photometry sized = *s.luminaire->profile;
-      sized.opening_width = w, sized.opening_length = l, sized.opening_round = false;
-      s.luminaire->profile = std::make_shared<const Photometry>(std::move(sized));
-    }
-    if (!with_luminous_opening(*s.luminaire))
-      throw InputError(luminaire_path, "gives no luminous opening (its width and length are 0): --luminaire-size auto needs one");
-  }
-  if (!area_light.empty()) {
-    if (s.luminaire) throw InputError("--area-light and --luminaire exclude each other (--luminaire-size auto: the luminaire's own opening)");
-    s.luminaire = area_light_template(area_light);
-  }
   if (is_criteria_target(target_path)) {
     if (mode != "solve") throw InputError("--mode " + mode + " works on painted targets, not on criteria (" + target_path + ")");
     progress.start(quiet);
@@ -260,10 +184,8 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     criteria.renderer = ropts;
     return solve_for_criteria(criteria, registry);
   }
-  const Units units = parse_units(units_name);
-  const TargetQuantity quantity = parse_target_quantity(quantity_name);
-  if (quantity == TargetQuantity::Illuminance && units != Units::Photometric)
-    throw InputError("--target-quantity illuminance is in lux: it needs --units photometric");
+  const Units units = solve.units();
+  const TargetQuantity quantity = solve.target_quantity();
   // Read now to fail before the scene loads, and again once its frame is known.
   auto read_hints = [&](const SceneFrame* frame) {
     Lighting hints = read_lights_file(hints_path, units, frame);
@@ -414,29 +336,11 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
       if (lights[j].profile && luminaire_dimming(lights[j]) > 1.0 + 1e-6)
         std::fprintf(stderr, "hilight: warning: light %zu needs %.0f%% of the luminaire's rated output (more luminaires, or a brighter one)\n", j,
                      100.0 * luminaire_dimming(lights[j]));
-  // A count the solve could not reach is said, and why (issue 35): no free
-  // place was left where one more light changes the fit.
-  if (s.fixed_count > 0 && report.chosen < s.fixed_count)
-    std::fprintf(stderr,
-                 "hilight: warning: --lights %zu: the solve placed %zu: no place was left in the scene where one more light "
-                 "changes the fit (D̄ %.2f%%)\n",
-                 s.fixed_count, report.chosen, 100.0 * report.dbar);
-  // No silent failure: a poor fit says so, whatever --quiet says, and
-  // --max-dbar makes it an error (after the files are written).
-  if (report.dbar > kPoorFit && report.unreachable >= 0.1)
-    std::fprintf(stderr,
-                 "hilight: warning: poor fit, D̄ %.1f%% with %zu light%s: %.0f%% of the target's light is on points that no "
-                 "place a light may stand can see (inside solids, or shut off by the --place rules)\n",
-                 100.0 * report.dbar, report.chosen, report.chosen == 1 ? "" : "s", 100.0 * report.unreachable);
-  else if (report.dbar > kPoorFit)
-    std::fprintf(stderr,
-                 "hilight: warning: poor fit, D̄ %.1f%% with %zu light%s: parts of the target may be unreachable by any "
-                 "light, or need another light count (--lights N) or spotlight hints (--spot-hints)\n",
-                 100.0 * report.dbar, report.chosen, report.chosen == 1 ? "" : "s");
-  // A poor fit under the building default may be the default's doing: say how to lift it.
-  if (report.dbar > kPoorFit && !building_note.empty())
-    std::fprintf(stderr, "hilight: the lights were held on the ceiling (a building's default): if the target's lamps hang lower, "
-                         "--place anywhere frees them\n");
+  // A count not reached, a poor fit and why, whatever --quiet says (no silent
+  // failure; --max-dbar makes it an error after the files are written). The
+  // painter's Solve panel says the same (fit_notes.hpp).
+  for (const FitNote& note : fit_notes(report, {s.fixed_count, !building_note.empty()}))
+    std::fprintf(stderr, "hilight: %s%s\n", note.warning ? "warning: " : "", note.text.c_str());
   if (max_dbar >= 0 && report.dbar > max_dbar) {
     std::fprintf(stderr, "hilight: %s: D̄ %.2f%% is above --max-dbar %.2f%% (lights written to %s)\n", target_path.c_str(),
                  100.0 * report.dbar, 100.0 * max_dbar, output.c_str());

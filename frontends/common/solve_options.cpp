@@ -1,5 +1,7 @@
 #include "solve_options.hpp"
 
+#include "hilight/error.hpp"
+#include "hilight/io/photometry_io.hpp"
 #include "hilight/light_bounds.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/ray_scene.hpp"
@@ -7,6 +9,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 
@@ -31,6 +34,106 @@ void SolveOptions::add_placement(CLI::App& app) {
 }
 
 void SolveOptions::add_renderer(CLI::App& app, const std::string& tuning_group) { renderer.add_to(app, tuning_group); }
+
+void SolveOptions::add_luminaire(CLI::App& app) {
+  app.add_option("--luminaire", luminaire_path,
+                 "every light is this luminaire (an .ies or .ldt file), aimed down: the solve finds how many, where, and their dimming");
+  app.add_option("--area-light", area_light,
+                 "every light is a flat panel or tube aimed down: rectangle:WxH, disk:D or line:L (in the scene's unit)");
+}
+
+void SolveOptions::add_luminaire_tuning(CLI::App& app, const std::string& group) {
+  group_all({app.add_option("--luminaire-spin", luminaire_spin, "turn the luminaire's C0 plane about its aim, degrees")->check(CLI::Range(-360.0, 360.0)),
+             app.add_option("--luminaire-size", luminaire_size,
+                            "auto: the luminaire is its file's luminous opening (a rectangle, disk or line), integrated over it; W,L: a "
+                            "rectangle W across and L along its C0 plane, metres")},
+            group);
+}
+
+void SolveOptions::add_units(CLI::App& app) {
+  app.add_option("--units", units_name,
+                 "radiometric: intensities in W/sr, painted values in W/(sr m2); photometric: candela, and cd/m2 or lux "
+                 "(--target-quantity). A lights file that states its intensity_unit is read in it")
+      ->check(CLI::IsMember({"radiometric", "photometric"}))
+      ->capture_default_str();
+  app.add_option("--target-quantity", quantity_name, "what the painted values are: luminance, or illuminance (lux on the surface; photometric)")
+      ->check(CLI::IsMember({"luminance", "radiance", "illuminance"}))
+      ->capture_default_str();
+}
+
+Units SolveOptions::units() const { return parse_units(units_name); }
+
+TargetQuantity SolveOptions::target_quantity() const {
+  const TargetQuantity quantity = parse_target_quantity(quantity_name);
+  if (quantity == TargetQuantity::Illuminance && units() != Units::Photometric)
+    throw InputError("--target-quantity illuminance is in lux: it needs --units photometric");
+  return quantity;
+}
+
+namespace {
+
+/// `--area-light rectangle:WxH | disk:D | line:L`: a Lambertian source aimed
+/// straight down, its first side (or length) along +X.
+Light area_light_template(const std::string& spec) {
+  const size_t colon = spec.find(':');
+  const std::string shape = spec.substr(0, colon), sizes = colon == std::string::npos ? "" : spec.substr(colon + 1);
+  LightType type;
+  const bool known = light_type_from_string(shape, type) && is_area(type);
+  glm::vec2 size(0.f);
+  char* end = nullptr;
+  size[0] = std::strtof(sizes.c_str(), &end);
+  bool ok = known && end != sizes.c_str();
+  if (ok && type == LightType::Rectangle) {
+    ok = *end == 'x';
+    const char* second = end + 1;
+    if (ok) size[1] = std::strtof(second, &end), ok = end != second;
+  }
+  ok = ok && *end == '\0';
+  Light l = Light::area(known ? type : LightType::Rectangle, Vec3(0.f), {0.f, -1.f, 0.f}, {1.f, 0.f, 0.f}, size, Rgb(1.f));
+  if (!ok || !area_light_problem(l).empty())
+    throw InputError("--area-light " + spec + ": give rectangle:WxH, disk:D or line:L with positive sizes, e.g. rectangle:0.6x0.6");
+  return l;
+}
+
+} // namespace
+
+std::optional<Light> SolveOptions::luminaire() const {
+  std::optional<Light> chosen;
+  if (!luminaire_path.empty()) {
+    Light luminaire;
+    luminaire.type = LightType::Luminaire;
+    luminaire.profile = std::make_shared<const Photometry>(read_photometry(luminaire_path));
+    luminaire.profile_path = std::filesystem::absolute(luminaire_path).lexically_normal().string();
+    luminaire.direction = Vec3(0.f, -1.f, 0.f);
+    luminaire.spin_deg = luminaire_spin;
+    if (!(luminaire.profile->peak() > 0)) throw InputError(luminaire_path, "the luminaire emits no light (all candela 0)");
+    chosen = std::move(luminaire);
+  } else if (luminaire_spin != 0.f) {
+    throw InputError("--luminaire-spin needs --luminaire");
+  }
+  if (!luminaire_size.empty()) {
+    if (!chosen) throw InputError("--luminaire-size needs --luminaire");
+    if (luminaire_size != "auto") {  // W,L: the file's opening replaced
+      const size_t comma = luminaire_size.find(',');
+      char* end = nullptr;
+      const double w = std::strtod(luminaire_size.c_str(), &end);
+      const bool first = comma != std::string::npos && end == luminaire_size.c_str() + comma;
+      const double l = first ? std::strtod(luminaire_size.c_str() + comma + 1, &end) : 0.0;
+      if (!first || *end != '\0' || !(w > 0 && w <= 100) || !(l > 0 && l <= 100))
+        throw InputError("--luminaire-size " + luminaire_size + ": give auto, or W,L in metres (each in (0, 100]), e.g. 0.6,0.6");
+      Photometry sized = *chosen->profile;
+      sized.opening_width = w, sized.opening_length = l, sized.opening_round = false;
+      chosen->profile = std::make_shared<const Photometry>(std::move(sized));
+    }
+    if (!with_luminous_opening(*chosen))
+      throw InputError(luminaire_path, "gives no luminous opening (its width and length are 0): --luminaire-size auto needs one");
+  }
+  if (!area_light.empty()) {
+    if (chosen) throw InputError("--area-light and --luminaire exclude each other (--luminaire-size auto: the luminaire's own opening)");
+    chosen = area_light_template(area_light);
+  }
+  return chosen;
+}
 
 void SolveOptions::add_plugins(CLI::App& app, const std::string& group) {
   SolveSettings& s = spec.settings;

@@ -4,10 +4,12 @@
 /// SolveSpec that SolveSession assembles the solve from.
 #include "cli_common.hpp"
 #include "hilight/solve/solve_session.hpp"
+#include "hilight/units.hpp"
 
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,9 @@ struct SolveOptions {
   std::vector<std::string> place;  ///< --place rules as given
   std::string cache_dir;           ///< --cache-dir ("": default_cache_dir())
   bool no_cache = false;           ///< --no-cache
+  std::string units_name = "radiometric", quantity_name = "luminance";  ///< --units, --target-quantity
+  std::string luminaire_path, area_light, luminaire_size;  ///< --luminaire, --area-light, --luminaire-size
+  float luminaire_spin = 0.f;                              ///< --luminaire-spin
 
   /// --place: where lights may stand.
   void add_placement(CLI::App& app);
@@ -35,8 +40,23 @@ struct SolveOptions {
   /// --seed, --propose-spots, --no-residual-samples, --open-space-dbar.
   void add_paper_parameters(CLI::App& app, const std::string& group);
 
+  /// --luminaire and --area-light: what every light is.
+  void add_luminaire(CLI::App& app);
+  /// --luminaire-spin and --luminaire-size, in `group`.
+  void add_luminaire_tuning(CLI::App& app, const std::string& group);
+  /// --units and --target-quantity: what the files' numbers mean.
+  void add_units(CLI::App& app);
+
   /// --place's rules (InputError names a bad one).
   PlacementRules placement() const;
+  /// The light every solve places (--luminaire read and sized, or
+  /// --area-light), nullopt for point lights; InputError for a bad file or
+  /// size, or a tuning without --luminaire. An --area-light's size is in
+  /// the scene's unit: scale it by the scene frame's once loaded.
+  std::optional<Light> luminaire() const;
+  /// --units, --target-quantity (InputError for lux without photometric units).
+  Units units() const;
+  TargetQuantity target_quantity() const;
   /// The spec to solve with: `spec` with --no-cache, the renderer and its
   /// settings (--bounces within what it carries), the cache folder and cap.
   /// Its placement is `spec.settings.placement`, as the frontend set it from

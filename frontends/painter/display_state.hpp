@@ -23,6 +23,9 @@ struct DisplayState {
   uint64_t colours_revision = 0;
   std::optional<Lighting> requested_lights;  ///< what the illumination worker was last asked for
   bool colours_dirty = true;
+  /// A poor fit's painted vertices that no allowed place sees: hatched in
+  /// every view until the next job's answer.
+  std::vector<uint32_t> unreachable;
   std::string last_activity = "idle";  ///< what the last frame did (for --timings)
 };
 

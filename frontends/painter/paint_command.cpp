@@ -45,6 +45,45 @@ void check_image_path(const std::string& option, const std::filesystem::path& pa
   check_writable(path);
 }
 
+/// A scene loaded for painting, with what holds it built.
+struct OpenedScene {
+  std::shared_ptr<const Scene> scene;
+  std::shared_ptr<const RayScene> rays;  ///< held: the painter's RayScene::shared finds it built
+};
+
+/// Loads `o.scene` (unless `loaded` holds it) and settles the command line's
+/// rules on it (o's job placement, building note, storeys and named rooms).
+OpenedScene open_scene(PaintOptions& o, const PlacementRules& given_rules, const std::optional<Light>& given_luminaire,
+                       std::shared_ptr<const Scene> loaded = nullptr) {
+  o.started = std::chrono::steady_clock::now();  // --timings: open_to_first_frame counts from here
+  OpenedScene opened;
+  if (!loaded) loaded = std::make_shared<const Scene>(load_scene(o.scene, {o.max_edge}));
+  opened.scene = loaded;
+  // --area-light's size is in the scene's unit (a luminaire file's opening is in metres already).
+  o.job.settings.luminaire = given_luminaire;
+  if (given_luminaire && is_area(given_luminaire->type) && !given_luminaire->profile) o.job.settings.luminaire->size *= float(loaded->frame.scale);
+  // The rules as hilight solve takes them (cli::settle_placement, as the place action does): in the file's
+  // coordinates, moved into the scene's frame; rooms and storeys by name (an IFC's IfcSpaces, else free
+  // space split at doors), a bad name or a region:K that is not a room refused here; a building's lights
+  // hang from the ceiling unless --place says where (not when --lights gives them: their places are the
+  // user's); the Placement panel says why, Anywhere lifts it.
+  PlacementRules& rules = o.job.settings.placement;
+  rules = rules_to_local(given_rules, loaded->frame);
+  if (!rules.regions.empty()) opened.rays = RayScene::shared(loaded);
+  o.ifc_storeys = cli::ifc_has_storeys(o.scene);
+  o.named_rooms.reset();
+  const cli::PlacementScene placement_scene{loaded, o.ifc_storeys,
+                                            [&](const RayScene& r) {
+                                              opened.rays = RayScene::shared(loaded);
+                                              o.named_rooms = cli::scene_rooms(o.scene, r);
+                                              return *o.named_rooms;
+                                            },
+                                            nullptr};
+  o.building_note = cli::settle_placement(rules, placement_scene, o.lights.empty());
+  if (!o.building_note.empty()) std::fprintf(stderr, "hilight: %s\n", o.building_note.c_str());
+  return opened;
+}
+
 } // namespace
 
 int run_paint(const std::vector<std::string>& args, Registry& registry) {
@@ -62,9 +101,12 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--max-edge", o.max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::Range(0.f, 1e30f));
   app.add_option("--target", target, "target PLY or glTF with vertex colours to start from (as `hilight solve --target` reads)");
   app.add_option("--lights", lights, "lights JSON or glTF (KHR_lights_punctual) to start from");
+  solve.add_placement(app);
+  solve.add_luminaire(app);
+  solve.add_units(app);
   solve.add_renderer(app);
   solve.add_plugins(app);
-  solve.add_placement(app);
+  solve.add_luminaire_tuning(app, "");
   app.add_option("--script", script, "session JSON to replay ({\"actions\": [...]}, docs/painter.md)");
   app.add_option("--screenshot", screenshot, "write the final frame (after the script) as PNG");
   app.add_option("--window-screenshot", window_screenshot, "the final frame with the panels, as PNG (for bug reports)");
@@ -92,6 +134,10 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   o.auto_fine_tune = !no_auto;
   o.job = solve.to_spec(registry);
   o.job.settings.placement = solve.placement();
+  // As hilight solve takes them (solve_options.hpp): every light this luminaire; the files in these units.
+  const std::optional<Light> given_luminaire = solve.luminaire();
+  o.units = solve.units();
+  o.quantity = solve.target_quantity();
   if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty() && window_screenshot.empty())
     throw InputError("paint: --exit without --script, --screenshot or --bench would do nothing");
   set_thread_limit(solve.renderer.threads);
@@ -108,29 +154,44 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
     throw InputError("paint: renderer '" + o.job.renderer + "' is unavailable: " + why);
   std::optional<Session> session;
   if (!o.script.empty()) session = read_session(o.script);
-  o.started = std::chrono::steady_clock::now();  // --timings: open_to_first_frame counts from here
-  auto loaded = std::make_shared<const Scene>(load_scene(o.scene, {o.max_edge}));
-  // The rules as hilight solve takes them (cli::settle_placement, as the place action does): in the file's
-  // coordinates, moved into the scene's frame; rooms and storeys by name (an IFC's IfcSpaces, else free
-  // space split at doors), a bad name or a region:K that is not a room refused here; a building's lights
-  // hang from the ceiling unless --place says where (not when --lights gives them: their places are the
-  // user's); the Placement panel says why, Anywhere lifts it.
-  PlacementRules& rules = o.job.settings.placement;
-  rules = rules_to_local(std::move(rules), loaded->frame);
-  std::shared_ptr<const RayScene> rays;  // held: the painter's RayScene::shared finds it built
-  if (!rules.regions.empty()) rays = RayScene::shared(loaded);
-  o.ifc_storeys = cli::ifc_has_storeys(o.scene);
-  const cli::PlacementScene placement_scene{loaded, o.ifc_storeys,
-                                            [&](const RayScene& r) {
-                                              rays = RayScene::shared(loaded);
-                                              o.named_rooms = cli::scene_rooms(o.scene, r);
-                                              return *o.named_rooms;
-                                            },
-                                            nullptr};
-  o.building_note = cli::settle_placement(rules, placement_scene, o.lights.empty());
-  if (!o.building_note.empty()) std::fprintf(stderr, "hilight: %s\n", o.building_note.c_str());
-  PainterApp painter(o, registry, loaded, std::move(session));
-  return painter.run();
+  // An open_scene (the Files panel, a script) reads the scene, then ends
+  // the window; it starts again on the new scene with the rules the command
+  // line gave. Rules that do not fit it (a room name it lacks) bring the old
+  // scene back, afresh, and say why (in a replay, an error).
+  const PlacementRules given_rules = o.job.settings.placement;
+  std::filesystem::path previous;
+  std::shared_ptr<const Scene> next_loaded;
+  for (;;) {
+    OpenedScene opened;
+    try {
+      opened = open_scene(o, given_rules, given_luminaire, std::move(next_loaded));
+    } catch (const InputError& e) {
+      if (previous.empty() || o.exit_after_script) throw;
+      o.open_error = std::string("cannot open the scene: ") + e.what();
+      o.scene = previous;
+      // The recording goes on from the old scene, without the open that failed.
+      if (o.recorded_before && !o.recorded_before->actions.empty() && o.recorded_before->actions.back().type == OpenSceneAction::kType)
+        o.recorded_before->actions.pop_back();
+      opened = open_scene(o, given_rules, given_luminaire);
+    }
+    std::optional<PainterApp::NextScene> next;
+    int code = 0;
+    {
+      PainterApp painter(o, registry, opened.scene, std::move(session));
+      code = painter.run();
+      next = painter.next_scene();
+    }
+    if (!next) return code;
+    previous = o.scene;
+    o.scene = next->scene;
+    next_loaded = next->loaded;
+    o.target.clear();
+    o.lights.clear();
+    session = std::move(next->rest_of_script);
+    o.recorded_before = std::move(next->recorded);
+    o.record = next->record_path;
+    o.open_error.clear();
+  }
 }
 
 } // namespace hilight::painter

@@ -1,7 +1,9 @@
 #pragma once
 /// What `hilight paint` was asked to do (parsed by paint_command.cpp).
+#include "core/session.hpp"
 #include "core/solve_job.hpp"
 #include "hilight/named_room.hpp"
+#include "hilight/units.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -27,7 +29,9 @@ struct PaintOptions {
   int width = 1280, height = 800;
   std::string view = "result";       ///< the view to start in: result, target, difference
   bool auto_fine_tune = true;        ///< fine-tune after each stroke when there are lights
-  SolveJobOptions job;               ///< renderer, optimizer, sampler and solve settings
+  SolveJobOptions job;               ///< renderer, optimizer, sampler and solve settings (--luminaire: its settings.luminaire)
+  Units units = Units::Radiometric;  ///< --units: the lights and target files' numbers
+  TargetQuantity quantity = TargetQuantity::Radiance;  ///< --target-quantity: what a target file's values are
   /// The building default's note ("lights on the ceiling (an IFC building
   /// with storeys; --place anywhere lifts it)", solve_options.hpp); "" when
   /// it did not apply. The Placement panel says it while the rules are these.
@@ -37,6 +41,11 @@ struct PaintOptions {
   bool ifc_storeys = false;
   /// The scene's named rooms, when the command line's rules named one (read once).
   std::optional<std::vector<NamedRoom>> named_rooms;
+  /// After an `open_scene`: the session recorded so far (the new scene's
+  /// actions follow it, so the recording replays from the first scene), and
+  /// why the scene asked for could not be opened ("" when it was).
+  std::optional<Session> recorded_before;
+  std::string open_error;
   /// When `hilight paint` began loading (--timings: open_to_first_frame).
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };

@@ -51,11 +51,14 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_albedo = m_scene->vertex_albedo();
   m_preview = preview_radiance(*m_scene, m_albedo);
   m_document = std::make_unique<Document>(m_scene, m_rays);
+  m_document->set_units(m_options.units, m_options.quantity);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
   std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "%s", m_options.job.settings.placement.describe().c_str());
   m_solve_panel.named_rooms = m_options.named_rooms;
   m_solve_panel.building_note = m_options.building_note;
   m_solve_panel.noted_rules = m_options.job.settings.placement.describe();
+  if (m_options.recorded_before)  // after an open_scene: the recording goes on
+    for (const Action& a : m_options.recorded_before->actions) m_recorder.record(a);
   if (!m_options.no_record || !m_options.record.empty()) {
     const bool interactive = !m_options.exit_after_script;
     if (!m_options.record.empty()) m_record_path = m_options.record;
@@ -121,6 +124,12 @@ int PainterApp::run() {
       const Action& action = m_script->actions[i];
       m_player->apply(action, i);
       record(action);
+      if (m_open_scene) {
+        // The rest of the script is the next scene's (paint_command.cpp starts the window again).
+        m_script_rest = Session{{m_script->actions.begin() + std::ptrdiff_t(i) + 1, m_script->actions.end()}};
+        m_job->cancel();
+        return 0;
+      }
       if (action.type == CameraAction::kType) m_display.last_activity = "camera";
       frame(false);
       m_display.last_activity = "idle";
@@ -147,7 +156,8 @@ int PainterApp::run() {
   m_player = std::move(interactive);
   m_shown_visibility = ~uint64_t(0);  // a new player counts from 0: upload its visibility
   if (!m_record_path.empty()) status("recording this session to " + m_record_path.string());
-  while (!m_window->should_close()) {
+  if (!m_options.open_error.empty()) status(m_options.open_error);
+  while (!m_window->should_close() && !m_open_scene) {
     try {
       frame(true);
     } catch (const InputError& e) {
@@ -161,6 +171,11 @@ int PainterApp::run() {
   m_job->cancel();
   write_timings();  // the interactive frames too: what a designer's hands produced
   return 0;
+}
+
+std::optional<PainterApp::NextScene> PainterApp::next_scene() const {
+  if (!m_open_scene) return std::nullopt;
+  return NextScene{*m_open_scene, m_next_scene, m_script_rest, m_recorder.session(), m_record_path};
 }
 
 void PainterApp::write_timings() const {
@@ -296,6 +311,8 @@ void PainterApp::refresh_colours() {
   case ui::ViewMode::Target: colours = ui::target_colours(s.psi, s.weight, m_preview, exposure); break;
   case ui::ViewMode::Difference: colours = ui::difference_colours(s.psi, s.weight, m_display.radiance, m_preview, exposure); break;
   }
+  for (uint32_t v : m_display.unreachable)
+    if (v < colours.size()) colours[v].hatch = ui::kUnreachableHatch;
   m_mesh->set_colours(colours);
   ++m_colour_uploads;
   m_display.colours_revision = m_document->revision();

@@ -45,8 +45,21 @@ public:
   PainterApp& operator=(const PainterApp&) = delete;
 
   /// Replays the script (if any), writes the screenshot, runs the bench if
-  /// asked, then (without --exit) stays interactive until the window closes.
+  /// asked, then (without --exit) stays interactive until the window closes
+  /// or another scene is opened (next_scene()).
   int run();
+
+  /// What run() ended for when an `open_scene` ended it: the scene, the
+  /// script's actions still to replay there, the recording so far and where
+  /// it goes. nullopt when the window closed or the script ended.
+  struct NextScene {
+    std::filesystem::path scene;
+    std::shared_ptr<const Scene> loaded;  ///< read already: one that cannot be read never closes the window
+    std::optional<Session> rest_of_script;
+    Session recorded;
+    std::filesystem::path record_path;
+  };
+  std::optional<NextScene> next_scene() const;
 
 private:
   using Clock = std::chrono::steady_clock;
@@ -88,6 +101,9 @@ private:
   std::filesystem::path default_record_path() const;
   void screenshot(const std::filesystem::path& path);
   void status(const std::string& line);
+  /// A job's answer went into the document: the Solve panel's line and notes,
+  /// the unreachable painted vertices marked (hooks.fit).
+  void show_fit(const JobResult& result);
 
   // --- input (painter_input.cpp) ---
   void handle_input();
@@ -110,11 +126,19 @@ private:
   void panel_tools();
   void panel_view();
   void panel_solve();
+  /// The last answer's light count and D̄, why a poor fit is poor, and what the view marks.
+  void panel_fit();
   /// Where lights may stand: the --place rules as one line, applied by a
   /// recorded "place" action.
   void panel_placement();
   void panel_lights();
   void panel_files();
+  /// The file browser (painter_files.cpp): opened for a purpose, it lists a
+  /// folder; its choice becomes that purpose's recorded action.
+  void open_browser(FilePurpose purpose, const std::filesystem::path& current);
+  void panel_file_browser();
+  /// Performs the purpose's action on `path`; false when it failed (the status line says why).
+  bool choose_file(FilePurpose purpose, const std::filesystem::path& path);
   void panel_help();
   void panel_status();
   void popup_shadow_pairs();
@@ -183,6 +207,9 @@ private:
   BuildingState m_building;      ///< Building panel: section height, walk mode
   std::optional<ui::PlanCamera> m_plan;  ///< the plan view, while it shows
   bool m_headless = false;  ///< replaying: a failing action is an error, not a status line
+  std::optional<std::filesystem::path> m_open_scene;  ///< set by an open_scene action: run() ends
+  std::shared_ptr<const Scene> m_next_scene;           ///< that scene, loaded
+  std::optional<Session> m_script_rest;               ///< the script's actions after it
 };
 
 } // namespace hilight::painter

@@ -2,6 +2,7 @@
 // Buttons call perform() with the same actions a session script holds.
 #include "painter_app.hpp"
 #include "ui/tooltip.hpp"
+#include "hilight/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,13 +19,10 @@ using ui::tip;
 
 namespace {
 
-/// Files-panel paths are recorded absolute: a replay from another folder
-/// reads and writes the same files.
-std::string absolute_path(const std::string& path) {
-  if (path.empty()) return path;
-  std::error_code ec;
-  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
-  return ec ? path : absolute.lexically_normal().string();
+/// ImGui's built-in font is ASCII: the core's D̄ (D + combining macron) spelled out.
+std::string ascii(std::string text) {
+  for (size_t at; (at = text.find("D\u0304")) != std::string::npos;) text.replace(at, 3, "D-bar");
+  return text;
 }
 
 const char* kShortcuts[][2] = {
@@ -72,6 +70,7 @@ void PainterApp::draw_panels() {
   tip("Keyboard shortcuts and mouse controls");
   ImGui::End();
   panel_help();
+  panel_file_browser();
   panel_status();
   draw_plan_readouts();
   popup_shadow_pairs();
@@ -106,10 +105,25 @@ void PainterApp::panel_tools() {
                                 ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   tip("Brush radius in scene units ([ and ] change it)");
   changed |= ImGui::ColorEdit3("colour", &brush.colour.r, ImGuiColorEditFlags_Float);
-  tip("Colour of the light you paint (linear RGB)");
-  changed |= ImGui::SliderFloat("brightness", &brush.brightness, 0.f, 20.f, "%.2f",
+  tip(brush.meaning == PaintMeaning::LampColour ? "The lamp's colour (linear RGB): the surface shows it as its own colour lit by such a lamp"
+                                                : "The light the surface should reflect (linear RGB), its own colour included");
+  // In the files' unit (--units, --target-quantity): W/(sr m2), cd/m2, or the lux the surface receives.
+  const bool photometric = m_document->units() == Units::Photometric, lux = m_document->quantity() == TargetQuantity::Illuminance;
+  const char* brightness_label = lux ? "brightness (lux)" : photometric ? "brightness (cd/m2)" : "brightness";
+  changed |= ImGui::SliderFloat(brightness_label, &brush.brightness, 0.f, photometric ? 20000.f : 20.f, "%.2f",
                                 ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-  tip("Radiance painted = colour x brightness");
+  tip(lux ? "The light the surface should receive, in lux (its colour the lamp's)"
+          : photometric ? "How bright the surface should look: its luminance in cd/m2 = that of colour x brightness"
+                        : "How bright the surface should look: its luminance in W/(sr m2) = that of colour x brightness");
+  int meaning = int(brush.meaning);
+  ImGui::TextUnformatted("paint means");
+  ImGui::SameLine();
+  changed |= ImGui::RadioButton("lamp colour", &meaning, int(PaintMeaning::LampColour));
+  tip("White paint asks for a white lamp: a warm floor stays warm (the target takes the surface's own colour)");
+  ImGui::SameLine();
+  changed |= ImGui::RadioButton("reflected light", &meaning, int(PaintMeaning::Reflected));
+  tip("The paint is the light the surface reflects: white paint on a warm floor asks for a bluish lamp");
+  brush.meaning = PaintMeaning(meaning);
   changed |= ImGui::SliderFloat("hardness", &brush.hardness, 0.f, 1.f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
   tip("0: soft edge from the centre, 1: a hard disc");
   brush = clamped_brush(brush, diagonal);
@@ -218,6 +232,25 @@ void PainterApp::panel_solve() {
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::Text("%zu painted vertices", m_document->painted_count());
+  panel_fit();
+}
+
+void PainterApp::panel_fit() {
+  if (m_solve_panel.fit_line.empty()) return;
+  ImGui::TextUnformatted(ascii("Last answer: " + m_solve_panel.fit_line).c_str());
+  // The reasons hilight solve would give (fit_notes.hpp), wrapped to the panel's width.
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 340.f);
+  for (const FitNote& note : m_solve_panel.fit_notes) {
+    if (note.warning) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.7f, 0.3f, 1.f));
+    ImGui::TextWrapped("%s", ascii(note.text).c_str());
+    if (note.warning) ImGui::PopStyleColor();
+  }
+  if (!m_display.unreachable.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.35f, 0.9f, 1.f));
+    ImGui::TextWrapped("Magenta stripes: the %zu painted vertices no light may reach.", m_display.unreachable.size());
+    ImGui::PopStyleColor();
+  }
+  ImGui::PopTextWrapPos();
 }
 
 void PainterApp::panel_placement() {
@@ -264,32 +297,23 @@ void PainterApp::panel_lights() {
   char title[64];
   std::snprintf(title, sizeof title, "Lights (%zu)###lights", lights.size());
   if (!ImGui::CollapsingHeader(title)) return;
+  // Intensities in the unit the files use (--units): W/sr, or candela.
+  const Units units = m_document->units();
+  const Lighting shown = lights_to_units(lights, units);
+  const char* unit = units == Units::Photometric ? "cd" : "W/sr";
   for (size_t i = 0; i < lights.size(); ++i) {
     const Light& l = lights[i];
-    ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  I (%.3g, %.3g, %.3g)", i, to_string(l.type), l.position.x, l.position.y,
-                l.position.z, l.intensity.r, l.intensity.g, l.intensity.b);
+    const Rgb& I = shown[i].intensity;
+    if (l.type == LightType::Luminaire && l.profile)
+      ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  dimmed to %.0f%%", i, std::filesystem::path(l.profile_path).filename().string().c_str(),
+                  l.position.x, l.position.y, l.position.z, 100.0 * luminaire_dimming(l));
+    else
+      ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  I (%.3g, %.3g, %.3g) %s", i, to_string(l.type), l.position.x, l.position.y, l.position.z,
+                  I.r, I.g, I.b, unit);
     if (l.type == LightType::Spot && ImGui::IsItemHovered())
       ImGui::SetTooltip("direction (%.2f, %.2f, %.2f), cutoff %.1f deg, soft edge %.1f deg", l.direction.x, l.direction.y,
                         l.direction.z, l.cutoff_deg, l.falloff_deg);
   }
-}
-
-void PainterApp::panel_files() {
-  if (!ImGui::CollapsingHeader("Files")) return;
-  ImGui::InputText("target", &m_files.target_path);
-  tip("Target PLY, the format `hilight solve --target` reads");
-  if (ImGui::Button("Open target")) perform(LoadTargetAction{absolute_path(m_files.target_path)});
-  ImGui::SameLine();
-  if (ImGui::Button("Save target")) perform(SaveTargetAction{absolute_path(m_files.target_path)});
-  ImGui::InputText("lights", &m_files.lights_path);
-  tip("Lights JSON, as `hilight render --lights` and `hilight solve -o` use");
-  if (ImGui::Button("Load lights")) perform(LoadLightsAction{absolute_path(m_files.lights_path)});
-  ImGui::SameLine();
-  if (ImGui::Button("Save lights")) perform(SaveLightsAction{absolute_path(m_files.lights_path)});
-  ImGui::InputText("image", &m_files.screenshot_path);
-  if (ImGui::Button("Screenshot")) perform(ScreenshotAction{absolute_path(m_files.screenshot_path)});
-  tip("The scene view as PNG (without these panels)");
-  if (!m_record_path.empty()) ImGui::TextWrapped("Recording to %s", m_record_path.c_str());
 }
 
 void PainterApp::panel_help() {
@@ -318,7 +342,7 @@ void PainterApp::panel_status() {
   ImGui::Begin("status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
-  ImGui::Text("%s | %zu lights | %s", to_string(m_player->tool()), m_document->state().lights.size(),
+  ImGui::Text("%s | %zu light%s | %s", to_string(m_player->tool()), m_document->state().lights.size(), m_document->state().lights.size() == 1 ? "" : "s",
               m_job->busy() ? ("working: " + m_job->progress()).c_str() : m_status_panel.line.c_str());
   if (ImGui::IsItemHovered() && !m_status_panel.log.empty()) {
     ImGui::BeginTooltip();

@@ -1,12 +1,14 @@
 // The window's side of session actions: camera moves, screen picking and
 // screenshots for the core's SessionPlayer; applying and recording actions.
 #include "hilight/error.hpp"
+#include "hilight/io/scene_io.hpp"
 #include "ifc_spaces.hpp"
 #include "painter_app.hpp"
 #include "solve_options.hpp"
 #include "ui/screen_pick.hpp"
 #include "ui/screenshot.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 
@@ -35,6 +37,14 @@ PlayerHooks PainterApp::make_hooks() {
     m_display.colours_dirty = true;
   };
   hooks.log = [this](const std::string& line) { status(line); };
+  hooks.fit = [this](const JobResult& result) { show_fit(result); };
+  hooks.open_scene = [this](const std::filesystem::path& path) {
+    // Read before the window closes: a scene that cannot be read is a status
+    // line (InputError, the action not recorded), and the painting stays.
+    status("opening " + path.string() + "...");
+    m_next_scene = std::make_shared<const Scene>(load_scene(path, {m_options.max_edge}));
+    m_open_scene = std::filesystem::absolute(path).lexically_normal();
+  };
   hooks.settle_placement = [this](PlacementRules& rules, std::shared_ptr<const Regions> regions) {
     // hilight solve's own path, so the same text gives the same rules.
     const cli::PlacementScene scene{m_scene, m_options.ifc_storeys,
@@ -50,6 +60,22 @@ PlayerHooks PainterApp::make_hooks() {
     return note;
   };
   return hooks;
+}
+
+void PainterApp::show_fit(const JobResult& result) {
+  const SolveReport& r = result.report;
+  char line[160];
+  std::snprintf(line, sizeof line, "%s: %zu light%s, D̄ %.1f%%", to_string(result.kind), r.chosen, r.chosen == 1 ? "" : "s", 100.0 * r.dbar);
+  m_solve_panel.fit_line = line;
+  // hilight solve's own words (fit_notes.hpp); the building default counts
+  // while the rules are still the ones it noted.
+  const SolveSettings& settings = m_job->options().settings;
+  const bool building_default = !m_solve_panel.building_note.empty() && settings.placement.describe() == m_solve_panel.noted_rules;
+  m_solve_panel.fit_notes = fit_notes(r, {settings.fixed_count, building_default});
+  for (const FitNote& note : m_solve_panel.fit_notes) status((note.warning ? "warning: " : "") + note.text);
+  m_display.unreachable = result.unreachable_vertices;
+  if (const auto it = r.seconds.find("diagnosis"); it != r.seconds.end()) m_timer.add_latency("poor_fit_diagnosis", 1000.0 * it->second);
+  m_display.colours_dirty = true;
 }
 
 CameraPose PainterApp::camera_pose() const {

@@ -2,6 +2,7 @@
 // The Solve and Placement panels' state, and the stroke → fine-tune → display
 // latency they report.
 #include "hilight/named_room.hpp"
+#include "hilight/solve/fit_notes.hpp"
 
 #include <chrono>
 #include <optional>
@@ -25,6 +26,10 @@ struct SolvePanelState {
   bool fine_tune_after_stroke = false;
   bool fine_tune_queued = false;  ///< a stroke ended while a job ran
   bool stroke_shown = false;      ///< its lights are on screen (a quick stage so far)
+  /// The last job's answer as the panel says it ("solve: 1 light, D̄ 75.0%"),
+  /// and what `hilight solve` would warn of it (fit_notes.hpp); "" before one.
+  std::string fit_line;
+  std::vector<FitNote> fit_notes;
 };
 
 } // namespace hilight::painter

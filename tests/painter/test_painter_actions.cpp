@@ -40,7 +40,8 @@ const std::map<std::string, std::string>& examples() {
       {"save_lights", R"({"path": "l.json"})"},
       {"load_target", R"({"path": "t.glb"})"},
       {"load_lights", R"({"path": "l.gltf"})"},
-      {"screenshot", R"({"path": "s.png"})"}};
+      {"screenshot", R"({"path": "s.png"})"},
+      {"open_scene", R"({"path": "room.obj"})"}};
   return table;
 }
 

@@ -2,8 +2,10 @@
 // events (the XTest extension, loaded at run time) paint a stroke, orbit the
 // camera, undo and quit; the session recording shows each, with the stroke's
 // automatic fine-tune. The test runs its own Xvfb, so no other test's window
-// can catch the events. Skipped without Xvfb or libXtst.
+// can catch the events. Skipped without Xvfb or libXtst. The file browser
+// opens another scene and the recording goes on there.
 #include "../support.hpp"
+#include "hilight/fixtures/real_model_scenes.hpp"
 
 #include <catch2/catch.hpp>
 #include <chrono>
@@ -355,6 +357,73 @@ TEST_CASE("painter ui: a brush value typed out of range is clamped, recorded, an
   const test::RunResult replay = test::run_hilight({"paint", HILIGHT_SOURCE_DIR "/scenes/room.obj", "--script", recording.string(),
                                                     "--size", "1280x800", "--set", "bounce_samples=16", "--cache-dir",
                                                     (dir / "cache").string(), "--exit", "--no-record"});
+  if (outer) ::setenv("DISPLAY", outer_display.c_str(), 1);
+  else ::unsetenv("DISPLAY");
+  INFO("replay: " << replay.err);
+  CHECK(replay.exit_code == 0);
+}
+
+TEST_CASE("painter ui: the file browser opens another scene, painting goes on there, and the recording replays", "[painter-ui][open-scene]") {
+  PrivateXServer server;
+  FakeInput input(server.display());
+  if (skip_without_input(server, input)) return;
+  const fs::path dir = test::output_dir("painter_ui_file_browser");
+  // The scenes in a folder of their own: the browser opens in the scene's folder and lists scenes only.
+  const fs::path scenes = dir / "scenes";
+  fs::create_directories(scenes);
+  for (const char* name : {"room.obj", "room.mtl"}) fs::copy_file(fs::path(HILIGHT_SOURCE_DIR) / "scenes" / name, scenes / name);
+  fs::copy_file(hilight::builders::testmodels_dir() / "OBJ/WusonOBJ.obj", scenes / "a-wuson.obj");
+  const fs::path recording = dir / "session.json";
+  const pid_t pid = spawn_hilight({"paint", (scenes / "room.obj").string(), "--size", "1280x800", "--record", recording.string(),
+                                   "--set", "bounce_samples=16", "--no-cache"},
+                                  server.display(), dir);
+  REQUIRE(pid > 0);
+  auto recorded = [&](const std::string& text) { return test::read_file(recording).find(text) != std::string::npos; };
+  int status = 0;
+  std::this_thread::sleep_for(4000ms);
+  // The Files header (the panel's layout is ImGui's, fixed for this window),
+  // its "Open scene..." button, the browser's first file (a-wuson.obj), Open.
+  input.move(58, 591);
+  input.button(1, true);
+  input.button(1, false);
+  input.move(60, 614);
+  input.button(1, true);
+  input.button(1, false);
+  std::this_thread::sleep_for(500ms);
+  input.move(450, 121);
+  input.button(1, true);
+  input.button(1, false);
+  input.move(780, 419);
+  input.button(1, true);
+  input.button(1, false);
+  const bool opened = wait_for([&] { return recorded("\"open_scene\""); }, 15s);
+  // The window starts again on the Wuson, seen from outside: a stroke across its middle.
+  std::this_thread::sleep_for(4000ms);
+  input.move(900, 400);
+  input.tap("b");
+  input.drag(1, 620, 390, 660, 410, 6);
+  const bool painted = wait_for([&] {
+    const std::string text = test::read_file(recording);
+    const size_t open = text.find("\"open_scene\"");
+    return open != std::string::npos && text.find("\"stroke\"", open) != std::string::npos;
+  }, 10s);
+  input.move(900, 400);
+  const bool quit = quit_with_ctrl_q(input, pid, status);
+  const std::string text = test::read_file(recording);
+  INFO("recording: " << text);
+  INFO("stderr: " << test::read_file(dir / "stderr.txt"));
+  CHECK(opened);
+  CHECK(text.find("a-wuson.obj") != std::string::npos);
+  CHECK(painted);
+  CHECK(quit);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  // The recording replays from the room: the open, then the Wuson's stroke.
+  const char* outer = std::getenv("DISPLAY");
+  const std::string outer_display = outer ? outer : "";
+  ::setenv("DISPLAY", server.display().c_str(), 1);
+  const test::RunResult replay = test::run_hilight({"paint", (scenes / "room.obj").string(), "--script", recording.string(), "--size",
+                                                    "1280x800", "--no-cache", "--exit", "--no-record"});
   if (outer) ::setenv("DISPLAY", outer_display.c_str(), 1);
   else ::unsetenv("DISPLAY");
   INFO("replay: " << replay.err);

@@ -6,7 +6,7 @@
 
 namespace hilight {
 
-double unreachable_share(const Target& target, const LightSpace& space, size_t max_points) {
+Unreachable find_unreachable(const Target& target, const LightSpace& space, size_t max_points) {
   // A 16-cell grid (0.75 m in a 12 m flat) and every room's own places: an
   // 8-cell grid over a flat of several rooms can miss a small room, and its
   // lit points would be blamed (issue 33).
@@ -34,9 +34,18 @@ double unreachable_share(const Target& target, const LightSpace& space, size_t m
     }
     unreached[k] = energy[k];
   });
+  Unreachable found;
   double total = 0, lost = 0;
-  for (size_t k = 0; k < points.size(); ++k) total += energy[k], lost += unreached[k];
-  return total > 0 ? lost / total : 0.0;
+  for (size_t k = 0; k < points.size(); ++k) {
+    total += energy[k], lost += unreached[k];
+    if (unreached[k] > 0) found.points.push_back(uint32_t(points[k]));
+  }
+  found.share = total > 0 ? lost / total : 0.0;
+  return found;
+}
+
+double unreachable_share(const Target& target, const LightSpace& space, size_t max_points) {
+  return find_unreachable(target, space, max_points).share;
 }
 
 } // namespace hilight

@@ -4,6 +4,7 @@
 // same struct (session_player.cpp). The table of specs is generated from the
 // TypedAction variant, so the variant is the one list of action types.
 #include "core/actions.hpp"
+#include "core/paint_meaning.hpp"
 
 #include "hilight/error.hpp"
 
@@ -231,7 +232,8 @@ json write(const WalkAction& a) {
 // BrushAction
 template <>
 Spec schema_of<BrushAction>() {
-  return {{{"radius", Kind::Positive}, {"colour", Kind::Colour}, {"brightness", Kind::NonNegative}, {"hardness", Kind::Unit}},
+  return {{{"radius", Kind::Positive}, {"colour", Kind::Colour}, {"brightness", Kind::NonNegative}, {"hardness", Kind::Unit},
+           {"meaning", Kind::String}},
         {}, {}, {}, true};
 }
 BrushAction read(const json& p, Is<BrushAction>) {
@@ -240,6 +242,7 @@ BrushAction read(const json& p, Is<BrushAction>) {
   if (p.contains("colour")) a.colour = colour(p["colour"]);
   if (p.contains("brightness")) a.brightness = p["brightness"].get<float>();
   if (p.contains("hardness")) a.hardness = p["hardness"].get<float>();
+  if (p.contains("meaning")) a.meaning = p["meaning"].get<std::string>();
   return a;
 }
 json write(const BrushAction& a) {
@@ -248,6 +251,7 @@ json write(const BrushAction& a) {
   if (a.colour) p["colour"] = of(*a.colour);
   if (a.brightness) p["brightness"] = *a.brightness;
   if (a.hardness) p["hardness"] = *a.hardness;
+  if (a.meaning) p["meaning"] = *a.meaning;
   return p;
 }
 
@@ -467,6 +471,14 @@ Spec schema_of<ScreenshotAction>() {
 ScreenshotAction read(const json& p, Is<ScreenshotAction>) { return {p["path"].get<std::string>()}; }
 json write(const ScreenshotAction& a) { return {{"path", a.path}}; }
 
+// OpenSceneAction
+template <>
+Spec schema_of<OpenSceneAction>() {
+  return {{{"path", Kind::String}}, {"path"}, {}, {}, false};
+}
+OpenSceneAction read(const json& p, Is<OpenSceneAction>) { return {p["path"].get<std::string>()}; }
+json write(const OpenSceneAction& a) { return {{"path", a.path}}; }
+
 /// Finite as the float the painter computes with (1e300 is a valid double but inf as float).
 bool finite_number(const json& v) {
   return v.is_number() && std::isfinite(v.get<double>()) && std::abs(v.get<double>()) <= double(std::numeric_limits<float>::max());
@@ -618,6 +630,10 @@ void validate_action(const Action& action, const std::string& source, size_t ind
     const std::string name = action.params["tool"].get<std::string>();
     if (std::find(tools.begin(), tools.end(), name) == tools.end())
       fail("tool: unknown tool '" + name + "' (brush, eraser, shadow, erase_shadow, spot, adjust)");
+  }
+  if (action.type == "brush" && action.params.contains("meaning")) {
+    const std::string meaning = action.params["meaning"].get<std::string>();
+    if (!paint_meaning_from_string(meaning)) fail("brush: 'meaning' must be lamp or reflected, not '" + meaning + "'");
   }
   if (action.type == "view") {
     const std::string show = action.params["show"].get<std::string>();

@@ -84,6 +84,7 @@ struct BrushAction {
   static constexpr const char* kType = "brush";
   std::optional<float> radius, brightness, hardness;
   std::optional<Rgb> colour;
+  std::optional<std::string> meaning;  ///< "lamp" or "reflected" (core/paint_meaning.hpp)
 };
 struct StrokeAction {
   static constexpr const char* kType = "stroke";
@@ -166,12 +167,19 @@ struct ScreenshotAction {
   static constexpr const char* kType = "screenshot";
   std::string path;
 };
+/// Another scene: the window starts again on it (painted target, lights,
+/// undo history and view left behind); the session's later actions apply there.
+struct OpenSceneAction {
+  static constexpr const char* kType = "open_scene";
+  std::string path;
+};
 
 /// Every action type, in the order docs/painter.md lists them.
 using TypedAction =
     std::variant<CameraAction, ToolAction, ViewAction, SectionAction, CutawayAction, PlanAction, FocusAction, WalkAction, BrushAction, StrokeAction, EraseAction, ShadowAction, EraseShadowAction,
                  SpotRegionAction, AdjustRegionAction, SolveAction, FineTuneAction, AddLightsAction, CutAction, PlaceAction,
-                 UndoAction, RedoAction, SaveTargetAction, SaveLightsAction, LoadTargetAction, LoadLightsAction, ScreenshotAction>;
+                 UndoAction, RedoAction, SaveTargetAction, SaveLightsAction, LoadTargetAction, LoadLightsAction, ScreenshotAction,
+                 OpenSceneAction>;
 
 /// The typed form of a valid action (validate_action first: it assumes the schema holds).
 TypedAction typed(const Action& action);

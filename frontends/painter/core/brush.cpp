@@ -14,9 +14,9 @@ float brush_coverage(const BrushSettings& brush, float distance) {
   return t * t * (3.f - 2.f * t);
 }
 
-size_t apply_dab(const Scene& scene, PaintState& state, const BrushSettings& brush, BrushMode mode,
+size_t apply_dab(const Document& document, PaintState& state, const BrushSettings& brush, BrushMode mode,
                  const SurfacePick& centre, const Visibility* visible) {
-  const Rgb value = brush.value();
+  const Scene& scene = document.scene();
   size_t touched = 0;
   for (const auto& [v, distance] : vertices_in_dab(scene, centre, brush.radius)) {
     if (visible && !visible->vertex(v)) continue;
@@ -30,6 +30,7 @@ size_t apply_dab(const Scene& scene, PaintState& state, const BrushSettings& bru
       continue;
     }
     // A "don't care" vertex has no colour to blend from.
+    const Rgb value = document.painted_target(brush.value(), brush.meaning, v);
     state.psi[v] = w > 0.f ? state.psi[v] + a * (value - state.psi[v]) : value;
     w = std::max(w, a);
   }
@@ -45,7 +46,7 @@ Stroke::~Stroke() { finish(); }
 
 void Stroke::dab(const SurfacePick& centre) {
   if (!m_open) return;
-  if (apply_dab(m_document.scene(), m_document.begin_edit(), m_brush, m_mode, centre, m_visible)) m_document.bump();
+  if (apply_dab(m_document, m_document.begin_edit(), m_brush, m_mode, centre, m_visible)) m_document.bump();
   m_points.push_back(centre.position);
   m_normals.push_back(centre.normal);
   m_last = centre;

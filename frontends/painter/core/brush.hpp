@@ -4,11 +4,13 @@
 /// Coverage of a vertex at distance d from the dab's centre: 1 inside
 /// hardness·radius, falling to 0 at the radius by smoothstep (hardness 1: a
 /// hard disc; 0: soft all the way from the centre). Painting blends Ψ toward
-/// colour·brightness by the coverage (a vertex that was "don't care" takes the
-/// colour outright) and raises the weight to at least the coverage; the
+/// the target that colour·brightness asks of the vertex's surface (its
+/// meaning: core/paint_meaning.hpp) by the coverage (a vertex that was "don't
+/// care" takes it outright) and raises the weight to at least the coverage; the
 /// eraser lowers the weight by the coverage, back to 0 = "don't care".
 /// A stroke is a sequence of dabs and one undo step.
 #include "core/document.hpp"
+#include "core/paint_meaning.hpp"
 #include "core/region.hpp"
 #include "core/view_clip.hpp"
 
@@ -19,6 +21,7 @@ struct BrushSettings {
   Rgb colour{1.f};         ///< linear RGB, usually in [0, 1]
   float brightness = 1.f;  ///< multiplies colour: Ψ = colour · brightness (radiance)
   float hardness = 0.5f;   ///< 0 soft .. 1 hard disc
+  PaintMeaning meaning = PaintMeaning::LampColour;  ///< what the colour asks of the surface
 
   Rgb value() const { return colour * brightness; }
   bool operator==(const BrushSettings&) const = default;
@@ -36,7 +39,9 @@ float brush_coverage(const BrushSettings& brush, float distance);
 
 /// Applies one dab to `state`; returns how many vertices it touched.
 /// Vertices `visible` hides (clipped by the section or cut away) get no paint.
-size_t apply_dab(const Scene& scene, PaintState& state, const BrushSettings& brush, BrushMode mode,
+/// `state` is `document`'s open edit; the document says what the paint
+/// asks of each vertex (Document::painted_target: its albedo, the units).
+size_t apply_dab(const Document& document, PaintState& state, const BrushSettings& brush, BrushMode mode,
                  const SurfacePick& centre, const Visibility* visible = nullptr);
 
 /// One stroke = one undo step. Dabs show at once (the document's revision

@@ -17,7 +17,7 @@ bool PaintState::operator==(const PaintState& other) const {
 }
 
 Document::Document(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayScene> rays)
-    : m_scene(std::move(scene)), m_rays(std::move(rays)) {
+    : m_scene(std::move(scene)), m_rays(std::move(rays)), m_albedo(m_scene->vertex_albedo()) {
   m_state.psi.assign(m_scene->positions.size(), Rgb(0.f));
   m_state.weight.assign(m_scene->positions.size(), 0.f);
 }
@@ -115,6 +115,32 @@ TargetPoints painted_points(const Scene& scene, const PaintState& state,
 
 } // namespace
 
+void Document::set_units(Units units, TargetQuantity quantity) {
+  if (quantity == TargetQuantity::Illuminance && units != Units::Photometric)
+    throw InputError("--target-quantity illuminance is in lux: it needs --units photometric");
+  m_units = units;
+  m_quantity = quantity;
+}
+
+Rgb Document::painted_target(const Rgb& paint, PaintMeaning meaning, size_t v) const {
+  const float per_watt = m_units == Units::Photometric ? float(kLumensPerWatt) : 1.f;
+  if (m_quantity == TargetQuantity::Illuminance) return m_albedo[v] * paint / (per_watt * float(kPi));
+  return painted_radiance(paint, m_albedo[v], meaning) / per_watt;
+}
+
+std::vector<Rgb> Document::psi_in_file_units() const {
+  // The inverse of target_from_units: cd/m² (683 lm/W), and for lux E = π L / ρ per channel.
+  const float per_watt = m_units == Units::Photometric ? float(kLumensPerWatt) : 1.f;
+  std::vector<Rgb> out(m_state.psi.size());
+  for (size_t v = 0; v < out.size(); ++v) {
+    Rgb value = m_state.psi[v] * per_watt;
+    if (m_quantity == TargetQuantity::Illuminance)
+      for (int c = 0; c < 3; ++c) value[c] = m_albedo[v][c] > 0.f ? value[c] * float(kPi) / m_albedo[v][c] : 0.f;
+    out[v] = value;
+  }
+  return out;
+}
+
 Target Document::target() const { return target({}, "nothing is painted (every weight is 0)"); }
 
 Target Document::target(const std::function<bool(uint32_t)>& keep, const std::string& if_none) const {
@@ -131,19 +157,23 @@ void Document::save_target(const std::filesystem::path& path) const {
     if (m_state.weight[v] > 0.f && !is_finite(m_state.psi[v]))
       throw InputError(path.string(), "not written: vertex " + std::to_string(v) +
                                           " has a non-finite painted value (a brightness too large for a float)");
+  const std::vector<Rgb> values = psi_in_file_units();  // as hilight solve reads them back with the same --units
   if (is_gltf_path(path)) {  // the scene with the paint as COLOR_0, alpha the weight (docs/interchange.md)
     GltfExport gltf;
     gltf.scene = m_scene.get();
-    gltf.target = m_state.psi;
+    gltf.target = values;
     gltf.target_weight = m_state.weight;
     write_gltf(path, gltf);
     return;
   }
+  for (size_t v = 0, k = 0; v < m_state.weight.size(); ++v)
+    if (m_state.weight[v] > 0.f) points.values[k++] = values[v];
   write_target_ply(path, points, m_scene->frame);
 }
 
 void Document::load_target(const std::filesystem::path& path) {
   Target target = read_target(path, *m_scene, *m_rays);
+  target_from_units(target, m_units, m_quantity);
   const size_t n = m_scene->positions.size();
   std::vector<Rgb> sum(n, Rgb(0.f));
   std::vector<float> weight_sum(n, 0.f);
@@ -183,11 +213,11 @@ void Document::save_lights(const std::filesystem::path& path) const {
     write_gltf(path, gltf);
     return;
   }
-  write_lights_json(path, m_state.lights, m_scene->frame.unit, &m_scene->frame);  // the world's coordinates in files
+  write_lights_file(path, m_state.lights, m_units, m_scene->frame);  // the world's coordinates and the unit stated in files
 }
 
 void Document::load_lights(const std::filesystem::path& path) {
-  Lighting lights = read_lights_file(path, Units::Radiometric, &m_scene->frame);
+  Lighting lights = read_lights_file(path, m_units, &m_scene->frame);
   set_lights(lights, "load lights " + path.filename().string());
 }
 

@@ -8,6 +8,8 @@
 #include "hilight/lighting.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/target.hpp"
+#include "hilight/units.hpp"
+#include "core/paint_meaning.hpp"
 
 #include <cstdint>
 #include <deque>
@@ -35,6 +37,8 @@ public:
 
   const Scene& scene() const { return *m_scene; }
   const RayScene& rays() const { return *m_rays; }
+  /// Per scene vertex (Scene::vertex_albedo, read once): what the brush's paint meaning reads.
+  const std::vector<Rgb>& albedo() const { return m_albedo; }
 
   const PaintState& state() const { return m_state; }
   /// Increases on every change of state() (edits, undo, redo): the UI
@@ -79,6 +83,20 @@ public:
   Target target() const;
   /// Only the painted vertices `keep` accepts (a room focus); InputError(`if_none`) if none is.
   Target target(const std::function<bool(uint32_t)>& keep, const std::string& if_none) const;
+  /// What the files' numbers mean (--units, --target-quantity): lights files
+  /// read and written in `units` (W/sr or cd), targets read as `hilight
+  /// solve` reads them with the same options and written so that it reads
+  /// them back the same. Radiometric radiance until set.
+  void set_units(Units units, TargetQuantity quantity);
+  Units units() const { return m_units; }
+  TargetQuantity quantity() const { return m_quantity; }
+  /// The Ψ that `paint` (colour × brightness, in the files' units: W/(sr m²),
+  /// cd/m², or lux with an illuminance quantity) asks of vertex `v`, read
+  /// as `meaning` says (core/paint_meaning.hpp). Lux is the light the
+  /// surface receives, its colour the lamp's: Ψ = ρ ⊙ E / π, either meaning.
+  Rgb painted_target(const Rgb& paint, PaintMeaning meaning, size_t v) const;
+  /// Ψ per vertex in the files' units (set_units).
+  std::vector<Rgb> psi_in_file_units() const;
   /// Writes the painted vertices as a target PLY `hilight solve --target` reads.
   void save_target(const std::filesystem::path& path) const;
   /// Reads a target PLY (any `hilight solve` accepts): each point goes to the
@@ -98,6 +116,9 @@ private:
 
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
+  std::vector<Rgb> m_albedo;
+  Units m_units = Units::Radiometric;
+  TargetQuantity m_quantity = TargetQuantity::Radiance;
   PaintState m_state;
   PaintState m_edit_start;
   bool m_editing = false;

@@ -16,6 +16,7 @@ Action brush_action(const BrushSettings& b) {
   a.colour = b.colour;
   a.brightness = b.brightness;
   a.hardness = b.hardness;
+  a.meaning = to_string(b.meaning);
   return untyped(a);
 }
 
@@ -276,6 +277,7 @@ void SessionPlayer::run(const BrushAction& a, const Action& action, const std::s
   if (a.colour) m_brush.colour = *a.colour;
   if (a.brightness) m_brush.brightness = *a.brightness;
   if (a.hardness) m_brush.hardness = *a.hardness;
+  if (a.meaning) m_brush.meaning = *paint_meaning_from_string(*a.meaning);
   if (m_hooks.tool_changed) m_hooks.tool_changed(action);
 }
 
@@ -438,6 +440,15 @@ void SessionPlayer::run(const ScreenshotAction& a, const Action&, const std::str
   else log(where + ": no window, no screenshot");
 }
 
+void SessionPlayer::run(const OpenSceneAction& a, const Action&, const std::string& where) {
+  const std::filesystem::path path = resolve(a.path);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(where + ": " + path.string() + " is not a file");
+  if (!m_hooks.open_scene) throw InputError(where + ": no window to open a scene in");
+  if (m_job.busy()) m_job.cancel();  // its answer would be for the scene left behind
+  m_hooks.open_scene(path);
+}
+
 void SessionPlayer::commit(JobResult& result) {
   if (result.outcome != JobOutcome::Done) return;
   if (m_document.revision() != m_job_revision) {
@@ -450,11 +461,12 @@ void SessionPlayer::commit(JobResult& result) {
     return;
   }
   std::ostringstream label;
-  label << to_string(result.kind) << ": " << result.lights.size() << " lights";
+  label << to_string(result.kind) << ": " << result.lights.size() << (result.lights.size() == 1 ? " light" : " lights");
   m_document.set_lights(result.lights, label.str());
   std::ostringstream line;
   line << label.str() << ", D̄ " << 100.0 * result.report.dbar << "%";
   log(line.str());
+  if (m_hooks.fit) m_hooks.fit(result);
 }
 
 void SessionPlayer::finish_solve(const std::string& where) {

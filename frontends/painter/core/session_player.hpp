@@ -78,6 +78,13 @@ struct PlayerHooks {
   /// `regions`: the player's, when found. Unset: the rules as parsed, and the
   /// scene names no rooms.
   std::function<std::string(PlacementRules&, std::shared_ptr<const Regions> regions)> settle_placement;
+  /// A job's lights went into the document: its report and, for a poor fit,
+  /// the painted vertices no allowed place sees (the window says why and marks them).
+  std::function<void(const JobResult&)> fit;
+  /// An `open_scene` action: the window starts again on that scene (the
+  /// path exists; its loading may still fail, and the window says why).
+  /// Unset: no window, an input error.
+  std::function<void(const std::filesystem::path&)> open_scene;
 };
 
 /// A `place` action's text as --place rules: split at spaces, except that a
@@ -183,6 +190,7 @@ private:
   void run(const LoadTargetAction& a, const Action& action, const std::string& where);
   void run(const LoadLightsAction& a, const Action& action, const std::string& where);
   void run(const ScreenshotAction& a, const Action& action, const std::string& where);
+  void run(const OpenSceneAction& a, const Action& action, const std::string& where);
   /// Gives the job placement().
   void apply_placement();
   /// The painted target, only its points in the focused rooms when there are some.

@@ -1,7 +1,9 @@
 #include "core/solve_job.hpp"
 
 #include "hilight/error.hpp"
+#include "hilight/solve/diagnosis.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
 namespace hilight::painter {
@@ -16,6 +18,18 @@ const char* to_string(JobKind kind) {
 }
 
 namespace {
+
+/// A poor fit's cause, on every painted point (the solve itself looks at a
+/// sample, and fine-tunes and adds not at all): the window marks them.
+void diagnose(const Solver& solver, const Target& target, JobResult& result) {
+  if (!solver.judge().poor_fit(result.report.dbar)) return;
+  const auto start = std::chrono::steady_clock::now();
+  const Unreachable found = find_unreachable(target, solver.light_space());
+  result.report.seconds["diagnosis"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.report.unreachable = found.share;
+  for (uint32_t i : found.points)
+    if (target.vertex[i] >= 0) result.unreachable_vertices.push_back(uint32_t(target.vertex[i]));
+}
 
 /// Hints as the Solver sees them: only their shape (intensity is the solve's to find).
 Lighting hint_shapes(Lighting hints) {
@@ -82,6 +96,7 @@ void SolveJob::start(JobKind kind, Target target, Lighting lights, Lighting spot
       result.lights = kind == JobKind::Solve      ? solver.solve(target, result.report, stop)
                       : kind == JobKind::FineTune ? solver.fine_tune(target, lights, result.report, stop)
                                                   : solver.add_lights(target, lights, result.report, stop);
+      diagnose(solver, target, result);
       result.outcome = JobOutcome::Done;
     } catch (const SolveCancelled&) {
       result.outcome = JobOutcome::Cancelled;

@@ -45,6 +45,10 @@ struct JobResult {
   Lighting lights;      ///< the result (Done only)
   SolveReport report;   ///< (Done only)
   std::string error;    ///< one line (Failed only)
+  /// A poor fit (Done only): the scene vertices of the painted points that
+  /// no place a light may stand can see (diagnosis.hpp, every painted point
+  /// looked at); report.unreachable is their share of the painted light.
+  std::vector<uint32_t> unreachable_vertices;
 };
 
 class SolveJob {

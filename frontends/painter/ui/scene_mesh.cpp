@@ -29,7 +29,11 @@ vec3 srgb(vec3 c) {
 }
 void main() {
   vec3 c = v_colour.rgb;
-  if (v_colour.a > 0.5 && mod(gl_FragCoord.x + gl_FragCoord.y, 10.0) < 3.0) c *= 0.45;
+  if (v_colour.a > 1.5) {  // painted light no light may reach: magenta stripes the other way
+    if (mod(gl_FragCoord.x - gl_FragCoord.y, 8.0) < 3.0) c = vec3(1.0, 0.1, 0.85);
+  } else if (v_colour.a > 0.5 && mod(gl_FragCoord.x + gl_FragCoord.y, 10.0) < 3.0) {
+    c *= 0.45;
+  }
   frag = vec4(srgb(c), 1.0);
 }
 )";

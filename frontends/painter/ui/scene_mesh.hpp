@@ -16,8 +16,10 @@ namespace hilight::painter::ui {
 /// marks "don't care" in the target view.
 struct VertexColour {
   glm::vec3 rgb{0.f};
-  float hatch = 0.f;
+  float hatch = 0.f;  ///< 1: "don't care" (darker stripes); kUnreachableHatch: painted light no light may reach
 };
+/// VertexColour::hatch of a painted point no allowed place sees: magenta stripes.
+constexpr float kUnreachableHatch = 2.f;
 
 class SceneMesh {
 public:

@@ -156,6 +156,8 @@ public:
   double measure_dbar(const Target& target, const Lighting& lights);
   /// The one judge of every count decision and threshold (judge.hpp).
   const Judge& judge() const { return m_judge; }
+  /// Where lights may stand now (the last call's space: closed, or open).
+  const LightSpace& light_space() const { return *m_space; }
   /// InputError unless every light may stand where it is (in bounds, out of solids).
   void require_admissible(const Lighting& lights, const std::string& what) const;
   /// The hierarchy of the last solve (for moving between cuts).

@@ -1,0 +1,100 @@
+// The painter takes hilight solve's --luminaire and --units (issue 36 §3):
+// with a downlight's IES file every solved light is that luminaire; with
+// --units photometric the brush paints cd/m² (lux with --target-quantity
+// illuminance), the lights file is in candela (and says so) and the saved
+// target in the painted unit, as `hilight solve` with the same options reads them.
+#include "../photometry_files.hpp"
+#include "../support.hpp"
+#include "hilight/io/lights_json.hpp"
+#include "hilight/units.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+using namespace hilight;
+
+namespace {
+
+const std::string kRoom = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
+
+/// A downlight: Lambertian below, dark above, 1200 lm.
+fs::path downlight(const fs::path& dir) {
+  test::write_text(dir / "down.ies", test::ies_text(test::angles(0, 90, 5), {0.0}, [](double, double g) {
+                     return 1200.0 / kPi * std::cos(g * kPi / 180.0);
+                   }, 1, "TILT=NONE", 1, 1, 1200, 12));
+  return dir / "down.ies";
+}
+
+/// Paints two floor patches of `brightness` (in the units given), solves with
+/// the downlight on the ceiling, saves dir/lights.json and dir/target.ply.
+test::RunResult paint_and_solve(const fs::path& dir, double brightness, const std::vector<std::string>& units) {
+  const nlohmann::json actions = {
+      {{"type", "brush"}, {"radius", 0.8}, {"colour", 1.0}, {"brightness", brightness}, {"hardness", 0.7}},
+      {{"type", "stroke"}, {"world", {{2.0, 0.0, 3.5}}}},
+      {{"type", "stroke"}, {"world", {{4.5, 0.0, 1.5}}}},
+      {{"type", "solve"}},
+      {{"type", "save_lights"}, {"path", (dir / "lights.json").string()}},
+      {{"type", "save_target"}, {"path", (dir / "target.ply").string()}}};
+  test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+  std::vector<std::string> args = {"paint", kRoom, "--luminaire", downlight(dir).string(), "--place", "ceiling:0.1", "--size", "480x360",
+                                   "--set", "bounce_samples=16", "--samples", "800", "--no-cache", "--no-record", "--exit", "--script",
+                                   (dir / "session.json").string()};
+  args.insert(args.end(), units.begin(), units.end());
+  return test::run_hilight(args);
+}
+
+/// D̄ of the painter's lights on its saved target, as hilight solve reads both with `units`.
+double cli_dbar(const fs::path& dir, const std::vector<std::string>& units) {
+  std::vector<std::string> args = {"solve", kRoom, "--target", (dir / "target.ply").string(), "--luminaire", (dir / "down.ies").string(),
+                                   "--place", "ceiling:0.1", "--mode", "fine-tune", "--initial", (dir / "lights.json").string(), "--set",
+                                   "bounce_samples=16", "--samples", "800", "--no-cache", "-o", (dir / "tuned.json").string(), "--report",
+                                   (dir / "report.json").string()};
+  args.insert(args.end(), units.begin(), units.end());
+  const test::RunResult cli = test::run_hilight(args);
+  INFO(cli.err);
+  REQUIRE(cli.exit_code == 0);
+  return nlohmann::json::parse(test::read_file(dir / "report.json"))["dbar"].get<double>();
+}
+
+double brightest_luminance(const fs::path& ply) {
+  double brightest = 0;
+  for (const Rgb& c : test::ply_colours(ply)) brightest = std::max(brightest, luminance(c));
+  return brightest;
+}
+
+} // namespace
+
+TEST_CASE("painter ui: --luminaire makes every light that luminaire, --units photometric paints and writes candela and cd/m2",
+          "[painter-ui][painter-units]") {
+  if (test::skip_without_display()) return;
+  const fs::path dir = test::output_dir("painter_ui_units");
+  const std::vector<std::string> units = {"--units", "photometric"};
+  const test::RunResult run = paint_and_solve(dir, 140.0, units);  // cd/m²
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const nlohmann::json file = nlohmann::json::parse(test::read_file(dir / "lights.json"));
+  CHECK(file["intensity_unit"] == "cd");
+  REQUIRE_FALSE(file["lights"].empty());
+  for (const auto& l : file["lights"]) {
+    CHECK(l["type"] == "luminaire");
+    CHECK(l["profile"].get<std::string>().find("down.ies") != std::string::npos);
+  }
+  // The paint's 140 cd/m² (its luminance, lamp colour) is what the file holds.
+  CHECK(brightest_luminance(dir / "target.ply") == Approx(140.0).epsilon(0.01));
+  // hilight solve reads both back in the same units: the painter's lights fit its target.
+  CHECK(cli_dbar(dir, units) < 0.15);  // measured 7.2%
+}
+
+TEST_CASE("painter ui: with --target-quantity illuminance the brush paints lux, and hilight solve reads the target as lux",
+          "[painter-ui][painter-units]") {
+  if (test::skip_without_display()) return;
+  const fs::path dir = test::output_dir("painter_ui_lux");
+  const std::vector<std::string> units = {"--units", "photometric", "--target-quantity", "illuminance"};
+  const test::RunResult run = paint_and_solve(dir, 300.0, units);  // lux on the floor
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  CHECK(brightest_luminance(dir / "target.ply") == Approx(300.0).epsilon(0.01));
+  CHECK(cli_dbar(dir, units) < 0.15);
+}
