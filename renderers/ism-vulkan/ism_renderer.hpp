@@ -3,6 +3,7 @@
 /// bounce from virtual point lights with imperfect shadow maps (Ritschel et
 /// al. 2008), all on one Vulkan device (lavapipe when there is no GPU).
 /// How a batch of lights flows through the stages: docs/ism-vulkan.md.
+#include "bounce_transport.hpp"
 #include "compute_kernel.hpp"
 #include "triangle_raster.hpp"
 #include "ism_settings.hpp"
@@ -35,6 +36,7 @@ public:
 
 private:
   struct PointBuffers;
+  struct Bounces;
   struct Workspace;
   struct Kernels;
   class StageClock;
@@ -44,6 +46,18 @@ private:
 
   /// The points on the device (shading points, normals, albedo), kept while the same set comes back.
   const PointBuffers& upload_points(const SurfacePoints& points);
+  std::unique_ptr<PointBuffers> make_point_buffers(const SurfacePoints& points);
+  /// More than one bounce asked for (bounces ≥ 2 or all).
+  bool every_bounce_path() const { return m_settings.bounces != 0 && m_settings.bounces != 1; }
+  /// The bounce points and their transport, made on the first call that needs them.
+  const Bounces& bounces();
+  /// The gather rows of receivers [first, first + count) of `pb`, both sides
+  /// each, from their hemisphere maps of the bounce points (bounce_splat.comp).
+  GatherRows bounce_rows(const PointBuffers& pb, size_t first, size_t count);
+  /// Adds bounces 2..B of one chunk of lights to `out` (that chunk's rows of
+  /// the result), from the bounce points' direct light in the workspace.
+  void add_later_bounces(const SurfacePoints& points, const PointBuffers& pb, std::span<const Light> lights, const Workspace& ws,
+                         Rgb* out);
   Workspace& workspace(uint32_t lights_per_chunk, size_t point_count);
   /// The shadow maps' culled triangle lists for `lights`, written into the
   /// workspace (grown as needed); returns one draw per cube face.
@@ -63,6 +77,7 @@ private:
   std::unique_ptr<TriangleRaster> m_raster;
   std::unique_ptr<Kernels> m_kernels;
   std::unique_ptr<PointBuffers> m_points;
+  std::unique_ptr<Bounces> m_bounces;
   std::unique_ptr<Workspace> m_workspace;
   std::unique_ptr<StageClock> m_clock;
   VkCommandBuffer m_cmd = VK_NULL_HANDLE;

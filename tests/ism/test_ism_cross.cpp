@@ -3,6 +3,8 @@
 // Validation layers are on for every ism-vulkan renderer these tests make:
 // any validation error fails the call that caused it.
 #include "hilight/fixtures/scene_builders.hpp"
+#include "hilight/ray_scene.hpp"
+#include "random_lights.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
@@ -91,4 +93,37 @@ TEST_CASE("ism-vulkan: the first bounce of a closed room matches Embree, closer 
   // miss the strong near-field bounce (docs/ism-vulkan.md).
   CHECK(total < 0.08);
   CHECK(bounce < bounce_few);
+}
+
+TEST_CASE("ism-vulkan: every bounce in the furnished room matches Embree's every bounce", "[ism][cross][bounce]") {
+  if (test::skip_without_renderer("ism-vulkan")) return;
+  auto scene = furnished_room();
+  auto points = SurfacePoints::from_vertices(*scene);
+  RayScene rays(*scene);
+  std::mt19937_64 rng(32);
+  const Lighting lights = test::random_ceiling_lamps(rays, rng, 3);
+  auto embree = test::make_renderer("embree", scene, {"bounces=all", "bounce_samples=256"})->illuminate(points, lights);
+  auto gpu_renderer = ism(scene, {"bounces=all"});
+  auto gpu = gpu_renderer->illuminate(points, lights);
+  auto gpu_one = ism(scene, {"bounces=1"})->illuminate(points, lights);
+  double sum_gpu = 0, sum_embree = 0, sum_one = 0;
+  for (size_t i = 0; i < points.size(); ++i) sum_gpu += gpu[i].g, sum_embree += embree[i].g, sum_one += gpu_one[i].g;
+  const double d = test::dbar(gpu, embree), d_one = test::dbar(gpu_one, embree);
+  INFO("D-bar against Embree's every bounce: " << d << " (ism-vulkan's one bounce: " << d_one << "); light ism/embree "
+                                               << sum_gpu / sum_embree << " (one bounce " << sum_one / sum_embree << ")");
+  // Measured (lavapipe): D̄ 11.5% with every bounce, 38% with one bounce;
+  // the light in all 5.4% low, the first bounce's (VPLs') known deficit at
+  // creases (9% of it) most of that (docs/ism-vulkan.md).
+  CHECK(d < 0.14);
+  CHECK(d < 0.4 * d_one);
+  CHECK(std::abs(sum_gpu / sum_embree - 1.0) < 0.08);
+  // Still Σ I_j φ_j with every bounce.
+  const auto unit = gpu_renderer->unit_responses(points, lights);
+  double worst = 0, scale = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    Rgb sum(0.f);
+    for (size_t j = 0; j < lights.size(); ++j) sum += lights[j].intensity * unit[j * points.size() + i];
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(sum[c] - gpu[i][c]))), scale = std::max(scale, double(gpu[i][c]));
+  }
+  CHECK(worst <= 1e-4 * scale);
 }
