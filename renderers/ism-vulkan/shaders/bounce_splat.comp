@@ -40,11 +40,15 @@ void main() {
   vec3 t, b;
   basis_around(n, t, b);
   // The point stands for a disk of its share of the area: it covers the
-  // texels within that disk's angular radius (so a map has no holes where a
-  // surface is, however near), at most 3 texels either way.
+  // texels within 0.7 of that disk's angular radius, at most 3 texels either
+  // way, so a near surface leaves few holes (the rest are filled on the CPU:
+  // GatherRows::append). Larger disks let near points take whole texels
+  // beyond their share: at 1.5 radii the furnished room's later bounces
+  // were 42% D̄ off Embree's, at 0.7 16%, at 0.5 13% with 1.7% of the
+  // light lost to holes in the 5.8 cube at ρ 0.95.
   vec2 uv = vec2(dot(w, t), dot(w, b)) / (len + z);
   vec2 centre = (uv * 0.5 + 0.5) * float(params.size);
-  float reach = 1.5 * params.radius / len * (1.0 + dot(uv, uv)) * float(params.size) / 4.0;
+  float reach = 0.7 * params.radius / len * (1.0 + dot(uv, uv)) * float(params.size) / 4.0;
   int span = min(int(ceil(reach)), 3);
   float facing = dot(nq, w);
   uint side = facing < 0.0 ? 0u : 1u;  // the side of q that faces the receiver
