@@ -130,7 +130,7 @@ struct BounceSplatParams {
 /// Point sets up to this many keep their bounce gather rows between calls
 /// (about 3 kB a point at the default map); larger ones (images) make them
 /// chunk by chunk on each call.
-constexpr size_t kCachedGatherPoints = 65536;
+constexpr size_t kCachedGatherPoints = 32768;
 
 /// Offsets (in floats) of each level of a VPL's pull-push pyramid, finest first.
 std::vector<uint32_t> pyramid_offsets(uint32_t vpls, uint32_t size) {
@@ -500,6 +500,7 @@ std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::
   const PointBuffers& pb = upload_points(points);
   const bool later_bounces = every_bounce_path() && transport != Transport::DirectOnly;
   if (later_bounces) bounces();
+  std::vector<Rgb> field;  // d₁ + … + d_{B−1} at the bounce points, per light: gathered once, after every chunk
   uint32_t chunk = lights_per_chunk(lights.size(), n);
   // Thread numbers in the shaders are 32-bit: keep points × lights within them.
   chunk = uint32_t(std::min<size_t>(chunk, std::max<size_t>(1, (size_t(1) << 31) / n)));
@@ -515,8 +516,12 @@ std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::
         const float* r = result + 4 * (j * n + i);
         out[(start + j) * n + i] = Rgb(r[0], r[1], r[2]);
       }
-    if (later_bounces) add_later_bounces(points, pb, lights.subspan(start, count), ws, &out[start * n]);
+    if (later_bounces) {
+      const std::vector<Rgb> f = later_bounce_field(lights.subspan(start, count), ws);
+      field.insert(field.end(), f.begin(), f.end());
+    }
   }
+  if (later_bounces) gather_later_bounces(points, pb, field, lights.size(), out.data());
   m_context->throw_on_validation_errors();
   return out;
 }
@@ -601,10 +606,9 @@ GatherRows IsmRenderer::bounce_rows(const PointBuffers& pb, size_t first, size_t
   return rows;
 }
 
-void IsmRenderer::add_later_bounces(const SurfacePoints& points, const PointBuffers& pb, std::span<const Light> lights,
-                                    const Workspace& ws, Rgb* out) {
+std::vector<Rgb> IsmRenderer::later_bounce_field(std::span<const Light> lights, const Workspace& ws) {
   const Bounces& b = *m_bounces;
-  const size_t m = b.normals.size(), n = pb.count, c = lights.size();
+  const size_t m = b.normals.size(), c = lights.size();
   // e₀ per (bounce point, side): the direct kernel's E/π on the side facing the light.
   std::vector<float> direct(c * 2 * m, 0.f);
   const float* result = ws.bounce_direct.data<float>();
@@ -615,7 +619,13 @@ void IsmRenderer::add_later_bounces(const SurfacePoints& points, const PointBuff
       const int side = glm::dot(b.normals[i], p - lights[j].position) < 0.f ? 0 : 1;
       direct[j * 2 * m + 2 * i + side] = float(kPi) * result[4 * (j * m + i)];
     }
-  const std::vector<Rgb> f = b.series->bounced(direct, c);
+  return b.series->bounced(direct, c);
+}
+
+void IsmRenderer::gather_later_bounces(const SurfacePoints& points, const PointBuffers& pb, const std::vector<Rgb>& f,
+                                       size_t c, Rgb* out) {
+  const Bounces& b = *m_bounces;
+  const size_t n = pb.count;
   if (n <= kCachedGatherPoints) {
     if (!pb.bounce_rows) pb.bounce_rows = std::make_unique<GatherRows>(bounce_rows(pb, 0, n));
     b.series->gather(*pb.bounce_rows, points.albedo, 0, f, c, out, n);

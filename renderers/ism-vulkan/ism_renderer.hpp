@@ -54,10 +54,14 @@ private:
   /// The gather rows of receivers [first, first + count) of `pb`, both sides
   /// each, from their hemisphere maps of the bounce points (bounce_splat.comp).
   GatherRows bounce_rows(const PointBuffers& pb, size_t first, size_t count);
-  /// Adds bounces 2..B of one chunk of lights to `out` (that chunk's rows of
-  /// the result), from the bounce points' direct light in the workspace.
-  void add_later_bounces(const SurfacePoints& points, const PointBuffers& pb, std::span<const Light> lights, const Workspace& ws,
-                         Rgb* out);
+  /// d₁ + … + d_{B−1} at the bounce points for one chunk of lights, from
+  /// their direct light in the workspace (BounceSeries::bounced).
+  std::vector<Rgb> later_bounce_field(std::span<const Light> lights, const Workspace& ws);
+  /// Adds bounces 2..B of `lights` lights (their fields, light-major) to
+  /// `out` (light-major, as unit_responses): the points' maps are made once
+  /// per call, or kept with a small point set.
+  void gather_later_bounces(const SurfacePoints& points, const PointBuffers& pb, const std::vector<Rgb>& field, size_t lights,
+                            Rgb* out);
   Workspace& workspace(uint32_t lights_per_chunk, size_t point_count);
   /// The shadow maps' culled triangle lists for `lights`, written into the
   /// workspace (grown as needed); returns one draw per cube face.
