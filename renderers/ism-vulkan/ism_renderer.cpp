@@ -356,7 +356,7 @@ std::vector<RasterDraw> IsmRenderer::upload_face_triangles(std::span<const Light
   return out;
 }
 
-void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std::span<const Light> lights, Transport transport,
+void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std::span<const Light> lights, Transport transport, Later later,
                                Workspace& ws, StageClock& clock) {
   const IsmSettings& s = m_settings;
   const uint32_t c = uint32_t(lights.size()), n = uint32_t(pb.count);
@@ -394,7 +394,7 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
   full_barrier(cmd);
   clock.mark("shadow_maps", flush);
   const Kernels& k = *m_kernels;
-  if (transport != Transport::IndirectOnly) {
+  if (transport != Transport::IndirectOnly && later != Later::Only) {
     DirectParams p{n, c, s.shadow_size, m_rays->epsilon()};
     k.direct.dispatch(cmd, {&pb.positions, &pb.normals, &pb.albedo, &ws.light_data, &ws.triangles, &m_buffers->corners, &m_buffers->neighbours,
                                    &pb.crease, &ws.result, &ws.profiles},
@@ -403,7 +403,7 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
   } else {
     vkCmdFillBuffer(cmd, ws.result.handle(), 0, VK_WHOLE_SIZE, 0);
   }
-  if (every_bounce_path() && transport != Transport::DirectOnly) {
+  if (every_bounce_path() && transport != Transport::DirectOnly && later != Later::Excluded) {
     // The direct light at the bounce points: e₀ of the later bounces.
     const PointBuffers& bp = *m_bounces->points;
     DirectParams p{uint32_t(bp.count), c, s.shadow_size, m_rays->epsilon()};
@@ -413,7 +413,7 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
   }
   full_barrier(cmd);
   clock.mark("direct", flush);
-  if (s.bounces == 0 || transport == Transport::DirectOnly) return;
+  if (s.bounces == 0 || transport == Transport::DirectOnly || later == Later::Only) return;
 
   const uint32_t vpls = c * s.vpls;
   VplParams vp{c, s.vpls, s.shadow_size, uint32_t(s.seed * 2654435761u), 1e-4f * diagonal};
@@ -468,8 +468,12 @@ void IsmRenderer::submit_and_wait(VkCommandBuffer cmd) {
 }
 
 std::vector<Rgb> IsmRenderer::unit_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport) {
+  return responses(points, lights, transport, Later::Included);
+}
+
+std::vector<Rgb> IsmRenderer::responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Later later) {
   if (std::none_of(lights.begin(), lights.end(), [](const Light& l) { return is_area(l.type); }))
-    return point_responses(points, lights, transport);
+    return point_responses(points, lights, transport, later);
   // An area or line source as its parts, each a cosine (or its profile's)
   // luminaire carrying an equal share (lighting.hpp: area_light_elements);
   // its φ is the sum of theirs.
@@ -479,7 +483,7 @@ std::vector<Rgb> IsmRenderer::unit_responses(const SurfacePoints& points, std::s
     for (const Light& part : area_light_elements(lights[j], kAreaElements)) parts.push_back(part);
     first[j + 1] = parts.size();
   }
-  const std::vector<Rgb> each = point_responses(points, parts, transport);
+  const std::vector<Rgb> each = point_responses(points, parts, transport, later);
   const size_t n = points.size();
   std::vector<Rgb> out(n * lights.size(), Rgb(0.f));
   for (size_t j = 0; j < lights.size(); ++j) {
@@ -490,7 +494,8 @@ std::vector<Rgb> IsmRenderer::unit_responses(const SurfacePoints& points, std::s
   return out;
 }
 
-std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport) {
+std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport,
+                                              Later later) {
   std::lock_guard lock(m_mutex);
   if (!m_scene) throw std::logic_error("IsmRenderer: set_scene was not called");
   const size_t n = points.size();
@@ -498,7 +503,7 @@ std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::
   m_clock->seconds.clear();
   if (n == 0 || lights.empty()) return out;
   const PointBuffers& pb = upload_points(points);
-  const bool later_bounces = every_bounce_path() && transport != Transport::DirectOnly;
+  const bool later_bounces = every_bounce_path() && transport != Transport::DirectOnly && later != Later::Excluded;
   if (later_bounces) bounces();
   std::vector<Rgb> field;  // d₁ + … + d_{B−1} at the bounce points, per light: gathered once, after every chunk
   uint32_t chunk = lights_per_chunk(lights.size(), n);
@@ -508,7 +513,7 @@ std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::
   for (size_t start = 0; start < lights.size(); start += chunk) {
     const size_t count = std::min<size_t>(chunk, lights.size() - start);
     begin_commands(m_cmd);
-    record_chunk(m_cmd, pb, lights.subspan(start, count), transport, ws, *m_clock);
+    record_chunk(m_cmd, pb, lights.subspan(start, count), transport, later, ws, *m_clock);
     submit_and_wait(m_cmd);
     const float* result = ws.result.data<float>();
     for (size_t j = 0; j < count; ++j)

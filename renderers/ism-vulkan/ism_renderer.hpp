@@ -41,8 +41,13 @@ private:
   struct Kernels;
   class StageClock;
 
+  /// Which bounces a call carries: as the settings say, up to the first
+  /// (the images' pixels), or only the later ones (the images' vertices).
+  enum class Later { Included, Excluded, Only };
+  /// unit_responses, with `later` (area and line sources as their parts).
+  std::vector<Rgb> responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Later later);
   /// unit_responses for point-like lights (point, spot, luminaire).
-  std::vector<Rgb> point_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport);
+  std::vector<Rgb> point_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Later later);
 
   /// The points on the device (shading points, normals, albedo), kept while the same set comes back.
   const PointBuffers& upload_points(const SurfacePoints& points);
@@ -68,7 +73,7 @@ private:
   std::vector<RasterDraw> upload_face_triangles(std::span<const Light> lights, Workspace& ws);
   uint32_t lights_per_chunk(size_t light_count, size_t point_count) const;
   /// Records the whole pipeline for one chunk of lights into `cmd`.
-  void record_chunk(VkCommandBuffer cmd, const PointBuffers& points, std::span<const Light> lights, Transport transport,
+  void record_chunk(VkCommandBuffer cmd, const PointBuffers& points, std::span<const Light> lights, Transport transport, Later later,
                     Workspace& ws, StageClock& clock);
   void begin_commands(VkCommandBuffer cmd);
   void submit_and_wait(VkCommandBuffer cmd);
@@ -82,6 +87,7 @@ private:
   std::unique_ptr<Kernels> m_kernels;
   std::unique_ptr<PointBuffers> m_points;
   std::unique_ptr<Bounces> m_bounces;
+  std::unique_ptr<SurfacePoints> m_vertices;  ///< the scene's vertices, albedo 1 (images' later bounces)
   std::unique_ptr<Workspace> m_workspace;
   std::unique_ptr<StageClock> m_clock;
   VkCommandBuffer m_cmd = VK_NULL_HANDLE;
