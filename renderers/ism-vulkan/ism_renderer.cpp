@@ -225,6 +225,7 @@ IsmRenderer::~IsmRenderer() {
   m_clock.reset();
   m_workspace.reset();
   m_points.reset();
+  m_vertex_buffers.reset();
   m_bounces.reset();
   m_kernels.reset();
   m_raster.reset();
@@ -502,7 +503,10 @@ std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::
   std::vector<Rgb> out(n * lights.size(), Rgb(0.f));
   m_clock->seconds.clear();
   if (n == 0 || lights.empty()) return out;
-  const PointBuffers& pb = upload_points(points);
+  // The images' vertices keep buffers (and maps) of their own, beside the last other point set.
+  const bool vertices = m_vertices && &points == m_vertices.get();
+  if (vertices && !m_vertex_buffers) m_vertex_buffers = make_point_buffers(points);
+  const PointBuffers& pb = vertices ? *m_vertex_buffers : upload_points(points);
   const bool later_bounces = every_bounce_path() && transport != Transport::DirectOnly && later != Later::Excluded;
   if (later_bounces) bounces();
   std::vector<Rgb> field;  // d₁ + … + d_{B−1} at the bounce points, per light: gathered once, after every chunk

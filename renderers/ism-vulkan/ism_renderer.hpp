@@ -88,6 +88,7 @@ private:
   std::unique_ptr<PointBuffers> m_points;
   std::unique_ptr<Bounces> m_bounces;
   std::unique_ptr<SurfacePoints> m_vertices;  ///< the scene's vertices, albedo 1 (images' later bounces)
+  std::unique_ptr<PointBuffers> m_vertex_buffers;
   std::unique_ptr<Workspace> m_workspace;
   std::unique_ptr<StageClock> m_clock;
   VkCommandBuffer m_cmd = VK_NULL_HANDLE;
