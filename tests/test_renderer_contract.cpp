@@ -2,7 +2,9 @@
 // renderer that can run here, so a new renderer plugin is held to all of them
 // by being registered. Each case runs at bounces 0 (the direct light every
 // renderer computes exactly) unless it says otherwise.
+#include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
+#include "hilight/registry.hpp"
 #include "hilight/fixtures/scene_builders.hpp"
 #include "support.hpp"
 
@@ -221,5 +223,10 @@ TEST_CASE("contract: renderers with a first bounce stay linear in the lights", "
     const Superposition s = superposition(*renderer, some_points(*room()), kTwoLights);
     // Sums of hundreds of VPL or gather terms in float: rounding, not bias.
     require_close(s.together, s.sum, 1e-3, largest(s.together), 1e-4);
+    // Every bounce, where a renderer carries it: the series stops per light.
+    if (test::registry().renderer_traits(name).max_bounces != kAllBounces) continue;
+    auto every = test::make_renderer(name, room(), {"bounces=all"});
+    const Superposition all = superposition(*every, some_points(*room()), kTwoLights);
+    require_close(all.together, all.sum, 1e-3, largest(all.together), 1e-4);
   }
 }

@@ -7,6 +7,7 @@
 #include "hilight/scene.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace hilight::ism {
 
@@ -15,6 +16,8 @@ Image IsmRenderer::render_image(const Camera& camera, std::span<const Light> lig
   const Scene& scene = *m_scene;
   SurfacePoints pixels;
   std::vector<size_t> pixel_index;
+  std::vector<std::array<float, 3>> corner_weight;  // the pixel's barycentrics on its triangle
+  std::vector<size_t> pixel_triangle;
   {
     std::lock_guard lock(m_mutex);
     if (!m_scene) throw std::logic_error("IsmRenderer: set_scene was not called");
@@ -33,6 +36,10 @@ Image IsmRenderer::render_image(const Camera& camera, std::span<const Light> lig
     full_barrier(m_cmd);
     submit_and_wait(m_cmd);
     m_context->throw_on_validation_errors();
+    if (every_bounce_path() && !m_vertices) {
+      m_vertices = std::make_unique<SurfacePoints>(SurfacePoints::from_vertices(scene));
+      std::fill(m_vertices->albedo.begin(), m_vertices->albedo.end(), Rgb(1.f));
+    }
     const uint32_t* tri = triangles.data<uint32_t>();
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
@@ -62,9 +69,31 @@ Image IsmRenderer::render_image(const Camera& camera, std::span<const Light> lig
         pixels.normals.push_back(n);
         pixels.albedo.push_back(scene.triangle_albedo(t));
         pixel_index.push_back(k);
+        pixel_triangle.push_back(t);
+        corner_weight.push_back({1.f - u - v, u, v});
       }
   }
-  std::vector<Rgb> shaded = illuminate(pixels, lights);
+  std::vector<Rgb> shaded;
+  if (!every_bounce_path()) {
+    shaded = illuminate(pixels, lights);
+  } else {
+    // Every bounce: the pixels carry up to the first; the later bounces,
+    // smooth, are gathered at the scene's vertices (their maps once per
+    // scene) and interpolated across each pixel's triangle, as Embree's
+    // vertex transport is: a pixel's own maps would cost a splat of every
+    // bounce point per pixel.
+    const std::vector<Rgb> near = responses(pixels, lights, Transport::All, Later::Excluded);
+    const std::vector<Rgb> far = responses(*m_vertices, lights, Transport::All, Later::Only);
+    const size_t n = pixels.size(), v = m_vertices->size();
+    shaded.assign(n, Rgb(0.f));
+    for (size_t j = 0; j < lights.size(); ++j)
+      for (size_t i = 0; i < n; ++i) {
+        const auto& ids = scene.triangles[pixel_triangle[i]];
+        Rgb later(0.f);  // E/π at albedo 1, interpolated
+        for (int c = 0; c < 3; ++c) later += corner_weight[i][c] * far[j * v + ids[c]];
+        shaded[i] += lights[j].intensity * (near[j * n + i] + pixels.albedo[i] * later);
+      }
+  }
   Image image(width, height);
   for (size_t k = 0; k < pixel_index.size(); ++k) {
     image.pixels[pixel_index[k]] = shaded[k];

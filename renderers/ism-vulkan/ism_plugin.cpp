@@ -1,11 +1,14 @@
 // Plugin entry of the `ism-vulkan` renderer: direct light from cube shadow
-// maps and the first bounce from VPLs with imperfect shadow maps, on Vulkan
-// (a GPU when present, else Mesa's lavapipe). docs/ism-vulkan.md explains.
+// maps, the first bounce from VPLs with imperfect shadow maps and the later
+// ones through bounce points' hemisphere maps, on Vulkan (a GPU when
+// present, else Mesa's lavapipe). docs/ism-vulkan.md explains.
 //
 // | property        | default | meaning                                                  |
 // |-----------------|---------|----------------------------------------------------------|
-// | bounces         | 1       | 0 = direct light only, 1 = plus the first bounce (VPLs); |
-// |                 |         | no more (traits: max_bounces 1)                          |
+// | bounces         | 1       | 0 = direct light only, 1 = plus the first bounce (VPLs), |
+// |                 |         | N (up to 1000) or all = every bounce (traits: all)       |
+// | bounce_points   | 2048    | surface samples carrying bounces 2.. (16..32767)         |
+// | bounce_map      | 16      | their and the points' hemisphere maps, texels (4..64)    |
 // | shadow_size     | 512     | cube ID map face resolution, texels (16..4096)          |
 // | vpls            | 256     | virtual point lights per light (1..16384)                |
 // | ism_size        | 32      | imperfect shadow map per VPL, texels (power of 2, 4..256) |
@@ -50,8 +53,8 @@ double positive(const hilight::Properties& props, const char* key, double fallba
 std::unique_ptr<hilight::Renderer> create(const hilight::Properties& props) {
   hilight::ism::IsmSettings s;
   s.bounces = hilight::bounces_property(props, s.bounces, "renderer ism-vulkan: bounces");
-  if (s.bounces != 0 && s.bounces != 1)
-    throw hilight::InputError("renderer ism-vulkan: bounces must be 0 or 1 (its VPLs carry the first bounce only)");
+  s.bounce_points = uint32_t(in_range(props, "bounce_points", s.bounce_points, 16, 32767));
+  s.bounce_map = uint32_t(in_range(props, "bounce_map", s.bounce_map, 4, 64));
   s.shadow_size = uint32_t(in_range(props, "shadow_size", s.shadow_size, 16, 4096));
   s.vpls = uint32_t(in_range(props, "vpls", s.vpls, 1, 16384));
   s.ism_size = uint32_t(in_range(props, "ism_size", s.ism_size, 4, 256));
@@ -86,10 +89,10 @@ std::string detail() {
 
 void register_ism(hilight::PluginRegistrar& registrar) {
   registrar.renderer(create, probe, detail);
-  registrar.renderer_traits({{"vpls=64"}, {}, false, 1});  // fewer VPLs a light in the fast twin; the reference re-fits
+  registrar.renderer_traits({{"vpls=64"}, {}, false, hilight::kAllBounces});  // fewer VPLs a light in the fast twin; the reference re-fits
 }
 
 } // namespace
 
 HILIGHT_PLUGIN("renderer", HILIGHT_PLUGIN_NAME, HILIGHT_VERSION,
-               "imperfect shadow maps on Vulkan: cube ID shadow maps, first bounce from VPLs", register_ism)
+               "imperfect shadow maps on Vulkan: cube ID shadow maps, first bounce from VPLs, later ones from bounce points", register_ism)

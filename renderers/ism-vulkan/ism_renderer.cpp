@@ -43,6 +43,9 @@ const uint32_t kIsmPush[] =
 const uint32_t kGather[] =
 #include "gather.comp.inc"
     ;
+const uint32_t kBounceSplat[] =
+#include "bounce_splat.comp.inc"
+    ;
 
 struct GpuLight {
   float position[4];
@@ -117,6 +120,17 @@ struct GatherParams {
   uint32_t points, lights, vpls, size;
   float min_dist2, bias_rel, bias_const;
 };
+struct BounceSplatParams {
+  uint32_t receivers, emitters, size;
+  float depth_scale;
+  uint32_t pass;
+  float radius;
+};
+
+/// Point sets up to this many keep their bounce gather rows between calls
+/// (about 3 kB a point at the default map); larger ones (images) make them
+/// chunk by chunk on each call.
+constexpr size_t kCachedGatherPoints = 32768;
 
 /// Offsets (in floats) of each level of a VPL's pull-push pyramid, finest first.
 std::vector<uint32_t> pyramid_offsets(uint32_t vpls, uint32_t size) {
@@ -139,22 +153,34 @@ struct IsmRenderer::PointBuffers {
   size_t count = 0;
   Buffer positions, normals, albedo;
   Buffer crease;  ///< kCreaseCandidates triangles touching each point (crease_candidates.hpp)
+  mutable std::unique_ptr<GatherRows> bounce_rows;  ///< their gather of the bounce points (small sets only)
+};
+
+struct IsmRenderer::Bounces {
+  std::unique_ptr<PointBuffers> points;  ///< the bounce points, albedo 1 (the direct kernel gives E/π there)
+  std::vector<Vec3> normals;             ///< their face normals: side 0 is the side they point to
+  Buffer emitters;                       ///< position, normal (w: open sides): what bounce_splat.comp splats
+  std::vector<float> weights;            ///< paraboloid_cosine_weights(bounce_map)
+  float radius = 0.f;                    ///< a disk of each one's share of the area: √(A/(π M))
+  std::unique_ptr<BounceSeries> series;
 };
 
 struct IsmRenderer::Workspace {
   uint32_t lights = 0;
   size_t points = 0;
   Buffer light_data, triangles, vpls, ism, pyramid, result;
+  Buffer bounce_direct;  ///< the direct light at the bounce points (bounces ≥ 2)
   Buffer face_indices, face_ids;  ///< culled triangle lists of the chunk's cube faces (grown on demand)
   Buffer profiles;                ///< the chunk's luminaire profile tables (grown on demand)
 };
 
 struct IsmRenderer::Kernels {
-  ComputeKernel direct, vpl, splat, pull, push, gather;
+  ComputeKernel direct, vpl, splat, pull, push, gather, bounce_splat;
   Kernels(VulkanContext& c, uint32_t w)
       : direct(c, spirv(kDirect), 10, sizeof(DirectParams), w), vpl(c, spirv(kVplGenerate), 6, sizeof(VplParams), w),
         splat(c, spirv(kIsmSplat), 3, sizeof(SplatParams), w), pull(c, spirv(kIsmPull), 2, sizeof(PullParams), w),
-        push(c, spirv(kIsmPush), 1, sizeof(PushParams), w), gather(c, spirv(kGather), 6, sizeof(GatherParams), w) {}
+        push(c, spirv(kIsmPush), 1, sizeof(PushParams), w), gather(c, spirv(kGather), 6, sizeof(GatherParams), w),
+        bounce_splat(c, spirv(kBounceSplat), 4, sizeof(BounceSplatParams), w) {}
 };
 
 /// Wall-clock seconds per stage, when profiling: each mark submits what was
@@ -199,6 +225,8 @@ IsmRenderer::~IsmRenderer() {
   m_clock.reset();
   m_workspace.reset();
   m_points.reset();
+  m_vertex_buffers.reset();
+  m_bounces.reset();
   m_kernels.reset();
   m_raster.reset();
   m_buffers.reset();
@@ -222,6 +250,12 @@ const IsmRenderer::PointBuffers& IsmRenderer::upload_points(const SurfacePoints&
   const uint64_t key = points.content_key();
   if (m_points && m_points->key == key && m_points->count == points.size()) return *m_points;
   m_points.reset();
+  m_points = make_point_buffers(points);
+  return *m_points;
+}
+
+std::unique_ptr<IsmRenderer::PointBuffers> IsmRenderer::make_point_buffers(const SurfacePoints& points) {
+  const uint64_t key = points.content_key();
   auto pb = std::make_unique<PointBuffers>();
   const size_t n = points.size();
   const VkDeviceSize bytes = n * 4 * sizeof(float);
@@ -256,15 +290,15 @@ const IsmRenderer::PointBuffers& IsmRenderer::upload_points(const SurfacePoints&
   });
   pb->key = key;
   pb->count = n;
-  m_points = std::move(pb);
-  return *m_points;
+  return pb;
 }
 
 uint32_t IsmRenderer::lights_per_chunk(size_t light_count, size_t point_count) const {
   const IsmSettings& s = m_settings;
   const uint64_t texels = uint64_t(s.shadow_size) * s.shadow_size;
   uint64_t per_light = 6 * texels * 12 + point_count * 16 + sizeof(GpuLight);  // ID map, its copy, depth
-  if (s.bounces > 0) per_light += uint64_t(s.vpls) * (80 + uint64_t(s.ism_size) * s.ism_size * 10);
+  if (s.bounces != 0) per_light += uint64_t(s.vpls) * (80 + uint64_t(s.ism_size) * s.ism_size * 10);
+  if (every_bounce_path()) per_light += uint64_t(s.bounce_points) * 16;
   uint64_t chunk = std::max<uint64_t>(1, (uint64_t(s.chunk_mb) << 20) / per_light);
   chunk = std::min<uint64_t>(chunk, TriangleRaster::max_views(*m_context, s.shadow_size, s.shadow_size) / 6);
   return uint32_t(std::max<uint64_t>(1, std::min<uint64_t>(chunk, light_count)));
@@ -284,7 +318,9 @@ IsmRenderer::Workspace& IsmRenderer::workspace(uint32_t lights, size_t point_cou
   ws->light_data = Buffer(ctx, lights * sizeof(GpuLight), storage, true, "the lights");
   ws->triangles = Buffer(ctx, texels * 4, filled, false, "the shadow maps");
   ws->result = Buffer(ctx, VkDeviceSize(lights) * point_count * 16, filled, true, "the results");
-  if (s.bounces > 0) {
+  if (every_bounce_path())
+    ws->bounce_direct = Buffer(ctx, VkDeviceSize(lights) * s.bounce_points * 16, storage, true, "the bounce points' direct light");
+  if (s.bounces != 0) {
     const uint32_t vpls = lights * s.vpls;
     ws->vpls = Buffer(ctx, VkDeviceSize(vpls) * 80, storage, false, "the VPLs");  // 5 vec4s each
     ws->ism = Buffer(ctx, VkDeviceSize(vpls) * s.ism_size * s.ism_size * 4, filled, false, "the imperfect shadow maps");
@@ -321,7 +357,7 @@ std::vector<RasterDraw> IsmRenderer::upload_face_triangles(std::span<const Light
   return out;
 }
 
-void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std::span<const Light> lights, Transport transport,
+void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std::span<const Light> lights, Transport transport, Later later,
                                Workspace& ws, StageClock& clock) {
   const IsmSettings& s = m_settings;
   const uint32_t c = uint32_t(lights.size()), n = uint32_t(pb.count);
@@ -359,7 +395,7 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
   full_barrier(cmd);
   clock.mark("shadow_maps", flush);
   const Kernels& k = *m_kernels;
-  if (transport != Transport::IndirectOnly) {
+  if (transport != Transport::IndirectOnly && later != Later::Only) {
     DirectParams p{n, c, s.shadow_size, m_rays->epsilon()};
     k.direct.dispatch(cmd, {&pb.positions, &pb.normals, &pb.albedo, &ws.light_data, &ws.triangles, &m_buffers->corners, &m_buffers->neighbours,
                                    &pb.crease, &ws.result, &ws.profiles},
@@ -368,9 +404,17 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
   } else {
     vkCmdFillBuffer(cmd, ws.result.handle(), 0, VK_WHOLE_SIZE, 0);
   }
+  if (every_bounce_path() && transport != Transport::DirectOnly && later != Later::Excluded) {
+    // The direct light at the bounce points: e₀ of the later bounces.
+    const PointBuffers& bp = *m_bounces->points;
+    DirectParams p{uint32_t(bp.count), c, s.shadow_size, m_rays->epsilon()};
+    k.direct.dispatch(cmd, {&bp.positions, &bp.normals, &bp.albedo, &ws.light_data, &ws.triangles, &m_buffers->corners,
+                            &m_buffers->neighbours, &bp.crease, &ws.bounce_direct, &ws.profiles},
+                      &p, uint64_t(bp.count) * c);
+  }
   full_barrier(cmd);
   clock.mark("direct", flush);
-  if (s.bounces == 0 || transport == Transport::DirectOnly) return;
+  if (s.bounces == 0 || transport == Transport::DirectOnly || later == Later::Only) return;
 
   const uint32_t vpls = c * s.vpls;
   VplParams vp{c, s.vpls, s.shadow_size, uint32_t(s.seed * 2654435761u), 1e-4f * diagonal};
@@ -425,8 +469,12 @@ void IsmRenderer::submit_and_wait(VkCommandBuffer cmd) {
 }
 
 std::vector<Rgb> IsmRenderer::unit_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport) {
+  return responses(points, lights, transport, Later::Included);
+}
+
+std::vector<Rgb> IsmRenderer::responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Later later) {
   if (std::none_of(lights.begin(), lights.end(), [](const Light& l) { return is_area(l.type); }))
-    return point_responses(points, lights, transport);
+    return point_responses(points, lights, transport, later);
   // An area or line source as its parts, each a cosine (or its profile's)
   // luminaire carrying an equal share (lighting.hpp: area_light_elements);
   // its φ is the sum of theirs.
@@ -436,7 +484,7 @@ std::vector<Rgb> IsmRenderer::unit_responses(const SurfacePoints& points, std::s
     for (const Light& part : area_light_elements(lights[j], kAreaElements)) parts.push_back(part);
     first[j + 1] = parts.size();
   }
-  const std::vector<Rgb> each = point_responses(points, parts, transport);
+  const std::vector<Rgb> each = point_responses(points, parts, transport, later);
   const size_t n = points.size();
   std::vector<Rgb> out(n * lights.size(), Rgb(0.f));
   for (size_t j = 0; j < lights.size(); ++j) {
@@ -447,14 +495,21 @@ std::vector<Rgb> IsmRenderer::unit_responses(const SurfacePoints& points, std::s
   return out;
 }
 
-std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport) {
+std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::span<const Light> lights, Transport transport,
+                                              Later later) {
   std::lock_guard lock(m_mutex);
   if (!m_scene) throw std::logic_error("IsmRenderer: set_scene was not called");
   const size_t n = points.size();
   std::vector<Rgb> out(n * lights.size(), Rgb(0.f));
   m_clock->seconds.clear();
   if (n == 0 || lights.empty()) return out;
-  const PointBuffers& pb = upload_points(points);
+  // The images' vertices keep buffers (and maps) of their own, beside the last other point set.
+  const bool vertices = m_vertices && &points == m_vertices.get();
+  if (vertices && !m_vertex_buffers) m_vertex_buffers = make_point_buffers(points);
+  const PointBuffers& pb = vertices ? *m_vertex_buffers : upload_points(points);
+  const bool later_bounces = every_bounce_path() && transport != Transport::DirectOnly && later != Later::Excluded;
+  if (later_bounces) bounces();
+  std::vector<Rgb> field;  // d₁ + … + d_{B−1} at the bounce points, per light: gathered once, after every chunk
   uint32_t chunk = lights_per_chunk(lights.size(), n);
   // Thread numbers in the shaders are 32-bit: keep points × lights within them.
   chunk = uint32_t(std::min<size_t>(chunk, std::max<size_t>(1, (size_t(1) << 31) / n)));
@@ -462,7 +517,7 @@ std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::
   for (size_t start = 0; start < lights.size(); start += chunk) {
     const size_t count = std::min<size_t>(chunk, lights.size() - start);
     begin_commands(m_cmd);
-    record_chunk(m_cmd, pb, lights.subspan(start, count), transport, ws, *m_clock);
+    record_chunk(m_cmd, pb, lights.subspan(start, count), transport, later, ws, *m_clock);
     submit_and_wait(m_cmd);
     const float* result = ws.result.data<float>();
     for (size_t j = 0; j < count; ++j)
@@ -470,9 +525,125 @@ std::vector<Rgb> IsmRenderer::point_responses(const SurfacePoints& points, std::
         const float* r = result + 4 * (j * n + i);
         out[(start + j) * n + i] = Rgb(r[0], r[1], r[2]);
       }
+    if (later_bounces) {
+      const std::vector<Rgb> f = later_bounce_field(lights.subspan(start, count), ws);
+      field.insert(field.end(), f.begin(), f.end());
+    }
   }
+  if (later_bounces) gather_later_bounces(points, pb, field, lights.size(), out.data());
   m_context->throw_on_validation_errors();
   return out;
+}
+
+const IsmRenderer::Bounces& IsmRenderer::bounces() {
+  if (m_bounces) return *m_bounces;
+  const IsmSettings& s = m_settings;
+  auto b = std::make_unique<Bounces>();
+  SurfacePoints sampled = sample_bounce_points(*m_scene, s.bounce_points, s.seed);
+  const std::vector<Rgb> albedo = sampled.albedo;
+  std::fill(sampled.albedo.begin(), sampled.albedo.end(), Rgb(1.f));
+  b->points = make_point_buffers(sampled);
+  b->normals = sampled.normals;
+  const size_t m = sampled.size();
+  b->emitters = Buffer(*m_context, m * 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the bounce points");
+  float* e = b->emitters.data<float>();
+  const float* pos = b->points->positions.data<float>();
+  for (size_t i = 0; i < m; ++i)
+    for (int a = 0; a < 4; ++a) {
+      e[8 * i + a] = a < 3 ? pos[4 * i + a] : 1.f;
+      e[8 * i + 4 + a] = a < 3 ? sampled.normals[i][a] : b->points->normals.data<float>()[4 * i + 3];  // w: open sides
+    }
+  b->weights = paraboloid_cosine_weights(s.bounce_map);
+  b->radius = float(std::sqrt(surface_area(*m_scene) / (kPi * double(m))));
+  m_bounces = std::move(b);
+  try {
+    GatherRows transport = bounce_rows(*m_bounces->points, 0, m);
+    m_bounces->series = std::make_unique<BounceSeries>(std::move(transport), albedo, s.bounces);
+  } catch (...) {
+    m_bounces.reset();
+    throw;
+  }
+  return *m_bounces;
+}
+
+GatherRows IsmRenderer::bounce_rows(const PointBuffers& pb, size_t first, size_t count) {
+  const IsmSettings& s = m_settings;
+  const Bounces& b = *m_bounces;
+  const uint32_t emitters = uint32_t(b.normals.size()), texels = s.bounce_map * s.bounce_map;
+  // Receivers per pass: maps within 64 MB, thread numbers within 32 bits.
+  const size_t per_pass = std::max<size_t>(1, std::min<size_t>((size_t(64) << 20) / (size_t(texels) * 4 * 2),
+                                                               (size_t(1) << 31) / (size_t(2) * emitters)));
+  const size_t pass = std::min(per_pass, count);
+  Buffer receivers(*m_context, pass * 2 * 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the bounce receivers");
+  Buffer nearest(*m_context, pass * 2 * texels * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, true,
+                 "the bounce maps");
+  Buffer drawn(*m_context, pass * 2 * texels * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, true,
+               "the bounce maps");
+  const float* pos = pb.positions.data<float>();
+  const float* nor = pb.normals.data<float>();
+  GatherRows rows;
+  for (size_t begin = first; begin < first + count; begin += pass) {
+    const size_t here = std::min(pass, first + count - begin);
+    float* r = receivers.data<float>();
+    for (size_t i = 0; i < here; ++i) {
+      const size_t p = begin + i;
+      const uint32_t open = uint32_t(nor[4 * p + 3]);
+      for (int side = 0; side < 2; ++side) {
+        float* at = r + 16 * i + 8 * side;
+        const float sign = side == 0 ? 1.f : -1.f;
+        for (int a = 0; a < 3; ++a) {
+          at[a] = pos[4 * p + a];
+          at[4 + a] = sign * nor[4 * p + a];
+        }
+        at[3] = 1.f;
+        at[7] = (open >> side) & 1u ? 1.f : 0.f;
+      }
+    }
+    begin_commands(m_cmd);
+    vkCmdFillBuffer(m_cmd, nearest.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
+    vkCmdFillBuffer(m_cmd, drawn.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
+    full_barrier(m_cmd);
+    for (uint32_t step = 0; step < 2; ++step) {
+      BounceSplatParams params{uint32_t(2 * here), emitters, s.bounce_map, 65000.f / (1.01f * m_scene->diagonal()), step,
+                               b.radius};
+      m_kernels->bounce_splat.dispatch(m_cmd, {&receivers, &b.emitters, &nearest, &drawn}, &params, uint64_t(2 * here) * emitters);
+      full_barrier(m_cmd);
+    }
+    submit_and_wait(m_cmd);
+    rows.append(nearest.data<uint32_t>(), drawn.data<uint32_t>(), 2 * here, s.bounce_map, b.weights);
+  }
+  return rows;
+}
+
+std::vector<Rgb> IsmRenderer::later_bounce_field(std::span<const Light> lights, const Workspace& ws) {
+  const Bounces& b = *m_bounces;
+  const size_t m = b.normals.size(), c = lights.size();
+  // e₀ per (bounce point, side): the direct kernel's E/π on the side facing the light.
+  std::vector<float> direct(c * 2 * m, 0.f);
+  const float* result = ws.bounce_direct.data<float>();
+  const float* pos = b.points->positions.data<float>();
+  for (size_t j = 0; j < c; ++j)
+    for (size_t i = 0; i < m; ++i) {
+      const Vec3 p(pos[4 * i], pos[4 * i + 1], pos[4 * i + 2]);
+      const int side = glm::dot(b.normals[i], p - lights[j].position) < 0.f ? 0 : 1;
+      direct[j * 2 * m + 2 * i + side] = float(kPi) * result[4 * (j * m + i)];
+    }
+  return b.series->bounced(direct, c);
+}
+
+void IsmRenderer::gather_later_bounces(const SurfacePoints& points, const PointBuffers& pb, const std::vector<Rgb>& f,
+                                       size_t c, Rgb* out) {
+  const Bounces& b = *m_bounces;
+  const size_t n = pb.count;
+  if (n <= kCachedGatherPoints) {
+    if (!pb.bounce_rows) pb.bounce_rows = std::make_unique<GatherRows>(bounce_rows(pb, 0, n));
+    b.series->gather(*pb.bounce_rows, points.albedo, 0, f, c, out, n);
+    return;
+  }
+  for (size_t first = 0; first < n; first += kCachedGatherPoints) {
+    const size_t count = std::min(kCachedGatherPoints, n - first);
+    b.series->gather(bounce_rows(pb, first, count), points.albedo, first, f, c, out, n);
+  }
 }
 
 std::vector<Rgb> IsmRenderer::illuminate(const SurfacePoints& points, std::span<const Light> lights) {
@@ -506,7 +677,8 @@ std::string IsmSettings::key() const {
   return "ism-vulkan/bounces=" + std::to_string(bounces) + "/shadow=" + std::to_string(shadow_size) + "/vpls=" +
          std::to_string(vpls) + "/ism=" + std::to_string(ism_size) + "/ppv=" + std::to_string(points_per_vpl) + "/pool=" +
          std::to_string(ism_points) + "/bias=" + std::to_string(ism_bias) + "/clamp=" +
-         std::to_string(vpl_clamp) + "/seed=" + std::to_string(seed);
+         std::to_string(vpl_clamp) + "/seed=" + std::to_string(seed) +
+         (bounces != 0 && bounces != 1 ? "/bpoints=" + std::to_string(bounce_points) + "/bmap=" + std::to_string(bounce_map) : "");
 }
 
 } // namespace hilight::ism
