@@ -377,6 +377,77 @@ TEST_CASE("a target made from a 3 × 4 array of panels comes back as that array"
   }
 }
 
+namespace {
+/// An L-shaped room, 3 m high: 9 m × 9 m with the corner x, z in [6, 9]
+/// cut away (slabs and walls 0.2 m thick, as a modelled building's).
+Scene l_shaped_room() {
+  Scene s;
+  const float t = 0.2f, h = 3.f;
+  const Rgb wall(0.7f), floor(0.4f);
+  for (float y : {-t, h}) {  // floor and ceiling slabs, both legs
+    const Rgb& r = y < 0.f ? floor : wall;
+    builders::add_box(s, Vec3(-t, y, -t), Vec3(9.f + t, y + t, 6.f), r, false, y < 0.f ? "floor" : "ceiling");
+    builders::add_box(s, Vec3(-t, y, 6.f), Vec3(6.f, y + t, 9.f + t), r, false, y < 0.f ? "floor" : "ceiling");
+  }
+  builders::add_box(s, Vec3(-t, 0.f, -t), Vec3(9.f + t, h, 0.f), wall, false, "wall");          // south
+  builders::add_box(s, Vec3(-t, 0.f, 0.f), Vec3(0.f, h, 9.f + t), wall, false, "wall");          // west
+  builders::add_box(s, Vec3(9.f, 0.f, 0.f), Vec3(9.f + t, h, 6.f + t), wall, false, "wall");     // east
+  builders::add_box(s, Vec3(0.f, 0.f, 9.f), Vec3(6.f + t, h, 9.f + t), wall, false, "wall");     // north
+  builders::add_box(s, Vec3(6.f, 0.f, 6.f), Vec3(9.f, h, 6.f + t), wall, false, "wall");         // the inner corner, along x
+  builders::add_box(s, Vec3(6.f, 0.f, 6.f + t), Vec3(6.f + t, h, 9.f), wall, false, "wall");     // and along z
+  return s;
+}
+} // namespace
+
+// Issue 34: a grid over an L-shaped room's rectangle, the places outside
+// the room left out, as a designer draws it (DIALux and Relux place grids
+// in rectangles only). Before, every place of an array had to fit: no array
+// of 8 stood in this room.
+TEST_CASE("an L-shaped room gets one regular grid clipped to its outline: a target made from it comes back as it", "[lux][layout]") {
+  auto scene = test::finish(l_shaped_room(), 0.5f);
+  const RayScene rays(*scene);
+  const Regions regions(rays);
+  Light luminaire;
+  luminaire.type = LightType::Luminaire;
+  luminaire.profile = std::make_shared<const Photometry>(parse_ies(panel_text(), "panel.ies"));
+  luminaire.profile_path = "panel.ies";
+  // A 3 × 3 grid of 3 m cells over the 9 m square; the corner cell's centre (7.5, 7.5) is outside.
+  Lighting made;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) {
+      if (i == 2 && k == 2) continue;
+      Light l = luminaire;
+      l.position = Vec3(1.5f + 3.f * float(i), 2.9f, 1.5f + 3.f * float(k));
+      l.intensity = Rgb(float(0.8 * luminaire.profile->peak() / kLumensPerWatt));
+      made.push_back(l);
+    }
+  IlluminanceCriteria c;
+  c.grids.push_back(make_work_plane(rays, regions, {}, 0.75f, 1.0, 0.0));
+  auto renderer = test::make_renderer("embree", scene);
+  const std::vector<double> lux = lux_from_radiance(renderer->illuminate(c.points(), made));
+  const GridFigures f = grid_figures(c.grids.front(), lux);
+  c.grids.front().lux = 0.99 * f.mean;
+  c.grids.front().u0 = 0.99 * f.u0;
+  PlacementRules rules;
+  rules.add("ceiling:0.1");
+  const LightSpace space(rays, rules);
+  DesignSettings settings;
+  settings.maintenance_factor = 1;
+  settings.layout = LayoutChoice::Array;
+  DesignReport report;
+  const Lighting lights = design_for_illuminance(*renderer, space, luminaire, c, settings, report);
+  INFO(report.array.shape << ", Ē wanted " << c.grids.front().lux << ", U0 wanted " << c.grids.front().u0);
+  CHECK(report.met);
+  CHECK_THAT(report.array.shape, Catch::Contains("3 × 3") && Catch::Contains("8 in the room"));
+  REQUIRE(lights.size() == 8);
+  for (const Light& m : made) {
+    float nearest = 1e9f;
+    for (const Light& l : lights) nearest = std::min(nearest, glm::length(l.position - m.position));
+    CHECK(nearest < 0.01f);
+  }
+  for (double d : report.dimming) CHECK(d == Approx(0.8).epsilon(0.02));
+}
+
 TEST_CASE("UGR at the standard observers: reported, and a limit with --ugr-max", "[lux][ugr][cli]") {
   const auto dir = test::output_dir("layout_ugr");
   const auto criteria = criteria_file(dir);

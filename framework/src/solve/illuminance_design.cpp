@@ -735,9 +735,10 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
                         : settings.max_count ? settings.max_count
                                              : std::min(std::max(first, kMostInArray), std::max<size_t>(first + 12, 3 * size_t(std::ceil(bound.flux)) + 8));
     size_t met_at = 0;
+    ArrayFitCache fits;
     for (size_t n = std::max<size_t>(first, 1); n <= last && n <= 2000; ++n) {
       if (met_at && n > met_at + 4) break;
-      std::vector<ArrayLayout> shapes = room_arrays(space, room, luminaire, rules, turns, n);
+      std::vector<ArrayLayout> shapes = room_arrays(space, room, luminaire, rules, turns, n, &fits);
       if (shapes.empty()) continue;
       std::vector<Place> places;
       for (const auto& s : shapes)

@@ -212,13 +212,15 @@ RoomFrame room_frame(const LightSpace& space, const IlluminanceCriteria& criteri
 }
 
 std::string ArrayLayout::describe() const {
-  char text[96];
+  char text[128];
   std::snprintf(text, sizeof(text), "%d × %d at %.2f × %.2f m", columns, rows, double(du), double(dv));
-  return text;
+  std::string out = text;
+  if (positions.size() < size_t(columns) * size_t(rows)) out += ", " + std::to_string(positions.size()) + " in the room";
+  return out;
 }
 
 std::vector<ArrayLayout> room_arrays(const LightSpace& space, const RoomFrame& room, const Light& luminaire, const ArrayRules& rules,
-                                     const std::vector<float>& turns, size_t count) {
+                                     const std::vector<float>& turns, size_t count, ArrayFitCache* cache) {
   std::vector<ArrayLayout> out;
   if (count == 0) return out;
   const float tile = float(rules.tile);
@@ -257,51 +259,70 @@ std::vector<ArrayLayout> room_arrays(const LightSpace& space, const RoomFrame& r
     }
   };
   const float h = std::max(1e-3f, rules.height_over_plane);
-  for (float turn : turns) {
+  // An L-shaped (or any not rectangular) room: grids over its rectangle, clipped.
+  const double rectangle = double(room.length()) * double(room.width());
+  const double fill = rectangle > 0 ? room.floor_area / rectangle : 1.0;
+  const bool clip = fill > 0 && fill < kClippedFill;
+  const size_t most_cells = clip ? size_t(std::ceil(1.25 * double(count) / fill)) : count;
+  for (size_t t = 0; t < turns.size(); ++t) {
+    const float turn = turns[t];
     const Light l = turned(luminaire, turn);
     const bool lengthwise = std::abs(glm::dot(length_axis(l), room.u)) > 0.7f;
     const float eu = lengthwise ? rules.size[0] : rules.size[1], ev = lengthwise ? rules.size[1] : rules.size[0];
-    for (size_t nu = 1; nu <= count; ++nu) {
-      if (count % nu) continue;
-      const size_t nv = count / nu;
-      if (nu > 4096 || nv > 4096) continue;
-      std::vector<std::pair<float, std::vector<float>>> us, vs;
-      along(int(nu), room.u_lo, room.u_hi, eu, ou, us);
-      along(int(nv), room.v_lo, room.v_hi, ev, ov, vs);
-      for (const auto& [du, ucs] : us)
-        for (const auto& [dv, vcs] : vs) {
-          if (du + 1e-4f < eu || dv + 1e-4f < ev) continue;  // the outlines would overlap
-          if (rules.spacing.min_spacing > 0 && ((nu > 1 && double(du) < rules.spacing.min_spacing - 1e-6) ||
-                                                (nv > 1 && double(dv) < rules.spacing.min_spacing - 1e-6)))
-            continue;
-          if (rules.spacing.max_spacing_ratio > 0 &&
-              ((nu > 1 && double(du) > rules.spacing.max_spacing_ratio * double(h) + 1e-6) ||
-               (nv > 1 && double(dv) > rules.spacing.max_spacing_ratio * double(h) + 1e-6)))
-            continue;
-          if (!rules.exact_count && std::max(du, dv) > 2.f * std::min(du, dv) + 1e-4f) continue;  // spacings within 2:1
-          ArrayLayout a;
-          a.columns = int(nu), a.rows = int(nv), a.du = du, a.dv = dv, a.turn = turn;
-          bool fits = true;
-          for (float v : vcs) {
-            for (float u : ucs) {
-              const auto at = space.place(room.at(u, v, room.mount_y));
-              if (!at || !space.admissible(*at)) {
-                fits = false;
-                break;
-              }
-              Light placed = l;
-              placed.position = *at;
-              if (!clear_of_walls(space.rays(), footprint_of(placed, rules.size))) {
-                fits = false;
-                break;
-              }
-              a.positions.push_back(*at);
-            }
-            if (!fits) break;
+    // Where the grid's places fit: all of them (an array of `count`), or
+    // with `clip` those that do (kept only if `count` of them do).
+    const auto fitting = [&](const std::vector<float>& ucs, const std::vector<float>& vcs) {
+      std::vector<Vec3> kept;
+      for (float v : vcs)
+        for (float u : ucs) {
+          const auto at = space.place(room.at(u, v, room.mount_y));
+          bool fits = at && space.admissible(*at);
+          if (fits) {
+            Light placed = l;
+            placed.position = *at;
+            fits = clear_of_walls(space.rays(), footprint_of(placed, rules.size));
           }
-          if (fits) out.push_back(std::move(a));
+          if (fits) kept.push_back(*at);
+          else if (!clip) return std::vector<Vec3>();
         }
-    }
+      return kept;
+    };
+    for (size_t cells = count; cells <= most_cells; ++cells)
+      for (size_t nu = 1; nu <= cells; ++nu) {
+        if (cells % nu) continue;
+        const size_t nv = cells / nu;
+        if (nu > 4096 || nv > 4096) continue;
+        std::vector<std::pair<float, std::vector<float>>> us, vs;
+        along(int(nu), room.u_lo, room.u_hi, eu, ou, us);
+        along(int(nv), room.v_lo, room.v_hi, ev, ov, vs);
+        for (size_t iu = 0; iu < us.size(); ++iu)
+          for (size_t iv = 0; iv < vs.size(); ++iv) {
+            const auto& [du, ucs] = us[iu];
+            const auto& [dv, vcs] = vs[iv];
+            if (du + 1e-4f < eu || dv + 1e-4f < ev) continue;  // the outlines would overlap
+            if (rules.spacing.min_spacing > 0 && ((nu > 1 && double(du) < rules.spacing.min_spacing - 1e-6) ||
+                                                  (nv > 1 && double(dv) < rules.spacing.min_spacing - 1e-6)))
+              continue;
+            if (rules.spacing.max_spacing_ratio > 0 &&
+                ((nu > 1 && double(du) > rules.spacing.max_spacing_ratio * double(h) + 1e-6) ||
+                 (nv > 1 && double(dv) > rules.spacing.max_spacing_ratio * double(h) + 1e-6)))
+              continue;
+            if (!rules.exact_count && std::max(du, dv) > 2.f * std::min(du, dv) + 1e-4f) continue;  // spacings within 2:1
+            std::vector<Vec3> kept;
+            const std::string key = std::to_string(t) + "/" + std::to_string(nu) + "x" + std::to_string(nv) + "/" +
+                                    std::to_string(iu) + "," + std::to_string(iv);
+            if (cache && cache->fits.count(key)) kept = cache->fits.at(key);
+            else {
+              kept = fitting(ucs, vcs);
+              if (cache) cache->fits[key] = kept;
+            }
+            if (kept.size() != count) continue;
+            ArrayLayout a;
+            a.columns = int(nu), a.rows = int(nv), a.du = du, a.dv = dv, a.turn = turn;
+            a.positions = std::move(kept);
+            out.push_back(std::move(a));
+          }
+      }
   }
   return out;
 }

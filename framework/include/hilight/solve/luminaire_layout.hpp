@@ -11,6 +11,7 @@
 
 #include <optional>
 #include <string>
+#include <map>
 #include <vector>
 
 namespace hilight {
@@ -71,8 +72,8 @@ RoomFrame room_frame(const LightSpace& space, const IlluminanceCriteria& criteri
 struct ArrayLayout {
   int columns = 0, rows = 0;
   float du = 0, dv = 0, turn = 0;
-  std::vector<Vec3> positions;
-  std::string describe() const;  ///< "3 × 4 at 3.00 × 3.00 m"
+  std::vector<Vec3> positions;  ///< fewer than columns × rows where the room's outline clips the grid
+  std::string describe() const;  ///< "3 × 4 at 3.00 × 3.00 m", or "…, 10 in the room" when clipped
 };
 
 struct ArrayRules {
@@ -92,9 +93,20 @@ struct ArrayRules {
 /// the room (each luminaire in the middle of its cell), or on the tiles of
 /// the grid, centred in the room. Positions are moved onto the mount by
 /// `space`; an array any of whose luminaires cannot stand there, or whose
-/// outline would cross a wall, is left out.
+/// outline would cross a wall, is left out — unless the room fills less
+/// than kClippedFill of its rectangle (an L-shaped room): there a grid over
+/// the rectangle keeps the places that fit and drops the rest, as a
+/// designer draws one grid over the whole plan (`count` is then what is
+/// kept, of up to 1.25·count/fill cells). `cache` (may be null) keeps the
+/// grids' fits between calls for other counts.
+constexpr double kClippedFill = 0.95;
+struct ArrayFitCache;
 std::vector<ArrayLayout> room_arrays(const LightSpace& space, const RoomFrame& room, const Light& luminaire, const ArrayRules& rules,
-                                     const std::vector<float>& turns, size_t count);
+                                     const std::vector<float>& turns, size_t count, ArrayFitCache* cache = nullptr);
+/// The places of each grid that fit (room_arrays), kept across counts.
+struct ArrayFitCache {
+  std::map<std::string, std::vector<Vec3>> fits;
+};
 
 /// True when the outline at `f` (at the mount height) stays clear of walls.
 bool clear_of_walls(const RayScene& rays, const Footprint& f);
