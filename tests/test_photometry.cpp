@@ -205,3 +205,24 @@ TEST_CASE("hilight luminaire --ies writes an IES file that reads back, and refus
   CHECK_THAT(bad.err, Catch::Contains("quad.txt"));
   CHECK(!std::filesystem::exists(dir / "quad.txt"));
 }
+
+// Found by the photometry fuzzer's IES round trip: a EULUMDAT file of Isym 0
+// whose planes start past C = 0 read 0 cd between C = 0 and its first plane,
+// though after its last plane it wrapped round to the first. Both sides of
+// C = 0 now lie between the last plane and the first, a turn apart.
+TEST_CASE("EULUMDAT planes that start past C = 0 wrap round to the last plane before the first", "[photometry]") {
+  const auto gammas = angles(0, 180, 90);
+  // Planes at C = 30 and C = 210 (Isym 0, 2 of them, 180 apart): 100 and 300 cd/klm.
+  std::string text = ldt(0, {30, 210}, gammas, {{100, 100, 100}, {300, 300, 300}}, 1000);
+  const Photometry p = parse_ldt(text, "late-planes.ldt");
+  REQUIRE(p.horizontal.front() == 30.0);
+  // C = 0 lies 150° after the last plane (210), 30° before the first: 5/6 of the way from 300 to 100.
+  CHECK(p.intensity(0, 0) == Approx(300.0 + (100.0 - 300.0) * 150.0 / 180.0));
+  CHECK(p.intensity(15, 0) == Approx(300.0 + (100.0 - 300.0) * 165.0 / 180.0));
+  CHECK(p.intensity(359, 0) == Approx(p.intensity(-1, 0)));
+  CHECK(p.intensity(30, 0) == Approx(100.0));
+  CHECK(p.intensity(120, 0) == Approx(200.0));
+  // And its IES text reads back the same all round.
+  const Photometry back = parse_ies(ies_text(p), "late-planes.ies");
+  for (double c = 0; c < 360; c += 7.5) CHECK(back.intensity(c, 45) == Approx(p.intensity(c, 45)));
+}

@@ -133,9 +133,11 @@ Photometry parse_ldt(const std::string& text, const std::string& source) {
       throw InputError(source, text);
     }
   }
-  // Isym 0 planes cover [0, 360): close the circle for interpolation.
-  if (isym == 0 && p.horizontal.back() < 360.0) {
-    p.horizontal.push_back(360.0);
+  // Isym 0 planes cover a turn: close the circle for interpolation with the
+  // first plane a turn later (C = 360 when the first is at 0; a file whose
+  // planes start past 0 is read at C = 0 between its last and first).
+  if (isym == 0 && p.horizontal.back() < p.horizontal.front() + 360.0) {
+    p.horizontal.push_back(p.horizontal.front() + 360.0);
     p.candela.insert(p.candela.end(), p.candela.begin(), p.candela.begin() + std::ptrdiff_t(ng));
   }
   return p;

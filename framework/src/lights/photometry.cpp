@@ -53,6 +53,9 @@ double Photometry::intensity(double c_deg, double gamma_deg) const {
       h = h <= 90.0 ? h : 180.0 - h;
       break;
     case Symmetry::None:
+      // Before the first plane is after the last one, a turn earlier (a
+      // EULUMDAT file's planes need not start at C = 0).
+      if (h < horizontal.front()) h += 360.0;
       if (h > horizontal.back()) {  // between the last plane and 360 = the first plane again
         const double span = 360.0 - horizontal.back() + horizontal.front();
         const double t = span > 0 ? (h - horizontal.back()) / span : 0.0;
