@@ -84,9 +84,12 @@ inline float unit_direct_irradiance_on_side(const RayScene& es, const ShadingPoi
   if (cos_n == 0.f) return 0.f;
   float angular = light.angular(-w);
   if (angular == 0.f) return 0.f;
-  if (in_own_wedge(es, at, n, w)) return 0.f;  // through the smooth surface its own fan stands for
   ++rays;
   if (es.occluded(at.ray_start(w, side_normal, eps), w, dist - 2.f * eps)) return 0.f;
+  // Through the smooth surface its own fan stands for. After the ray: most
+  // rays that could lie in a wedge are blocked anyway (a solid's far side),
+  // and the test looks the fan up.
+  if (in_own_wedge(es, at, n, w)) return 0.f;
   return cos_n * angular / dist2;
 }
 
