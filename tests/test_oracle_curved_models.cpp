@@ -303,16 +303,17 @@ TEST_CASE("oracle: Embree's direct light on real curved models matches a brute-f
 
 TEST_CASE("oracle: POV-Ray's direct light on real curved models matches the brute-force loop", "[oracle][povray]") {
   if (test::skip_without_renderer("povray")) return;
-  // Goal 1% (issue 11); measured 2.0%, most of it at three vertices under a
-  // doubled sheet of the Wuson that POV-Ray's shadow tolerance ignores
-  // (docs/povray.md).
+  // Goal 1% (issue 11); measured 1.8% (2.1% before the wedge), most of it at
+  // three vertices under a doubled sheet of the Wuson that POV-Ray's shadow
+  // tolerance ignores (docs/povray.md).
   CHECK(renderer_against_oracle("povray").dbar < 0.025);
 }
 
 TEST_CASE("oracle: ism-vulkan's direct light on real curved models matches the brute-force loop", "[oracle][ism]") {
   if (test::skip_without_renderer("ism-vulkan")) return;
-  // Issue 11's tolerance; measured 1.6% on lavapipe (512² ID maps, a 4x4
-  // texel window of candidates; 256² and 2x2 gave 6.3%).
+  // Issue 11's tolerance; measured 1.5% on lavapipe (512² ID maps, a 4x4
+  // texel window of candidates; 256² and 2x2 gave 6.3%; 1.9% before the
+  // wedge).
   CHECK(renderer_against_oracle("ism-vulkan").dbar < 0.02);
 }
 
@@ -339,9 +340,9 @@ TEST_CASE("oracle: POV-Ray and Embree give one answer at the curved models' term
   // Issue 32 measured D̄ 8.8% between them, 294 of 5,297 lit vertices more
   // than 20% apart, at the terminators and shadow edges. A vertex is lit when
   // either renderer gives it more than 0.1% of the mean. Measured now (the
-  // oracle's three lights): D̄ 2.1%, 60 of 5,504 apart, nearly all smooth
-  // vertices where POV-Ray loses a light that Embree and the oracle keep
-  // (docs/rendering-model.md, "The oracle").
+  // oracle's three lights): D̄ 1.8%, 21 of 5,339 apart; 2.1% and 62 of 5,504
+  // while a smooth vertex's wedge let a light through in one renderer and
+  // not the other (docs/rendering-model.md, "The oracle").
   const OracleCase& c = curved_case();
   const SurfacePoints points = SurfacePoints::from_vertices(*c.scene);
   const auto embree = test::make_renderer("embree", c.scene, {"bounces=0"})->illuminate(points, c.lights);
@@ -358,6 +359,6 @@ TEST_CASE("oracle: POV-Ray and Embree give one answer at the curved models' term
   const double d = test::dbar(pov, embree);
   std::printf("curved models, direct light: POV-Ray against Embree D-bar %.3f%%, %zu of %zu lit vertices > 20%% apart\n", 100 * d,
               apart, lit);
-  CHECK(d < 0.025);
-  CHECK(double(apart) < 0.015 * double(lit));
+  CHECK(d < 0.022);
+  CHECK(double(apart) < 0.008 * double(lit));
 }
