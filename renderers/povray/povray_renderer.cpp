@@ -168,16 +168,18 @@ std::vector<Rgb> PovrayRenderer::bake_direct(const SurfacePoints& points, std::s
     if (any) alone.emplace_back(j, std::move(dark));
     else plain.push_back(lights[j]);
   }
-  std::vector<Rgb> out = plain.empty() ? std::vector<Rgb>(m, Rgb(0.f)) : bake_direct_run(points, plain, {});
+  std::vector<Vec3> shaded(m);
+  for (size_t i = 0; i < m; ++i) shaded[i] = at[i].position;
+  std::vector<Rgb> out = plain.empty() ? std::vector<Rgb>(m, Rgb(0.f)) : bake_direct_run(points, shaded, plain, {});
   for (const auto& [j, dark] : alone) {
-    const std::vector<Rgb> one = bake_direct_run(points, lights.subspan(j, 1), dark);
+    const std::vector<Rgb> one = bake_direct_run(points, shaded, lights.subspan(j, 1), dark);
     for (size_t i = 0; i < m; ++i) out[i] += one[i];
   }
   return out;
 }
 
-std::vector<Rgb> PovrayRenderer::bake_direct_run(const SurfacePoints& points, std::span<const Light> lights,
-                                                 const std::vector<uint8_t>& dark) {
+std::vector<Rgb> PovrayRenderer::bake_direct_run(const SurfacePoints& points, const std::vector<Vec3>& at,
+                                                 std::span<const Light> lights, const std::vector<uint8_t>& dark) {
   const size_t m = points.size();
   std::vector<Rgb> out(m, Rgb(0.f));
   const float scale = exposure_scale(lights);
@@ -209,8 +211,6 @@ std::vector<Rgb> PovrayRenderer::bake_direct_run(const SurfacePoints& points, st
     const float offset = std::max(1e-8f * diagonal, 8.f * std::numeric_limits<float>::epsilon() * largest);
     const float receiver = 1e-4f * diagonal;
     const float lift = 5e-5f * diagonal, size = 0.25f * receiver;
-    std::vector<Vec3> at(m);
-    for (size_t i = 0; i < m; ++i) at[i] = shading_point(*m_rays, points.positions[i], points.normals[i]).position;
     // A union of triangles, not a mesh: POV-Ray keeps a mesh's vertices in
     // single precision, which cannot hold the receivers off the surface.
     write_pov_scene(file, *m_scene, scaled, settings);
