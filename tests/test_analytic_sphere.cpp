@@ -267,3 +267,67 @@ TEST_CASE("analytic sphere: ism-vulkan gives the smooth sphere's direct light, c
   // the point's own triangles along the exact ray there.)
   hold_to_the_sphere("ism-vulkan");
 }
+
+namespace {
+
+/// A lampshade: the sphere with its bottom cut away (every triangle with a
+/// corner more than 0.3 R below the centre gone), an open two-sided sheet,
+/// under seeded random lights inside it (within 0.4 R of the centre). Every
+/// vertex sees each light on its inner side, well behind its tangent plane
+/// (|n·ω| ≥ 0.6, beyond any facet's tilt): the wedge must not darken it.
+/// Returns the worst relative error against I |n·ω| / d² over the vertices.
+double lampshade_error(const std::string& renderer, int subdivisions) {
+  const Scene ball = builders::sphere(kRadius, subdivisions, false, Rgb(0.8f));
+  Scene shade;
+  shade.positions = ball.positions;
+  shade.normals = ball.normals;
+  shade.materials = ball.materials;
+  for (size_t t = 0; t < ball.triangles.size(); ++t) {
+    bool kept = true;
+    for (uint32_t v : ball.triangles[t]) kept = kept && ball.positions[v].y >= -0.3f * kRadius;
+    if (!kept) continue;
+    shade.triangles.push_back(ball.triangles[t]);
+    shade.triangle_material.push_back(ball.triangle_material[t]);
+  }
+  auto scene = std::make_shared<const Scene>(finish_scene(std::move(shade), {10.f}));
+  std::mt19937_64 rng(3211);
+  std::uniform_real_distribution<float> unit(-1.f, 1.f);
+  Lighting lights;
+  while (lights.size() < 3) {
+    const Vec3 p(unit(rng), unit(rng), unit(rng));
+    if (glm::length(p) <= 1.f) lights.push_back(Light::point(0.4f * kRadius * p, Rgb(2.f)));
+  }
+  auto r = test::make_renderer(renderer, scene, {"bounces=0"});
+  const SurfacePoints points = SurfacePoints::from_vertices(*scene);
+  const auto phi = r->unit_responses(points, lights, Transport::All);
+  double worst = 0;
+  size_t used = 0;
+  for (size_t j = 0; j < lights.size(); ++j)
+    for (size_t i = 0; i < points.size(); ++i) {
+      const D3 to = D3(lights[j].position) - D3(points.positions[i]);
+      const double cosine = glm::dot(D3(points.normals[i]), glm::normalize(to));
+      if (glm::length(D3(points.positions[i])) < 0.5 * kRadius) continue;  // (a vertex the cut left unused)
+      ++used;
+      REQUIRE(cosine < -0.5);  // the inner side, far behind the tangent plane
+      const double want = -cosine / glm::dot(to, to);
+      const double got = kPi * double(phi[j * points.size() + i].r) / double(points.albedo[i].r);
+      worst = std::max(worst, std::abs(got / want - 1));
+    }
+  REQUIRE(used > 0);
+  return worst;
+}
+
+} // namespace
+
+TEST_CASE("a lampshade (an open cut sphere) lit from inside keeps its inner side's light in every renderer",
+          "[analytic][sphere][sheet]") {
+  for (const std::string renderer : {"embree", "povray", "ism-vulkan"}) {
+    if (renderer != "embree" && test::skip_without_renderer(renderer)) continue;
+    for (int subdivisions : {1, 3}) {
+      const double worst = lampshade_error(renderer, subdivisions);
+      std::printf("lampshade (%d subdivisions) lit from inside: %s worst %.3f%%\n", subdivisions, renderer.c_str(), 100 * worst);
+      CAPTURE(renderer, subdivisions);
+      CHECK(worst < 0.01);
+    }
+  }
+}

@@ -41,6 +41,10 @@ struct ShadingPoint {
   /// direction with |n·ω| below it can lie in the point's wedge
   /// (in_own_wedge); 0: none can (a flat fan, a pixel's hit, a crease).
   float wedge = 0.f;
+  /// The fan is one plane all around the point (`triangle`'s: a face cut
+  /// into coplanar triangles, a tessellated one): its wedge is told from that
+  /// plane alone, with no look-up.
+  bool flat_fan = false;
 
   /// Where a ray toward unit `dir` starts, leaving on the side `side_normal` points to.
   Vec3 ray_start(const Vec3& dir, const Vec3& side_normal, float eps) const {
@@ -143,9 +147,10 @@ public:
   /// a vertex at `p` (within radius/20) whose normal agrees with `normal`
   /// (cos ≥ 0.999): only the point's own smooth surface is near it. With
   /// `tilt`, also the sine of the largest tilt of those own triangles
-  /// against the plane normal to `normal` (ShadingPoint::wedge).
+  /// against the plane normal to `normal` (ShadingPoint::wedge), and with
+  /// `flat` whether they are one plane all around p (ShadingPoint::flat_fan).
   bool only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius,
-                             float* tilt = nullptr) const;
+                             float* tilt = nullptr, bool* flat = nullptr) const;
 
   RTCScene rtc_scene() const { return m_rtc_scene; }
 

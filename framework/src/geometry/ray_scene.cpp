@@ -203,6 +203,33 @@ float facet_tilt(const Vec3& face, const Vec3& n) {
   return sine >= 1e-4f ? sine : 0.f;
 }
 
+/// The mean of the unit directions from p into triangle `tri` over its angle
+/// at p (∫ω dθ: 2 sin(α/2) along the bisector at a corner, 2 inward on an
+/// edge); sets `inside` when p is inside it (the whole disk).
+Vec3 angle_mean(const Scene& scene, const std::array<uint32_t, 3>& tri, const Vec3& p, float touch, bool& inside) {
+  const auto& pos = scene.positions;
+  for (int k = 0; k < 3; ++k)
+    if (glm::length(pos[tri[k]] - p) <= touch) {
+      const Vec3 to_b = pos[tri[(k + 1) % 3]] - p, to_c = pos[tri[(k + 2) % 3]] - p;
+      const float lb = glm::length(to_b), lc = glm::length(to_c);
+      if (!(lb > 0.f && lc > 0.f)) return Vec3(0.f);
+      const Vec3 ub = to_b / lb, uc = to_c / lc, bisector = ub + uc;
+      return glm::length(bisector) > 0.f ? glm::length(ub - uc) * glm::normalize(bisector) : Vec3(0.f);
+    }
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = pos[tri[k]], ab = pos[tri[(k + 1) % 3]] - a, ac = pos[tri[(k + 2) % 3]] - a;
+    const float length2 = glm::dot(ab, ab);
+    if (!(length2 > 0.f)) continue;
+    const float along = glm::dot(p - a, ab) / length2;
+    if (along < 0.f || along > 1.f || glm::length(a + along * ab - p) > touch) continue;
+    const Vec3 inward = ac - (glm::dot(ac, ab) / length2) * ab;
+    return glm::length(inward) > 0.f ? 2.f * glm::normalize(inward) : Vec3(0.f);
+  }
+  float u, v;
+  inside = inside || glm::length(closest_on_triangle(p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v) - p) <= touch;
+  return Vec3(0.f);
+}
+
 struct OwnSurfaceQuery {
   const Scene* scene;
   const std::vector<Vec3>* face_normals;
@@ -210,8 +237,18 @@ struct OwnSurfaceQuery {
   uint32_t own_triangle;
   float radius, same_position;
   bool foreign = false;
-  float tilt = 0.f;  ///< the largest facet_tilt of an own triangle
-  void own(uint32_t triangle) { tilt = std::max(tilt, facet_tilt((*face_normals)[triangle], normal)); }
+  float tilt = 0.f;        ///< the largest facet_tilt of an own triangle
+  bool coplanar = true;    ///< every own triangle in own_triangle's plane
+  bool inside = false;     ///< p inside an own triangle
+  Vec3 around{0.f};        ///< the own triangles' angle_mean: 0 where they go all around p
+  void own(uint32_t triangle) {
+    const Vec3& face = (*face_normals)[triangle];
+    tilt = std::max(tilt, facet_tilt(face, normal));
+    coplanar = coplanar && glm::dot(face, (*face_normals)[own_triangle]) >= 1.f - 1e-6f;
+    around += angle_mean(*scene, scene->triangles[triangle], p, same_position, inside);
+  }
+  /// One plane all around p: its wedge needs no look-up (ShadingPoint::flat_fan).
+  bool flat() const { return coplanar && (inside || glm::length(around) < 0.05f); }
 };
 
 bool own_surface_callback(RTCPointQueryFunctionArguments* args) {
@@ -411,10 +448,11 @@ Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& norma
 }
 
 bool RayScene::only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius,
-                                     float* tilt) const {
+                                     float* tilt, bool* flat) const {
   OwnSurfaceQuery q{&m_scene, &m_face_normals, p, normal, own_triangle, radius, radius / 20.f};
   query_triangles_near(m_rtc_scene, p, radius, own_surface_callback, &q);
   if (tilt) *tilt = q.foreign ? 0.f : q.tilt;
+  if (flat) *flat = !q.foreign && q.flat();
   return !q.foreign;
 }
 
@@ -441,8 +479,9 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
   Hit h = rays.closest_point(position, 1e-3f * scene.diagonal(), normal);
   if (!h.valid()) return {position, false};
   float tilt = 0.f;
-  if (rays.only_own_surface_near(position, normal, h.triangle, 2.f * rays.epsilon(), &tilt))
-    return {position, true, h.triangle, tilt > 0.f ? tilt * 1.001f : 0.f};  // (a hair over: in_own_wedge_slow decides)
+  bool flat = false;
+  if (rays.only_own_surface_near(position, normal, h.triangle, 2.f * rays.epsilon(), &tilt, &flat))
+    return {position, true, h.triangle, tilt > 0.f ? tilt * 1.001f : 0.f, flat};  // (a hair over: in_own_wedge_slow decides)
   // Into the chosen triangle's face, away from the crease (or the touching
   // surface), a fixed step relative to the scene (RayScene::shading_step)
   // halved until the point is still on that face. All of it is the same on
@@ -475,6 +514,10 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
 }
 
 bool in_own_wedge_slow(const RayScene& rays, const ShadingPoint& at, const Vec3& n, const Vec3& dir) {
+  if (at.flat_fan) {  // one plane all around: the facet under dir is that plane
+    const Vec3& face = rays.face_normals()[at.triangle];
+    return glm::dot(n, dir) * glm::dot(face, dir) * glm::dot(face, n) < 0.f;
+  }
   // The triangles that made the point smooth: within the same 2ε.
   const float radius = 2.f * rays.epsilon();
   WedgeQuery q{&rays.scene(), &rays.face_normals(), at.position, n, dir, radius, radius / 20.f};
