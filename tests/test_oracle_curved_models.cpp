@@ -5,7 +5,9 @@
 // - a vertex whose only nearby triangles are its own smooth fan (they touch it
 //   with the same normal) is shaded at the vertex itself; its shadow ray leaves
 //   the vertex and ignores the first ε of its path, so the fan's flat facets
-//   never shadow a light the smooth normal faces (no terminator speckles);
+//   never shadow a light the smooth normal faces (no terminator speckles),
+//   and a ray between its tangent plane and the fan's facet under it (the
+//   wedge) is blocked: it would pass through the smooth surface;
 // - a vertex where other surfaces meet it (hard creases, contacts) is shaded a
 //   hair inside its triangle and lifted ε on the light's side.
 #include "hilight/fixtures/real_model_scenes.hpp"
@@ -111,6 +113,37 @@ struct Oracle {
     return true;
   }
 
+  /// The triangles within 2ε of p: a smooth vertex's own fan.
+  std::vector<const Triangle*> fan(const D3& p) const {
+    std::vector<const Triangle*> out;
+    for (const auto& t : tris)
+      if (!glm::any(glm::lessThan(p + 2 * eps, t.lo)) && !glm::any(glm::greaterThan(p - 2 * eps, t.hi)) && distance_to(t, p) <= 2 * eps)
+        out.push_back(&t);
+    return out;
+  }
+
+  /// The wedge: w on one side of the tangent plane (normal n) and on the
+  /// other of the fan's facet under w — the one that holds w moved along n
+  /// into its plane (between its edges at the vertex). Facets tilted under
+  /// 10⁻⁴ or nearly edge-on (|f·n| < 10⁻³) have none.
+  bool in_wedge(const std::vector<const Triangle*>& own, const D3& p, const D3& n, const D3& w) const {
+    for (const Triangle* t : own) {
+      const D3& f = t->face_normal;
+      const double facing = glm::dot(f, n);
+      if (std::abs(facing) < 1e-3 || glm::length(glm::cross(f, n)) < 1e-4) continue;
+      const D3 x = w - glm::dot(f, w) / facing * n;
+      const D3 c[3] = {t->a, t->b, t->c};
+      int corner = -1;
+      for (int k = 0; k < 3; ++k)
+        if (glm::length(c[k] - p) <= 0.1 * eps) corner = k;
+      if (corner < 0) continue;  // (the oracle's points are vertices)
+      const D3 e1 = c[(corner + 1) % 3] - p, e2 = c[(corner + 2) % 3] - p, wound = glm::cross(e1, e2);
+      const bool under = glm::dot(glm::cross(e1, x), wound) >= 0 && glm::dot(glm::cross(x, e2), wound) >= 0;
+      if (under && glm::dot(n, w) * glm::dot(f, w) * facing < 0) return true;
+    }
+    return false;
+  }
+
   /// Where a crease or contact vertex is shaded: a fixed step into the face
   /// of the nearest triangle that agrees best with its normal, away from the
   /// crease (the mean direction over the face's wedges at the point) or, where
@@ -173,12 +206,12 @@ struct Oracle {
       }
     }
     const D3 direction = glm::length(fan) > 0.05 ? fan : away;
-    if (glm::length(direction) > 1e-3)
-      for (double step = full_step; step > touch; step *= 0.5) {
-        const D3 q = on + step * glm::normalize(direction);
-        for (const auto& t : tris)
-          if (glm::dot(t.face_normal, plane) >= 0.9999 && distance_to(t, q) <= 2 * touch) return q;
-      }
+    if (glm::length(direction) <= 1e-3) return on;  // an open face, nothing near to step away from
+    for (double step = full_step; step > touch; step *= 0.5) {
+      const D3 q = on + step * glm::normalize(direction);
+      for (const auto& t : tris)
+        if (glm::dot(t.face_normal, plane) >= 0.9999 && distance_to(t, q) <= 2 * touch) return q;
+    }
     D3 to_centroid = (chosen->a + chosen->b + chosen->c) / 3.0 - p;
     double distance = glm::length(to_centroid);
     double step = std::min(std::max(0.01 * distance, full_step), 0.1 * distance);
@@ -193,6 +226,7 @@ struct Oracle {
       const D3 n(scene.normals[v]);
       const bool is_smooth = smooth(v);
       const D3 p = is_smooth ? D3(scene.positions[v]) : nudged(v);
+      const std::vector<const Triangle*> own = is_smooth ? fan(p) : std::vector<const Triangle*>();
       glm::dvec3 e(0);
       for (const Light& light : lights) {
         D3 d = D3(light.position) - p;
@@ -200,7 +234,7 @@ struct Oracle {
         D3 w = d / dist;
         double cos_n = glm::dot(n, w);
         if (cos_n == 0) continue;
-        bool dark = is_smooth ? blocked(p, w, eps, dist - eps)
+        bool dark = is_smooth ? in_wedge(own, p, n, w) || blocked(p, w, eps, dist - eps)
                               : blocked(p + (cos_n > 0 ? n : -n) * eps, w, 1e-9, dist - 2 * eps);
         if (!dark) e += glm::dvec3(light.intensity) * std::abs(cos_n) / (dist * dist);
       }
@@ -269,16 +303,17 @@ TEST_CASE("oracle: Embree's direct light on real curved models matches a brute-f
 
 TEST_CASE("oracle: POV-Ray's direct light on real curved models matches the brute-force loop", "[oracle][povray]") {
   if (test::skip_without_renderer("povray")) return;
-  // Goal 1% (issue 11); measured 2.0%, most of it at three vertices under a
-  // doubled sheet of the Wuson that POV-Ray's shadow tolerance ignores
-  // (docs/povray.md).
+  // Goal 1% (issue 11); measured 1.8% (2.1% before the wedge), most of it at
+  // three vertices under a doubled sheet of the Wuson that POV-Ray's shadow
+  // tolerance ignores (docs/povray.md).
   CHECK(renderer_against_oracle("povray").dbar < 0.025);
 }
 
 TEST_CASE("oracle: ism-vulkan's direct light on real curved models matches the brute-force loop", "[oracle][ism]") {
   if (test::skip_without_renderer("ism-vulkan")) return;
-  // Issue 11's tolerance; measured 1.6% on lavapipe (512² ID maps, a 4x4
-  // texel window of candidates; 256² and 2x2 gave 6.3%).
+  // Issue 11's tolerance; measured 1.5% on lavapipe (512² ID maps, a 4x4
+  // texel window of candidates; 256² and 2x2 gave 6.3%; 1.9% before the
+  // wedge).
   CHECK(renderer_against_oracle("ism-vulkan").dbar < 0.02);
 }
 
@@ -305,9 +340,9 @@ TEST_CASE("oracle: POV-Ray and Embree give one answer at the curved models' term
   // Issue 32 measured D̄ 8.8% between them, 294 of 5,297 lit vertices more
   // than 20% apart, at the terminators and shadow edges. A vertex is lit when
   // either renderer gives it more than 0.1% of the mean. Measured now (the
-  // oracle's three lights): D̄ 2.1%, 60 of 5,504 apart, nearly all smooth
-  // vertices where POV-Ray loses a light that Embree and the oracle keep
-  // (docs/rendering-model.md, "The oracle").
+  // oracle's three lights): D̄ 1.8%, 21 of 5,339 apart; 2.1% and 62 of 5,504
+  // while a smooth vertex's wedge let a light through in one renderer and
+  // not the other (docs/rendering-model.md, "The oracle").
   const OracleCase& c = curved_case();
   const SurfacePoints points = SurfacePoints::from_vertices(*c.scene);
   const auto embree = test::make_renderer("embree", c.scene, {"bounces=0"})->illuminate(points, c.lights);
@@ -324,6 +359,6 @@ TEST_CASE("oracle: POV-Ray and Embree give one answer at the curved models' term
   const double d = test::dbar(pov, embree);
   std::printf("curved models, direct light: POV-Ray against Embree D-bar %.3f%%, %zu of %zu lit vertices > 20%% apart\n", 100 * d,
               apart, lit);
-  CHECK(d < 0.025);
-  CHECK(double(apart) < 0.015 * double(lit));
+  CHECK(d < 0.022);
+  CHECK(double(apart) < 0.008 * double(lit));
 }

@@ -152,7 +152,7 @@ float area_irradiance_on_side(const RayScene& es, const ShadingPoint& at, const 
       other = (luminaire_factor(*area.profiled, area.profile_frame, -w) - area.lambert_part * cos_e) * cos_r / dist2;
     if (weight == 0 && other == 0) continue;
     ++rays;
-    const bool seen = !es.occluded(at.ray_start(w, side_normal, eps), w, dist - 2.f * eps);
+    const bool seen = !es.occluded(at.ray_start(w, side_normal, eps), w, dist - 2.f * eps) && !in_own_wedge(es, at, n, w);
     lambert += weight;
     if (seen) {
       lambert_seen += weight;
@@ -174,7 +174,7 @@ float area_irradiance_on_side(const RayScene& es, const ShadingPoint& at, const 
     if (dist > eps) {
       const Vec3 w = Vec3(mid / double(dist));
       ++rays;
-      visible = es.occluded(at.ray_start(w, side_normal, eps), w, dist - 2.f * eps) ? 0.0 : 1.0;
+      visible = es.occluded(at.ray_start(w, side_normal, eps), w, dist - 2.f * eps) || in_own_wedge(es, at, n, w) ? 0.0 : 1.0;
     }
   }
   return float(std::max(0.0, exact * visible + rest));

@@ -66,8 +66,9 @@ struct PreparedLight {
 
 /// Irradiance on one side of a surface at `at` — the side `side_normal`
 /// points to — from `light` at unit intensity: |n·ω| · S / d² · V, zero for a
-/// light behind that side. The shadow ray starts as `at` says (ShadingPoint::
-/// ray_start). Counts the shadow ray it casts in `rays`.
+/// light behind that side or in the point's own wedge (in_own_wedge). The
+/// shadow ray starts as `at` says (ShadingPoint::ray_start). Counts the
+/// shadow ray it casts in `rays`.
 inline float unit_direct_irradiance_on_side(const RayScene& es, const ShadingPoint& at, const Vec3& n,
                                             const Vec3& side_normal, const PreparedLight& light, uint64_t& rays) {
   if (light.area) return area_irradiance_on_side(es, at, n, side_normal, *light.area, rays);
@@ -85,6 +86,10 @@ inline float unit_direct_irradiance_on_side(const RayScene& es, const ShadingPoi
   if (angular == 0.f) return 0.f;
   ++rays;
   if (es.occluded(at.ray_start(w, side_normal, eps), w, dist - 2.f * eps)) return 0.f;
+  // Through the smooth surface its own fan stands for. After the ray: most
+  // rays that could lie in a wedge are blocked anyway (a solid's far side),
+  // and the test looks the fan up.
+  if (in_own_wedge(es, at, n, w)) return 0.f;
   return cos_n * angular / dist2;
 }
 

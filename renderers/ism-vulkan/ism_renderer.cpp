@@ -153,6 +153,8 @@ struct IsmRenderer::PointBuffers {
   size_t count = 0;
   Buffer positions, normals, albedo;
   Buffer crease;  ///< kCreaseCandidates triangles touching each point (crease_candidates.hpp)
+  std::vector<ShadingPoint> at;  ///< where each point is shaded (for the wedge test)
+  std::vector<Vec3> shading_normals;
   mutable std::unique_ptr<GatherRows> bounce_rows;  ///< their gather of the bounce points (small sets only)
 };
 
@@ -170,6 +172,8 @@ struct IsmRenderer::Workspace {
   size_t points = 0;
   Buffer light_data, triangles, vpls, ism, pyramid, result;
   Buffer bounce_direct;  ///< the direct light at the bounce points (bounces ≥ 2)
+  Buffer wedge;  ///< a bit per (light, point): the point's own wedge blocks the light (in_own_wedge)
+  Buffer bounce_wedge;  ///< the same for the bounce points: all clear (flat face points have no wedge)
   Buffer face_indices, face_ids;  ///< culled triangle lists of the chunk's cube faces (grown on demand)
   Buffer profiles;                ///< the chunk's luminaire profile tables (grown on demand)
 };
@@ -177,7 +181,7 @@ struct IsmRenderer::Workspace {
 struct IsmRenderer::Kernels {
   ComputeKernel direct, vpl, splat, pull, push, gather, bounce_splat;
   Kernels(VulkanContext& c, uint32_t w)
-      : direct(c, spirv(kDirect), 10, sizeof(DirectParams), w), vpl(c, spirv(kVplGenerate), 6, sizeof(VplParams), w),
+      : direct(c, spirv(kDirect), 11, sizeof(DirectParams), w), vpl(c, spirv(kVplGenerate), 6, sizeof(VplParams), w),
         splat(c, spirv(kIsmSplat), 3, sizeof(SplatParams), w), pull(c, spirv(kIsmPull), 2, sizeof(PullParams), w),
         push(c, spirv(kIsmPush), 1, sizeof(PushParams), w), gather(c, spirv(kGather), 6, sizeof(GatherParams), w),
         bounce_splat(c, spirv(kBounceSplat), 4, sizeof(BounceSplatParams), w) {}
@@ -267,10 +271,13 @@ std::unique_ptr<IsmRenderer::PointBuffers> IsmRenderer::make_point_buffers(const
                       "the surface points' crease triangles");
   std::memcpy(pb->crease.data<uint32_t>(), crease.data(), crease.size() * sizeof(uint32_t));
   float *pos = pb->positions.data<float>(), *nor = pb->normals.data<float>(), *alb = pb->albedo.data<float>();
+  pb->at.resize(n);
+  pb->shading_normals = points.normals;
   // Shaded where every renderer shades them (shading_point, rendering model);
   // positions' w says the point is smooth (its rays skip their first ε).
   tbb::parallel_for(size_t(0), n, [&](size_t i) {
     const ShadingPoint at = shading_point(*m_rays, points.positions[i], points.normals[i]);
+    pb->at[i] = at;
     const Vec3 p = at.position;
     for (int a = 0; a < 3; ++a) {
       pos[4 * i + a] = p[a];
@@ -318,8 +325,13 @@ IsmRenderer::Workspace& IsmRenderer::workspace(uint32_t lights, size_t point_cou
   ws->light_data = Buffer(ctx, lights * sizeof(GpuLight), storage, true, "the lights");
   ws->triangles = Buffer(ctx, texels * 4, filled, false, "the shadow maps");
   ws->result = Buffer(ctx, VkDeviceSize(lights) * point_count * 16, filled, true, "the results");
-  if (every_bounce_path())
+  if (every_bounce_path()) {
     ws->bounce_direct = Buffer(ctx, VkDeviceSize(lights) * s.bounce_points * 16, storage, true, "the bounce points' direct light");
+    const VkDeviceSize bits = VkDeviceSize((lights + 31) / 32) * s.bounce_points * 4;
+    ws->bounce_wedge = Buffer(ctx, bits, storage, true, "the bounce points' wedge bits");
+    std::memset(ws->bounce_wedge.data<uint32_t>(), 0, size_t(bits));
+  }
+  ws->wedge = Buffer(ctx, VkDeviceSize((lights + 31) / 32) * point_count * 4, storage, true, "the wedge bits");
   if (s.bounces != 0) {
     const uint32_t vpls = lights * s.vpls;
     ws->vpls = Buffer(ctx, VkDeviceSize(vpls) * 80, storage, false, "the VPLs");  // 5 vec4s each
@@ -396,9 +408,22 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
   clock.mark("shadow_maps", flush);
   const Kernels& k = *m_kernels;
   if (transport != Transport::IndirectOnly && later != Later::Only) {
+    // Which lights each smooth point's own wedge blocks: geometry alone,
+    // the same test every renderer makes (rendering model).
+    uint32_t* bits = ws.wedge.data<uint32_t>();
+    std::memset(bits, 0, size_t((c + 31) / 32) * n * sizeof(uint32_t));
+    tbb::parallel_for(uint32_t(0), n, [&](uint32_t i) {
+      const ShadingPoint& at = pb.at[i];
+      if (!at.smooth || at.wedge == 0.f) return;
+      for (uint32_t j = 0; j < c; ++j) {
+        const Vec3 d = lights[j].position - at.position;
+        const float length = glm::length(d);
+        if (length > 0.f && in_own_wedge(*m_rays, at, pb.shading_normals[i], d / length)) bits[(j / 32) * n + i] |= 1u << (j % 32);
+      }
+    });
     DirectParams p{n, c, s.shadow_size, m_rays->epsilon()};
     k.direct.dispatch(cmd, {&pb.positions, &pb.normals, &pb.albedo, &ws.light_data, &ws.triangles, &m_buffers->corners, &m_buffers->neighbours,
-                                   &pb.crease, &ws.result, &ws.profiles},
+                                   &pb.crease, &ws.result, &ws.profiles, &ws.wedge},
                       &p,
                       uint64_t(n) * c);
   } else {
@@ -409,7 +434,7 @@ void IsmRenderer::record_chunk(VkCommandBuffer cmd, const PointBuffers& pb, std:
     const PointBuffers& bp = *m_bounces->points;
     DirectParams p{uint32_t(bp.count), c, s.shadow_size, m_rays->epsilon()};
     k.direct.dispatch(cmd, {&bp.positions, &bp.normals, &bp.albedo, &ws.light_data, &ws.triangles, &m_buffers->corners,
-                            &m_buffers->neighbours, &bp.crease, &ws.bounce_direct, &ws.profiles},
+                            &m_buffers->neighbours, &bp.crease, &ws.bounce_direct, &ws.profiles, &ws.bounce_wedge},
                       &p, uint64_t(bp.count) * c);
   }
   full_barrier(cmd);

@@ -146,8 +146,42 @@ std::vector<Rgb> PovrayRenderer::bake_on_mesh(const SurfacePoints& points, std::
 
 std::vector<Rgb> PovrayRenderer::bake_direct(const SurfacePoints& points, std::span<const Light> lights) {
   const size_t m = points.size();
+  if (m == 0 || lights.empty()) return std::vector<Rgb>(m, Rgb(0.f));
+  // POV-Ray cannot leave out one light at one point: each light that a
+  // smooth point's wedge blocks (in_own_wedge) is baked on its own, with
+  // the receiver on that light's side of such a point black. An area
+  // source is tested at its centre.
+  std::vector<ShadingPoint> at(m);
+  for (size_t i = 0; i < m; ++i) at[i] = shading_point(*m_rays, points.positions[i], points.normals[i]);
+  Lighting plain;
+  std::vector<std::pair<size_t, std::vector<uint8_t>>> alone;
+  for (size_t j = 0; j < lights.size(); ++j) {
+    std::vector<uint8_t> dark(2 * m, 0);
+    bool any = false;
+    for (size_t i = 0; i < m; ++i) {
+      const Vec3 d = lights[j].position - at[i].position;
+      const float length = glm::length(d);
+      if (!(length > 0.f) || !in_own_wedge(*m_rays, at[i], points.normals[i], d / length)) continue;
+      dark[2 * i + (glm::dot(points.normals[i], d) >= 0.f ? 0 : 1)] = 1;
+      any = true;
+    }
+    if (any) alone.emplace_back(j, std::move(dark));
+    else plain.push_back(lights[j]);
+  }
+  std::vector<Vec3> shaded(m);
+  for (size_t i = 0; i < m; ++i) shaded[i] = at[i].position;
+  std::vector<Rgb> out = plain.empty() ? std::vector<Rgb>(m, Rgb(0.f)) : bake_direct_run(points, shaded, plain, {});
+  for (const auto& [j, dark] : alone) {
+    const std::vector<Rgb> one = bake_direct_run(points, shaded, lights.subspan(j, 1), dark);
+    for (size_t i = 0; i < m; ++i) out[i] += one[i];
+  }
+  return out;
+}
+
+std::vector<Rgb> PovrayRenderer::bake_direct_run(const SurfacePoints& points, const std::vector<Vec3>& at,
+                                                 std::span<const Light> lights, const std::vector<uint8_t>& dark) {
+  const size_t m = points.size();
   std::vector<Rgb> out(m, Rgb(0.f));
-  if (m == 0 || lights.empty()) return out;
   const float scale = exposure_scale(lights);
   const Lighting scaled = scaled_lights(lights, scale);
   const float diagonal = m_scene->diagonal();
@@ -177,17 +211,23 @@ std::vector<Rgb> PovrayRenderer::bake_direct(const SurfacePoints& points, std::s
     const float offset = std::max(1e-8f * diagonal, 8.f * std::numeric_limits<float>::epsilon() * largest);
     const float receiver = 1e-4f * diagonal;
     const float lift = 5e-5f * diagonal, size = 0.25f * receiver;
-    std::vector<Vec3> at(m);
-    for (size_t i = 0; i < m; ++i) at[i] = shading_point(*m_rays, points.positions[i], points.normals[i]).position;
     // A union of triangles, not a mesh: POV-Ray keeps a mesh's vertices in
     // single precision, which cannot hold the receivers off the surface.
     write_pov_scene(file, *m_scene, scaled, settings);
-    file << "union {\n";
-    for (size_t i = 0; i < m; ++i)
-      for (float side : {1.f, -1.f})
-        write_camera_triangle(file, DVec3(at[i]) + double(side * offset) * DVec3(points.normals[i]), side * points.normals[i], receiver);
-    file << "texture { pigment { color rgb 1 } finish { diffuse 1 ambient 0 emission 0 specular 0 phong 0 } }\n"
-         << "no_shadow no_radiosity no_reflection }\n";
+    for (const int shade : {1, 0}) {  // white receivers, then the black ones
+      bool any = false;
+      for (size_t i = 0; i < 2 * m; ++i) any |= (dark.empty() || !dark[i]) == bool(shade);
+      if (!any) continue;
+      file << "union {\n";
+      for (size_t i = 0; i < m; ++i)
+        for (int side = 0; side < 2; ++side) {
+          if ((dark.empty() || !dark[2 * i + side]) != bool(shade)) continue;
+          const float sign = side == 0 ? 1.f : -1.f;
+          write_camera_triangle(file, DVec3(at[i]) + double(sign * offset) * DVec3(points.normals[i]), sign * points.normals[i], receiver);
+        }
+      file << "texture { pigment { color rgb " << shade << " } finish { diffuse 1 ambient 0 emission 0 specular 0 phong 0 } }\n"
+           << "no_shadow no_radiosity no_reflection }\n";
+    }
     // One camera triangle per receiver, `lift` out along its normal and wound
     // so that its normal points away from the surface; mesh_camera shoots its
     // ray against that normal, at the receiver: pixel 2i is the side the

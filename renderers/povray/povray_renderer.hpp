@@ -33,8 +33,13 @@ public:
 private:
   /// Radiance at the points under `lights`, from one POV-Ray run.
   std::vector<Rgb> bake(const SurfacePoints& points, std::span<const Light> lights, int bounces);
-  /// Direct light at every point through two receivers (docs/povray.md), one POV-Ray run.
+  /// Direct light at every point through two receivers (docs/povray.md):
+  /// one POV-Ray run, and one more per light that some point's own wedge
+  /// blocks (rendering model), with that point's receiver dark.
   std::vector<Rgb> bake_direct(const SurfacePoints& points, std::span<const Light> lights);
+  /// One run, the points shaded `at`; `dark` (2 per point, empty: none) are receivers left black.
+  std::vector<Rgb> bake_direct_run(const SurfacePoints& points, const std::vector<Vec3>& at, std::span<const Light> lights,
+                                   const std::vector<uint8_t>& dark);
   /// Every point baked on the mesh itself (the side its normal points to), one run.
   std::vector<Rgb> bake_on_mesh(const SurfacePoints& points, std::span<const Light> lights, int bounces);
   /// Runs bake.pov in `folder` into a one-row image of `pixels`.

@@ -7,6 +7,7 @@
 #include "hilight/scene.hpp"
 
 #include <embree3/rtcore.h>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -35,6 +36,15 @@ struct ShadingPoint {
   /// The triangle the point lies on (closest, agreeing best with its normal),
   /// or RTC_INVALID_GEOMETRY_ID when no surface is near.
   uint32_t triangle = RTC_INVALID_GEOMETRY_ID;
+  /// On a smooth point found by shading_point(): the sine of the largest tilt
+  /// of its own fan's facets against its tangent plane (a hair over). Only a
+  /// direction with |n·ω| below it can lie in the point's wedge
+  /// (in_own_wedge); 0: none can (a flat fan, a pixel's hit, a crease).
+  float wedge = 0.f;
+  /// The fan is one plane all around the point (`triangle`'s: a face cut
+  /// into coplanar triangles, a tessellated one): its wedge is told from that
+  /// plane alone, with no look-up.
+  bool flat_fan = false;
 
   /// Where a ray toward unit `dir` starts, leaving on the side `side_normal` points to.
   Vec3 ray_start(const Vec3& dir, const Vec3& side_normal, float eps) const {
@@ -49,6 +59,18 @@ struct ShadingPoint {
 /// that a point on an edge or corner never starts rays on a neighbouring
 /// face's plane.
 ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec3& normal);
+
+/// The smooth point's wedge (docs/rendering-model.md, "The wedge"): true when
+/// unit `dir` leaves `at` between its tangent plane (normal `n`) and the
+/// facet of its own fan that lies under `dir` (the one whose corner, edge
+/// half-disk or face holds dir's azimuth around n). Such a ray passes through
+/// the smooth surface the fan stands for within about a facet, so it counts
+/// as blocked. in_own_wedge_slow looks the fan up; in_own_wedge first rules
+/// out the directions no facet can hold (nearly all of them).
+bool in_own_wedge_slow(const RayScene& rays, const ShadingPoint& at, const Vec3& n, const Vec3& dir);
+inline bool in_own_wedge(const RayScene& rays, const ShadingPoint& at, const Vec3& n, const Vec3& dir) {
+  return at.wedge > 0.f && std::abs(glm::dot(n, dir)) < at.wedge && in_own_wedge_slow(rays, at, n, dir);
+}
 
 /// Where a pixel's hit inside a smooth-shaded triangle is shaded: lifted to
 /// the smooth surface its vertex normals describe (each vertex's tangent
@@ -123,8 +145,12 @@ public:
   bool inside_solid(const Vec3& p) const;
   /// True when every triangle within `radius` of `p` is `own_triangle` or has
   /// a vertex at `p` (within radius/20) whose normal agrees with `normal`
-  /// (cos ≥ 0.999): only the point's own smooth surface is near it.
-  bool only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius) const;
+  /// (cos ≥ 0.999): only the point's own smooth surface is near it. With
+  /// `tilt`, also the sine of the largest tilt of those own triangles
+  /// against the plane normal to `normal` (ShadingPoint::wedge), and with
+  /// `flat` whether they are one plane all around p (ShadingPoint::flat_fan).
+  bool only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius,
+                             float* tilt = nullptr, bool* flat = nullptr) const;
 
   RTCScene rtc_scene() const { return m_rtc_scene; }
 

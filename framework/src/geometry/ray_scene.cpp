@@ -194,24 +194,80 @@ bool normal_before(const Vec3& a, const Vec3& b) {
   return false;
 }
 
+/// The sine of a facet's tilt against the tangent plane normal to n: 0 where
+/// it has no wedge to speak of — tilted under 10⁻⁴ (a flat fan, but for
+/// rounding) or nearly edge-on to the plane (not a height field over it).
+float facet_tilt(const Vec3& face, const Vec3& n) {
+  if (std::abs(glm::dot(face, n)) < 1e-3f) return 0.f;
+  const float sine = glm::length(glm::cross(face, n));
+  return sine >= 1e-4f ? sine : 0.f;
+}
+
+/// The mean of the unit directions from p into triangle `tri` over its angle
+/// at p (∫ω dθ: 2 sin(α/2) along the bisector at a corner, 2 inward on an
+/// edge); sets `inside` when p is inside it (the whole disk).
+Vec3 angle_mean(const Scene& scene, const std::array<uint32_t, 3>& tri, const Vec3& p, float touch, bool& inside) {
+  const auto& pos = scene.positions;
+  for (int k = 0; k < 3; ++k)
+    if (glm::length(pos[tri[k]] - p) <= touch) {
+      const Vec3 to_b = pos[tri[(k + 1) % 3]] - p, to_c = pos[tri[(k + 2) % 3]] - p;
+      const float lb = glm::length(to_b), lc = glm::length(to_c);
+      if (!(lb > 0.f && lc > 0.f)) return Vec3(0.f);
+      const Vec3 ub = to_b / lb, uc = to_c / lc, bisector = ub + uc;
+      return glm::length(bisector) > 0.f ? glm::length(ub - uc) * glm::normalize(bisector) : Vec3(0.f);
+    }
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = pos[tri[k]], ab = pos[tri[(k + 1) % 3]] - a, ac = pos[tri[(k + 2) % 3]] - a;
+    const float length2 = glm::dot(ab, ab);
+    if (!(length2 > 0.f)) continue;
+    const float along = glm::dot(p - a, ab) / length2;
+    if (along < 0.f || along > 1.f || glm::length(a + along * ab - p) > touch) continue;
+    const Vec3 inward = ac - (glm::dot(ac, ab) / length2) * ab;
+    return glm::length(inward) > 0.f ? 2.f * glm::normalize(inward) : Vec3(0.f);
+  }
+  float u, v;
+  inside = inside || glm::length(closest_on_triangle(p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v) - p) <= touch;
+  return Vec3(0.f);
+}
+
 struct OwnSurfaceQuery {
   const Scene* scene;
+  const std::vector<Vec3>* face_normals;
   Vec3 p, normal;
   uint32_t own_triangle;
   float radius, same_position;
   bool foreign = false;
+  float tilt = 0.f;        ///< the largest facet_tilt of an own triangle
+  bool coplanar = true;    ///< every own triangle in own_triangle's plane
+  bool inside = false;     ///< p inside an own triangle
+  Vec3 around{0.f};        ///< the own triangles' angle_mean: 0 where they go all around p
+  void own(uint32_t triangle) {
+    const Vec3& face = (*face_normals)[triangle];
+    tilt = std::max(tilt, facet_tilt(face, normal));
+    coplanar = coplanar && glm::dot(face, (*face_normals)[own_triangle]) >= 1.f - 1e-6f;
+    around += angle_mean(*scene, scene->triangles[triangle], p, same_position, inside);
+  }
+  /// One plane all around p: its wedge needs no look-up (ShadingPoint::flat_fan).
+  bool flat() const { return coplanar && (inside || glm::length(around) < 0.05f); }
 };
 
 bool own_surface_callback(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<OwnSurfaceQuery*>(args->userPtr);
-  if (q->foreign || args->primID == q->own_triangle) return false;
+  if (q->foreign) return false;
+  if (args->primID == q->own_triangle) {
+    q->own(args->primID);
+    return false;
+  }
   const auto& tri = q->scene->triangles[args->primID];
   const auto& pos = q->scene->positions;
   float u, v;
   Vec3 c = closest_on_triangle(q->p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v);
   if (glm::length(c - q->p) > q->radius) return false;
   for (uint32_t w : tri)
-    if (glm::length(pos[w] - q->p) <= q->same_position && glm::dot(q->scene->normals[w], q->normal) >= 0.999f) return false;
+    if (glm::length(pos[w] - q->p) <= q->same_position && glm::dot(q->scene->normals[w], q->normal) >= 0.999f) {
+      q->own(args->primID);
+      return false;
+    }
   // Sharing an edge with the point's own triangle (the same two corners,
   // with the same normals) is the same smooth surface: a point on that edge
   // (a refined render's midpoint) is smooth as a vertex there would be.
@@ -221,8 +277,56 @@ bool own_surface_callback(RTCPointQueryFunctionArguments* args) {
     for (uint32_t o : own)
       shared += glm::length(pos[w] - pos[o]) <= q->same_position &&
                 glm::dot(q->scene->normals[w], q->scene->normals[o]) >= 0.999f;
-  if (shared >= 2) return false;
+  if (shared >= 2) {
+    q->own(args->primID);
+    return false;
+  }
   q->foreign = true;
+  return false;
+}
+
+/// The wedge test of one smooth point against its own fan (in_own_wedge_slow).
+struct WedgeQuery {
+  const Scene* scene;
+  const std::vector<Vec3>* face_normals;
+  Vec3 p, n, dir;
+  float radius, same_position;
+  bool blocked = false;
+};
+
+/// Whether the direction `x`, in the plane of triangle `tri`, points into the
+/// triangle from p: between the two edges at a corner, into the half-disk at
+/// an edge, anywhere inside. False when the triangle does not touch p.
+bool points_into(const Scene& scene, const std::array<uint32_t, 3>& tri, const Vec3& p, const Vec3& x, float touch) {
+  const auto& pos = scene.positions;
+  for (int k = 0; k < 3; ++k)
+    if (glm::length(pos[tri[k]] - p) <= touch) {
+      const Vec3 e1 = pos[tri[(k + 1) % 3]] - p, e2 = pos[tri[(k + 2) % 3]] - p, wound = glm::cross(e1, e2);
+      return glm::dot(glm::cross(e1, x), wound) >= 0.f && glm::dot(glm::cross(x, e2), wound) >= 0.f;
+    }
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = pos[tri[k]], ab = pos[tri[(k + 1) % 3]] - a, ac = pos[tri[(k + 2) % 3]] - a;
+    const float length2 = glm::dot(ab, ab);
+    if (!(length2 > 0.f)) continue;
+    const float along = glm::dot(p - a, ab) / length2;
+    if (along < 0.f || along > 1.f || glm::length(a + along * ab - p) > touch) continue;
+    return glm::dot(x, ac - (glm::dot(ac, ab) / length2) * ab) >= 0.f;
+  }
+  float u, v;
+  return glm::length(closest_on_triangle(p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v) - p) <= touch;
+}
+
+bool wedge_callback(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<WedgeQuery*>(args->userPtr);
+  if (q->blocked) return false;
+  const Vec3& face = (*q->face_normals)[args->primID];
+  if (facet_tilt(face, q->n) == 0.f) return false;  // no wedge under this facet
+  const float facing = glm::dot(face, q->n);
+  // dir moved along n into the facet's plane: the facet under dir, if it holds that.
+  const Vec3 in_plane = q->dir - (glm::dot(face, q->dir) / facing) * q->n;
+  if (!points_into(*q->scene, q->scene->triangles[args->primID], q->p, in_plane, q->same_position)) return false;
+  // On one side of the tangent plane and on the other of the facet (turned to agree with n).
+  q->blocked = glm::dot(q->n, q->dir) * glm::dot(face, q->dir) * facing < 0.f;
   return false;
 }
 
@@ -343,9 +447,12 @@ Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& norma
   return hit;
 }
 
-bool RayScene::only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius) const {
-  OwnSurfaceQuery q{&m_scene, p, normal, own_triangle, radius, radius / 20.f};
+bool RayScene::only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius,
+                                     float* tilt, bool* flat) const {
+  OwnSurfaceQuery q{&m_scene, &m_face_normals, p, normal, own_triangle, radius, radius / 20.f};
   query_triangles_near(m_rtc_scene, p, radius, own_surface_callback, &q);
+  if (tilt) *tilt = q.foreign ? 0.f : q.tilt;
+  if (flat) *flat = !q.foreign && q.flat();
   return !q.foreign;
 }
 
@@ -371,7 +478,10 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
   const Scene& scene = rays.scene();
   Hit h = rays.closest_point(position, 1e-3f * scene.diagonal(), normal);
   if (!h.valid()) return {position, false};
-  if (rays.only_own_surface_near(position, normal, h.triangle, 2.f * rays.epsilon())) return {position, true, h.triangle};
+  float tilt = 0.f;
+  bool flat = false;
+  if (rays.only_own_surface_near(position, normal, h.triangle, 2.f * rays.epsilon(), &tilt, &flat))
+    return {position, true, h.triangle, tilt > 0.f ? tilt * 1.001f : 0.f, flat};  // (a hair over: in_own_wedge_slow decides)
   // Into the chosen triangle's face, away from the crease (or the touching
   // surface), a fixed step relative to the scene (RayScene::shading_step)
   // halved until the point is still on that face. All of it is the same on
@@ -384,22 +494,35 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
   // A crease's wedges sum to at least ~0.1 (a half-disk: 2); a face going on
   // all around sums to 0 but for rounding.
   const Vec3 direction = glm::length(fan.fan) > 0.05f ? fan.fan : fan.away;
-  if (glm::length(direction) > 1e-3f) {
-    const Vec3 unit = glm::normalize(direction);
-    for (float step = full_step; step > touch; step *= 0.5f) {
-      const Vec3 q = on + step * unit;
-      const Hit c = rays.closest_point(q, 2.f * touch, plane);
-      if (c.valid() && glm::dot(rays.face_normals()[c.triangle], plane) >= 0.9999f) return {q, false, c.triangle};
-    }
+  // The face goes on all around and nothing near gives a direction (a sheet
+  // of its own back a hair away: a thin slab): no crease to step off, so the
+  // point stays, on any tessellation of the face.
+  if (glm::length(direction) <= 1e-3f) return {on, false, h.triangle};
+  const Vec3 unit = glm::normalize(direction);
+  for (float step = full_step; step > touch; step *= 0.5f) {
+    const Vec3 q = on + step * unit;
+    const Hit c = rays.closest_point(q, 2.f * touch, plane);
+    if (c.valid() && glm::dot(rays.face_normals()[c.triangle], plane) >= 0.9999f) return {q, false, c.triangle};
   }
-  // Nothing to go by (an isolated point in an open face): toward the
-  // triangle's centroid.
+  // No step lands on the face (a sliver): toward the triangle's centroid.
   const auto& tri = scene.triangles[h.triangle];
   Vec3 to_centroid = (scene.positions[tri[0]] + scene.positions[tri[1]] + scene.positions[tri[2]]) / 3.f - position;
   float distance = glm::length(to_centroid);
   if (!(distance > 0.f)) return {position, false, h.triangle};
   float centroid_step = std::min(std::max(0.01f * distance, rays.shading_step()), 0.1f * distance);
   return {position + to_centroid * (centroid_step / distance), false, h.triangle};
+}
+
+bool in_own_wedge_slow(const RayScene& rays, const ShadingPoint& at, const Vec3& n, const Vec3& dir) {
+  if (at.flat_fan) {  // one plane all around: the facet under dir is that plane
+    const Vec3& face = rays.face_normals()[at.triangle];
+    return glm::dot(n, dir) * glm::dot(face, dir) * glm::dot(face, n) < 0.f;
+  }
+  // The triangles that made the point smooth: within the same 2ε.
+  const float radius = 2.f * rays.epsilon();
+  WedgeQuery q{&rays.scene(), &rays.face_normals(), at.position, n, dir, radius, radius / 20.f};
+  query_triangles_near(rays.rtc_scene(), at.position, radius, wedge_callback, &q);
+  return q.blocked;
 }
 
 ShadingPoint smooth_hit_point(const RayScene& rays, const Hit& hit, float side) {

@@ -101,9 +101,12 @@ Target bind_target(const std::string& source, const std::vector<Vec3>& positions
       // A point on the surface that brings its own normal (a vertex of a
       // refined render: `render --refine-shadows`) is that very point, bit
       // for bit, as render shaded it: the same position and normal also key
-      // the renderers' random streams.
+      // the renderers' random streams. Its normal may stray from the one
+      // interpolated here (a midpoint of midpoints is normalized at each
+      // step: 28° where an edge's normals nearly oppose), not by half a turn
+      // (the other sheet of a doubled one).
       const float length = normals.empty() ? 0.f : glm::length(normals[i]);
-      if (hits[i].t <= rays.epsilon() && length > 0.f && glm::dot(normals[i] / length, nrm) > 0.99f) {
+      if (hits[i].t <= rays.epsilon() && length > 0.f && glm::dot(normals[i] / length, nrm) > 0.5f) {
         p = positions[i];
         nrm = std::abs(length - 1.f) < 1e-5f ? normals[i] : normals[i] / length;
       }

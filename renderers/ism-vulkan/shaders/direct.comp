@@ -33,6 +33,8 @@ const uint CREASE_CANDIDATES = 16u;
 const int WINDOW = 4;  // as kCreaseCandidates in crease_candidates.hpp
 layout(std430, binding = 7) readonly buffer Crease { uint crease[]; };  // per point; ~0u = none
 layout(std430, binding = 8) writeonly buffer Out { vec4 result[]; };
+// A bit per (light, point): the point's own wedge blocks the light (ray_scene.hpp: in_own_wedge).
+layout(std430, binding = 10) readonly buffer Wedge { uint wedge[]; };
 
 vec3 corner(uint t, uint k) {
   uint o = (3u * t + k) * 3u;
@@ -71,7 +73,8 @@ void main() {
     vec3 to_point = d / dist;
     float cos_n = abs(dot(n, to_point));
     float angular = spot_factor(light, to_point);
-    if (cos_n > 0.0 && angular > 0.0) {
+    bool in_wedge = (wedge[(c / 32u) * params.points + i] & (1u << (c % 32u))) != 0u;
+    if (cos_n > 0.0 && angular > 0.0 && !in_wedge) {
       // The ray ends where Embree's starts (ShadingPoint::ray_start): a smooth
       // point's ray stops ε short of it (its own facets never shadow it);
       // another's ends a hair off the surface, on the light's side.
@@ -89,12 +92,23 @@ void main() {
         ivec2 t = clamp(t0 + ivec2(k % WINDOW, k / WINDOW), ivec2(0), ivec2(int(params.size) - 1));
         shadowed = blocks(triangles[base + uint(t.y) * params.size + uint(t.x)], light.position.xyz, dir, reach);
       }
-      // The faces touching the point: at a crease the blocking face may be a
-      // sliver seen edge-on, thinner than a texel (crease_candidates.hpp).
+      // The faces near the point, and their edge neighbours: at a crease the
+      // blocking face may be a sliver seen edge-on, thinner than a texel
+      // (crease_candidates.hpp); on a curved surface a ray that grazes it
+      // enters it a triangle or two from the point, where a texel near that
+      // direction may show another triangle.
+      // A smooth point's ray that grazes into its own solid (the light a
+      // little behind its tangent plane) enters it up to a few triangles
+      // away: there the ring beyond the neighbours is tested too.
+      bool grazing_in = on_smooth && dot(n, to_point) > 0.0 && dot(n, to_point) < 0.3;
       for (uint k = 0u; k < CREASE_CANDIDATES && !shadowed; ++k) {
         uint m = crease[CREASE_CANDIDATES * i + k];
         if (m == ~0u) break;
-        shadowed = blocks_triangle(m, light.position.xyz, dir, reach);
+        shadowed = blocks(m + 1u, light.position.xyz, dir, reach);
+        for (uint e = 0u; e < 3u && grazing_in && !shadowed; ++e) {
+          uint o = neighbours[3u * m + e];
+          if (o != ~0u) shadowed = blocks(o + 1u, light.position.xyz, dir, reach);
+        }
       }
       if (!shadowed) response = albedo[i].rgb * (cos_n * angular / (dist * dist * PI));
     }
