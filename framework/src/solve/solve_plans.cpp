@@ -2,6 +2,7 @@
 #include "hilight/solve/solve_plans.hpp"
 
 #include "hilight/photometry.hpp"
+#include "hilight/solve/alternatives.hpp"
 #include "hilight/solve/moves.hpp"
 
 namespace hilight {
@@ -15,6 +16,11 @@ void append_count_edits(Plan& plan) {
   plan.steps.push_back({merge_pairs_move(), "reference polish"});
   plan.steps.push_back({split_lamps_move(), "reference polish"});
   plan.steps.push_back({residual_polish_move(false), ""});
+}
+
+/// A --luminaire whose profile tells its turns apart (an asymmetric one).
+bool turns_apart(const SolveSettings& settings) {
+  return settings.luminaire && settings.luminaire->profile && distinct_spins(*settings.luminaire->profile).size() > 1;
 }
 
 } // namespace
@@ -59,11 +65,21 @@ Plan add_plan(const SolveSettings&) {
   return plan;
 }
 
+Alternatives answer_alternatives(const SolveSettings& settings) {
+  Alternatives alternatives;
+  if (turns_apart(settings)) alternatives.push_back(luminaire_turns_alternative(*settings.luminaire));
+  // Lights hung under the ceiling have nowhere to go beyond the open sides.
+  if (settings.open_space_dbar > 0 && !settings.placement.ceiling_offset) alternatives.push_back(open_space_alternative());
+  // Spot hints and a fixed count are the user's choice of lights, and a
+  // --luminaire the designer's: no spots instead.
+  if (settings.propose_spots && settings.spot_hints.empty() && settings.fixed_count == 0 && !settings.luminaire)
+    alternatives.push_back(spot_search_alternative());
+  return alternatives;
+}
+
 Plan aim_plan(const SolveSettings& settings) {
   Plan plan{"luminaire aim", {}};
-  const bool turns_apart =
-      settings.luminaire && settings.luminaire->profile && distinct_spins(*settings.luminaire->profile).size() > 1;
-  if (turns_apart) plan.steps.push_back({luminaire_aim_move(), "aim"});
+  if (turns_apart(settings)) plan.steps.push_back({luminaire_aim_move(), "aim"});
   return plan;
 }
 

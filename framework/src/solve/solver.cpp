@@ -5,6 +5,7 @@
 #include "hilight/light_bounds.hpp"
 #include "hilight/light_cache_file.hpp"
 #include "hilight/light_cache_store.hpp"
+#include "hilight/solve/alternative.hpp"
 #include "hilight/solve/cuts.hpp"
 #include "hilight/solve/diagnosis.hpp"
 #include "hilight/solve/fit.hpp"
@@ -72,15 +73,6 @@ Fit Solver::run(const Plan& plan, const Target& target, const SampleSet& samples
 }
 
 void Solver::stage(const std::string& name) const { announce_stage(m_stop, m_progress, name); }
-
-namespace {
-/// The stage log and timings of `from` carried into `to` (the answer of a
-/// tried alternative replaces a report, but what was tried stays logged).
-void carry_log(SolveReport& to, const SolveReport& from) {
-  to.seconds = from.seconds;
-  to.stages = from.stages;
-}
-} // namespace
 
 float Solver::neighbourhood_radius() const {
   // Two tessellation edges, within [diagonal/1000, diagonal/20]: a coarse
@@ -195,65 +187,40 @@ SampleSet Solver::sample(const Target& target, SolveReport& report) {
   return samples;
 }
 
+/// The whole-answer alternatives' view of this Solver, bound to the target
+/// being solved: only what AlternativeContext lets them do.
+class Solver::AlternativeHost final : public AlternativeContext {
+public:
+  AlternativeHost(Solver& solver, const Target& target) : m_solver(solver), m_target(target) {}
+  const Judge& judge() const override { return m_solver.m_judge; }
+  const SolveSettings& settings() const override { return m_solver.m_settings; }
+  void stage(const std::string& name) const override { m_solver.stage(name); }
+  Lighting solve_points(SolveReport& report) override { return m_solver.solve_in_space(m_target, report); }
+  Lighting solve_spots(double points_dbar, SolveReport& report) override {
+    return m_solver.spots_in_space(m_target, points_dbar, report);
+  }
+  bool can_open_space() const override { return m_solver.can_open_space(); }
+  void open_space(bool open) override { m_solver.open_space(open); }
+  void turn_luminaire(float spin_deg) override { m_solver.turn_luminaire(spin_deg); }
+
+private:
+  Solver& m_solver;
+  const Target& m_target;
+};
+
 Lighting Solver::solve(const Target& target, SolveReport& report, std::stop_token stop) {
   m_stop = std::move(stop);
   Stopwatch total;
   open_space_for(m_settings.spot_hints);
   require_admissible(m_settings.spot_hints, "spot hints");
-  Lighting lights = solve_in_space(target, report);
-  if (m_settings.luminaire && m_settings.luminaire->profile && distinct_spins(*m_settings.luminaire->profile).size() > 1 && m_judge.try_turns(report.dbar))
-    lights = solve_each_spin(target, std::move(lights), report);
-  // Lights inside cannot explain the target: perhaps it is lit from outside
-  // (a product, a facade). Look again beyond the open sides; keep the better.
-  const bool can_open = !m_open &&
-                        (m_open_bounds.lo != m_closed_bounds.lo || m_open_bounds.hi != m_closed_bounds.hi);
-  if (m_settings.open_space_dbar > 0 && report.dbar > m_settings.open_space_dbar && can_open &&
-      !m_settings.placement.ceiling_offset) {
-    stage("looking beyond the scene's bounds");
-    Stopwatch watch;
-    SolveReport open_report;
-    carry_log(open_report, report);
-    open_space(true);
-    Lighting open_lights = solve_in_space(target, open_report);
-    const bool wins = m_judge.open_space_wins(open_report.dbar, report.dbar);
-    const StageRecord record{"open space", watch.seconds(), report.dbar, open_report.dbar, true, wins, {}};
-    if (wins) {
-      open_report.dbar_closed = report.dbar;
-      open_report.open_space = true;
-      report = std::move(open_report);
-      lights = std::move(open_lights);
-    } else {
-      carry_log(report, open_report);
-      report.dbar_closed = report.dbar;
-      open_space(false);
-    }
-    report.stages.push_back(record);
-  }
-  // Point lights cannot explain the target, inside or beyond: spotlights
-  // from nothing (point lights beside them where they pay) compete; the
-  // fewer lights win unless the others improve D̄ by ε_impro (eq. 9).
-  const bool may_look_for_spots = m_settings.propose_spots && m_settings.spot_hints.empty() && m_settings.fixed_count == 0 &&
-                                  !m_settings.luminaire;  // the designer chose the luminaire: no spots instead
-  if (may_look_for_spots && !m_judge.look_for_spots(report.dbar)) {
-    report.stages.push_back({"spot search", 0, report.dbar, report.dbar, true, false, "the point lights fit (D̄ at most kSpotDbar)"});
-  } else if (may_look_for_spots) {
-    stage("looking for spotlights");
-    Stopwatch watch;
-    SolveReport spot_report;
-    carry_log(spot_report, report);
-    spot_report.open_space = report.open_space;
-    spot_report.dbar_closed = report.dbar_closed;
-    Lighting spots = spots_in_space(target, report.dbar_samples, spot_report);
-    const bool wins = m_judge.spots_win(spots.size(), spot_report.dbar, lights.size(), report.dbar);
-    const StageRecord record{"spot search", watch.seconds(), report.dbar, spots.empty() ? report.dbar : spot_report.dbar, true, wins, {}};
-    if (wins) {
-      report = std::move(spot_report);
-      lights = std::move(spots);
-    } else {
-      carry_log(report, spot_report);
-    }
-    report.stages.push_back(record);
-  }
+  // Chosen before the solve: the luminaire's turns start from its spin now.
+  const Alternatives alternatives = answer_alternatives(m_settings);
+  Answer answer{{}, std::move(report)};
+  answer.lights = solve_in_space(target, answer.report);
+  AlternativeHost host(*this, target);
+  answer = run_alternatives(alternatives, host, std::move(answer));
+  report = std::move(answer.report);
+  Lighting lights = std::move(answer.lights);
   drop_idle_lights(lights);
   if (const Plan aim = aim_plan(m_settings); !aim.steps.empty() && !lights.empty()) {
     // An asymmetric luminaire: each one's turn about its aim, on samples of
@@ -293,6 +260,10 @@ void Solver::open_space(bool open) {
   m_products.cuts.clear();
 }
 
+bool Solver::can_open_space() const {
+  return !m_open && (m_open_bounds.lo != m_closed_bounds.lo || m_open_bounds.hi != m_closed_bounds.hi);
+}
+
 void Solver::open_space_for(const Lighting& lights) {
   for (const auto& l : lights)
     if (!m_closed_bounds.contains(l.position) && m_open_bounds.contains(l.position)) return open_space(true);
@@ -304,33 +275,6 @@ Lighting Solver::solve_in_space(const Target& target, SolveReport& report) {
   Fit fit = run(point_plan(m_settings), target, samples, report, Fit{});
   finish_report(target, fit.lights, report);
   return std::move(fit.lights);
-}
-
-Lighting Solver::solve_each_spin(const Target& target, Lighting lights, SolveReport& report) {
-  const float base = m_settings.luminaire->spin_deg;
-  float best = base;
-  for (float spin : distinct_spins(*m_settings.luminaire->profile)) {
-    if (spin == 0.f) continue;  // solved already
-    stage("solving with the luminaire turned " + std::to_string(int(spin)) + "°");
-    turn_luminaire(std::fmod(base + spin, 360.f));
-    Stopwatch watch;
-    SolveReport turned;
-    carry_log(turned, report);
-    Lighting found = solve_in_space(target, turned);
-    const bool better = turned.dbar < report.dbar;
-    const StageRecord record{"luminaire turned " + std::to_string(int(spin)) + "°", watch.seconds(), report.dbar, turned.dbar, true,
-                             better, {}};
-    if (better) {
-      report = std::move(turned);
-      lights = std::move(found);
-      best = m_settings.luminaire->spin_deg;
-    } else {
-      carry_log(report, turned);
-    }
-    report.stages.push_back(record);
-  }
-  turn_luminaire(best);
-  return lights;
 }
 
 void Solver::turn_luminaire(float spin_deg) {

@@ -1,6 +1,8 @@
 #pragma once
 /// The solve's plans, as data (move.hpp): which moves run in which order,
-/// decided from the settings in one place (solve_plans.cpp).
+/// and which whole-answer alternatives (alternative.hpp) compete after the
+/// point lights, decided from the settings in one place (solve_plans.cpp).
+#include "hilight/solve/alternative.hpp"
 #include "hilight/solve/move.hpp"
 #include "hilight/solve/solver.hpp"
 
@@ -18,6 +20,12 @@ Plan spot_plan(const SolveSettings& settings, double points_dbar);
 Plan fine_tune_plan(const SolveSettings& settings);
 /// Add: the missing light from nothing (seeding and cuts) and the reference polish.
 Plan add_plan(const SolveSettings& settings);
+/// The whole-answer alternatives of a solve, in order, after its point
+/// lights: the luminaire's turns (a --luminaire whose profile tells turns
+/// apart), the open space (open_space_dbar > 0, no --place ceiling), the
+/// spot search (propose_spots, no spot hints, no --lights N, no
+/// --luminaire). Each still checks its premise on the answer so far.
+Alternatives answer_alternatives(const SolveSettings& settings);
 /// After the solve, with a luminaire whose profile tells turns apart
 /// (distinct_spins): each luminaire's own turn. Empty otherwise.
 Plan aim_plan(const SolveSettings& settings);

@@ -174,12 +174,12 @@ public:
   Lighting cut_lights(size_t k) const;
 
 private:
-  /// The whole solve in the current light space: seeding to residual polish.
-  /// The point-light solve in the current light space.
+  /// What the whole-answer alternatives (alternative.hpp) may do, over this
+  /// Solver and one target (solver.cpp).
+  class AlternativeHost;
+
+  /// The point-light solve in the current light space: seeding to residual polish.
   Lighting solve_in_space(const Target& target, SolveReport& report);
-  /// With an asymmetric luminaire: the solve again with the template turned
-  /// to each spin its symmetry tells apart; the best D̄ keeps its turn.
-  Lighting solve_each_spin(const Target& target, Lighting lights, SolveReport& report);
   /// Turns the template luminaire (renderers and caches follow).
   void turn_luminaire(float spin_deg);
   /// Spotlights from nothing in the current light space, point lights
@@ -187,11 +187,14 @@ private:
   /// alone explain less than `points_dbar`, D̄ at the samples of the point
   /// lights they compete with).
   Lighting spots_in_space(const Target& target, double points_dbar, SolveReport& report);
-  /// Lights may stand beyond the scene's open sides from now on (its own
-  /// light cache); `open_space(false)` goes back.
   /// Removes lights with (almost) zero intensity, unless the count is fixed or at its minimum.
   void drop_idle_lights(Lighting& lights) const;
+  /// Lights may stand beyond the scene's open sides from now on (its own
+  /// light cache); `open_space(false)` goes back.
   void open_space(bool open);
+  /// Lights may still be sought beyond the scene's open sides: the space is
+  /// closed and the open bounds reach beyond the closed ones.
+  bool can_open_space() const;
   /// Opens the space if some of `lights` stand outside the scene's light
   /// bounds but within the open ones (lights from an earlier open solve).
   void open_space_for(const Lighting& lights);

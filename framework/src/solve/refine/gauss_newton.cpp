@@ -1,5 +1,6 @@
 #include "hilight/solve/gauss_newton.hpp"
 
+#include "hilight/solve/levenberg_marquardt.hpp"
 #include "hilight/solve/spot_refinement.hpp"
 
 #include <Eigen/Dense>
@@ -130,11 +131,9 @@ Lighting gauss_newton_polish(SampleRefineProblem& problem, const Lighting& start
     }
     const Eigen::MatrixXd A = J.transpose() * J;
     const Eigen::VectorXd g = J.transpose() * r;
-    bool accepted = false;
-    for (int attempt = 0; attempt < 8 && !accepted; ++attempt) {
-      Eigen::MatrixXd damped = A;
-      for (Eigen::Index d = 0; d < damped.rows(); ++d) damped(d, d) += lambda * std::max(A(d, d), 1e-30);
-      const Eigen::VectorXd delta = damped.ldlt().solve(-g);
+    const Eigen::VectorXd downhill = -g;
+    double gain = 0;
+    const bool accepted = levenberg_marquardt_step(A, downhill, lambda, LevenbergMarquardtDamping{}, [&](const Eigen::VectorXd& delta) {
       Lighting trial = current;
       bool admissible = delta.allFinite();
       if (admissible) {
@@ -153,24 +152,17 @@ Lighting gauss_newton_polish(SampleRefineProblem& problem, const Lighting& start
       for (size_t j = 0; j < n && admissible; ++j)
         for (int c = 0; c < 3; ++c)
           trial[j].intensity[c] = float(std::max(0.0, double(trial[j].intensity[c]) + delta[Eigen::Index(np + 3 * j + size_t(c))]));
-      if (!admissible) {
-        lambda *= 10;
-        continue;
-      }
+      if (!admissible) return false;
       std::vector<Rgb> trial_phi = problem.responses(trial);
       Eigen::VectorXd trial_r;
       const double trial_cost = residuals(s, trial_phi, trial, trial_r);
-      if (trial_cost < cost) {
-        const double gain = (cost - trial_cost) / cost;
-        current = std::move(trial), phi = std::move(trial_phi), r = std::move(trial_r), cost = trial_cost;
-        lambda = std::max(lambda / 3, 1e-9);
-        accepted = true;
-        if (gain < settings.min_improvement) return current;
-      } else {
-        lambda *= 10;
-      }
-    }
+      if (!(trial_cost < cost)) return false;
+      gain = (cost - trial_cost) / cost;
+      current = std::move(trial), phi = std::move(trial_phi), r = std::move(trial_r), cost = trial_cost;
+      return true;
+    });
     if (!accepted) break;
+    if (gain < settings.min_improvement) return current;
   }
   return current;
 }
