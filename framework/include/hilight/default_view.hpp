@@ -8,9 +8,10 @@
 /// enclosed one), the largest room of the split at doors
 /// (room_split.hpp), cut at the storeys' floors (plan_sections), that holds
 /// a light; with none lit, the room with the most floor to stand on (its plan
-/// at eye height) of the main storey: the one with the most such floor, the
-/// lowest within a tenth of it (a ground floor, not an attic under a sloping
-/// roof nor an upper floor of the same plan). The whole region where the
+/// at eye height) of the main storey: of the storeys within a tenth of the
+/// most such floor, the one nearest the file's elevation 0, else the lowest
+/// (a ground floor, not a basement of the same plan, an attic under a
+/// sloping roof nor an upper floor). The whole region where the
 /// split finds no room.
 #include "hilight/camera.hpp"
 #include "hilight/lighting.hpp"

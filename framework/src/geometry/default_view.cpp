@@ -126,12 +126,14 @@ using Rooms = std::map<RoomKey, RoomExtent>;
 
 /// With no light to go by, the room a person opening a building expects: on
 /// the storey with the most floor to stand on (at eye height: an attic under
-/// a sloping roof has less than its plan), the lowest of those within a tenth
-/// of it (the ground floor over an upper one of the same plan), the room
-/// with the most of it. By volume, the attic's tall space under the ridge
-/// would win. Where no room has floor at eye height (no storeys), the
-/// largest. Ties by key (never by threads or addresses).
-const Rooms::value_type* largest_on_main_storey(const Rooms& rooms) {
+/// a sloping roof has less than its plan), of those within a tenth of it the
+/// one whose floor stands nearest the file's elevation 0 (the ground floor
+/// as architects model it, over a basement of the same plan), the lowest of
+/// equally near ones (the ground floor under an upper one where the model
+/// sits elsewhere), the room with the most of it. By volume, the attic's
+/// tall space under the ridge would win. Where no room has floor at eye
+/// height (no storeys), the largest. Ties by key (never by threads or addresses).
+const Rooms::value_type* largest_on_main_storey(const Rooms& rooms, const SceneFrame& frame) {
   std::map<float, size_t> storey_floor_at_eye;
   for (const auto& [key, room] : rooms) storey_floor_at_eye[key.floor] += room.at_eye;
   size_t most = 0;
@@ -142,11 +144,16 @@ const Rooms::value_type* largest_on_main_storey(const Rooms& rooms) {
       if (!best || entry.second.points > best->second.points) best = &entry;
     return best;
   }
-  // Storeys from the lowest floor up: the first with nearly the most.
-  const auto main = std::find_if(storey_floor_at_eye.begin(), storey_floor_at_eye.end(),
-                                 [most](const auto& storey) { return 10 * storey.second >= 9 * most; });
+  // Storeys from the lowest floor up: of those with nearly the most, the one nearest elevation 0 in the file.
+  std::optional<float> main;
+  double nearest = 0.0;
+  for (const auto& [floor, at_eye] : storey_floor_at_eye) {
+    if (10 * at_eye < 9 * most) continue;
+    const double elevation = std::abs(double(floor) / frame.scale + frame.origin.y);
+    if (!main || elevation < nearest - 1e-3) main = floor, nearest = elevation;
+  }
   for (const auto& entry : rooms)
-    if (entry.first.floor == main->first &&
+    if (entry.first.floor == *main &&
         (!best || std::pair(entry.second.at_eye, entry.second.points) > std::pair(best->second.at_eye, best->second.points)))
       best = &entry;
   return best;
@@ -218,7 +225,7 @@ std::optional<ChosenRoom> choose_room_in(const RayScene& rays, const Regions& re
     for (const auto& entry : rooms)
       if (entry.second.lit && (!best || entry.second.points > best->second.points)) best = &entry;
   } else {
-    best = largest_on_main_storey(rooms);
+    best = largest_on_main_storey(rooms, rays.scene().frame);
   }
   if (!best) return std::nullopt;
   return ChosenRoom{Space{best->second.box, [key_of, key = best->first](const Vec3& p) { return key_of(p) == key; }, best->first.floor},
