@@ -186,7 +186,13 @@ TEST_CASE("painter ui: README's first hour, walked on the bundled room, with its
   REQUIRE(std::regex_search(solve.err, said, summary));
   CHECK(std::stoi(said[1]) >= 1);
   CHECK(fs::file_size(dir / "lights.glb") > 1000);
-  CHECK(test::read_file(dir / "report.html").find("<img") != std::string::npos);
+  // The report the guide describes: the three views, the plan with each light's lux below it, the timings.
+  const std::string report = test::read_file(dir / "report.html");
+  for (const char* part : {"<h2>Target, result, difference", "<h2>Plans", " lx<", "<h2>Lights", "<h2>Timings"}) {
+    INFO(part);
+    CHECK(report.find(part) != std::string::npos);
+  }
+  CHECK(report.find("<img") != std::string::npos);
 
   if (const char* update = std::getenv("HILIGHT_UPDATE_DOC_IMAGES"); update && std::string(update) == "1") {
     const fs::path images = fs::path(HILIGHT_SOURCE_DIR) / "docs/images";
