@@ -193,6 +193,8 @@ TEST_CASE("painter ui: README's first hour, walked on the bundled room, with its
     CHECK(report.find(part) != std::string::npos);
   }
   CHECK(report.find("<img") != std::string::npos);
+  // Spotlights won: the report says so where the light-count walk would be, not that the lights were given.
+  CHECK(report.find("the lights were given") == std::string::npos);
 
   if (const char* update = std::getenv("HILIGHT_UPDATE_DOC_IMAGES"); update && std::string(update) == "1") {
     const fs::path images = fs::path(HILIGHT_SOURCE_DIR) / "docs/images";
