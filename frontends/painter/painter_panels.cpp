@@ -309,12 +309,13 @@ void PainterApp::panel_lights() {
   for (size_t i = 0; i < lights.size(); ++i) {
     const Light& l = lights[i];
     const Rgb& I = shown[i].intensity;
+    // Where the lights file puts it: the scene file's coordinates, as the place rules take them.
+    const glm::dvec3 at = to_world(l.position, m_scene->frame);
     if (l.type == LightType::Luminaire && l.profile)
       ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  dimmed to %.0f%%", i, std::filesystem::path(l.profile_path).filename().string().c_str(),
-                  l.position.x, l.position.y, l.position.z, 100.0 * luminaire_dimming(l));
+                  at.x, at.y, at.z, 100.0 * luminaire_dimming(l));
     else
-      ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  I (%.3g, %.3g, %.3g) %s", i, to_string(l.type), l.position.x, l.position.y, l.position.z,
-                  I.r, I.g, I.b, unit);
+      ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  I (%.3g, %.3g, %.3g) %s", i, to_string(l.type), at.x, at.y, at.z, I.r, I.g, I.b, unit);
     if (l.type == LightType::Spot && ImGui::IsItemHovered())
       ImGui::SetTooltip("direction (%.2f, %.2f, %.2f), cutoff %.1f deg, soft edge %.1f deg", l.direction.x, l.direction.y,
                         l.direction.z, l.cutoff_deg, l.falloff_deg);
