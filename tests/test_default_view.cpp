@@ -293,18 +293,35 @@ TEST_CASE("default view: with no light a building over a basement as large as it
   CHECK(storey_floor(storeys, view.eye) == Approx(0.f).margin(0.05f));
   CHECK(view.eye.y > 1.f);
   CHECK(view.eye.y < 2.8f);
-  // Moved up 100 m (a model at its site's elevation), no storey is near 0: the lowest of them, the basement.
-  Scene high;
-  for (const float floor : {-3.f, 0.f, 3.f}) {
-    builders::add_box(high, Vec3(0.f, 100.f + floor, 0.f), Vec3(10.f, 102.8f + floor, 8.f), Rgb(0.7f), true, "storey");
-    if (floor < 0.f) continue;
-    builders::add_box(high, Vec3(4.9f, 100.f + floor, 0.f), Vec3(5.1f, 102.8f + floor, 3.5f), Rgb(0.7f), false, "partition");
-    builders::add_box(high, Vec3(4.9f, 100.f + floor, 4.5f), Vec3(5.1f, 102.8f + floor, 8.f), Rgb(0.7f), false, "partition");
+  // Moved up 100 m (a model at its site's elevation) with nothing around it, no storey is near 0: the
+  // lowest of them, the basement. With the site's ground around it (a 2 m ring at the ground floor's
+  // level), the ground floor again.
+  for (const bool terrain : {false, true}) {
+    Scene high;
+    for (const float floor : {-3.f, 0.f, 3.f}) {
+      builders::add_box(high, Vec3(0.f, 100.f + floor, 0.f), Vec3(10.f, 102.8f + floor, 8.f), Rgb(0.7f), true, "storey");
+      if (floor < 0.f) continue;
+      builders::add_box(high, Vec3(4.9f, 100.f + floor, 0.f), Vec3(5.1f, 102.8f + floor, 3.5f), Rgb(0.7f), false, "partition");
+      builders::add_box(high, Vec3(4.9f, 100.f + floor, 4.5f), Vec3(5.1f, 102.8f + floor, 8.f), Rgb(0.7f), false, "partition");
+    }
+    if (terrain) {
+      const Rgb grass(0.3f, 0.45f, 0.2f);
+      builders::add_box(high, Vec3(-2.f, 99.8f, -2.f), Vec3(12.f, 100.f, 0.f), grass, false, "terrain");
+      builders::add_box(high, Vec3(-2.f, 99.8f, 8.f), Vec3(12.f, 100.f, 10.f), grass, false, "terrain");
+      builders::add_box(high, Vec3(-2.f, 99.8f, 0.f), Vec3(0.f, 100.f, 8.f), grass, false, "terrain");
+      builders::add_box(high, Vec3(10.f, 99.8f, 0.f), Vec3(12.f, 100.f, 8.f), grass, false, "terrain");
+    }
+    const auto high_scene = test::finish(std::move(high), 0.5f);
+    const Camera high_view = default_view(*RayScene::shared(high_scene), {}, 4.f / 3.f);
+    INFO((terrain ? "with" : "without") << " the site's ground: eye " << high_view.eye.x << ", " << high_view.eye.y << ", "
+                                        << high_view.eye.z);
+    if (terrain) {
+      CHECK(high_view.eye.y > 101.f);
+      CHECK(high_view.eye.y < 102.8f);
+    } else {
+      CHECK(high_view.eye.y < 99.8f);
+    }
   }
-  const auto high_scene = test::finish(std::move(high), 0.5f);
-  const Camera high_view = default_view(*RayScene::shared(high_scene), {}, 4.f / 3.f);
-  INFO("high eye " << high_view.eye.x << ", " << high_view.eye.y << ", " << high_view.eye.z);
-  CHECK(high_view.eye.y < 99.8f);
   // A lamp in the basement takes the eyes there: a light decides before any storey does.
   const Lighting lamp = {Light::point(Vec3(3.f, -0.8f, 4.f), Rgb(1.f))};
   const Camera lit = default_view(*rays, lamp, 4.f / 3.f);

@@ -9,9 +9,10 @@
 /// (room_split.hpp), cut at the storeys' floors (plan_sections), that holds
 /// a light; with none lit, the room with the most floor to stand on (its plan
 /// at eye height) of the main storey: of the storeys within a tenth of the
-/// most such floor, the one nearest the file's elevation 0, else the lowest
-/// (a ground floor, not a basement of the same plan, an attic under a
-/// sloping roof nor an upper floor). The whole region where the
+/// most such floor, the one at ground level — the outside ground the scene
+/// shows around the building, else the file's elevation 0 — the lowest of
+/// equally near ones (a ground floor, not a basement of the same plan, an
+/// attic under a sloping roof nor an upper floor). The whole region where the
 /// split finds no room.
 #include "hilight/camera.hpp"
 #include "hilight/lighting.hpp"
