@@ -267,3 +267,64 @@ TEST_CASE("render: with no --camera the IFC house and a closed box are pictures 
     CHECK(default_view_room(*rays, {}) >= 0);
   }
 }
+
+TEST_CASE("default view: with no light a building over a basement as large as its ground floor opens on the ground floor",
+          "[view][rooms]") {
+  // Three closed storeys of one 10 x 8 m plan, 2.8 m high, slabs 0.2 m: a
+  // basement (floor at -3), the ground floor (at elevation 0) and an upper
+  // floor, those two split by a partition with a door. The basement, one
+  // open room, has the most floor to stand on, the ground floor within a
+  // tenth of it: the ground floor must win by its elevation, nearest 0, and
+  // not the basement, the lowest.
+  Scene raw;
+  for (const float floor : {-3.f, 0.f, 3.f}) {
+    builders::add_box(raw, Vec3(0.f, floor, 0.f), Vec3(10.f, floor + 2.8f, 8.f), Rgb(0.7f), true, "storey");
+    if (floor < 0.f) continue;
+    builders::add_box(raw, Vec3(4.9f, floor, 0.f), Vec3(5.1f, floor + 2.8f, 3.5f), Rgb(0.7f), false, "partition");
+    builders::add_box(raw, Vec3(4.9f, floor, 4.5f), Vec3(5.1f, floor + 2.8f, 8.f), Rgb(0.7f), false, "partition");
+  }
+  const auto scene = test::finish(std::move(raw), 0.5f);
+  const auto rays = RayScene::shared(scene);
+  const std::vector<PlanSection> storeys = plan_sections(*scene);
+  REQUIRE(storeys.size() == 3);
+  CHECK(storeys.front().floor == Approx(-3.f).margin(0.05f));
+  const Camera view = default_view(*rays, {}, 4.f / 3.f);
+  INFO("eye " << view.eye.x << ", " << view.eye.y << ", " << view.eye.z);
+  CHECK(storey_floor(storeys, view.eye) == Approx(0.f).margin(0.05f));
+  CHECK(view.eye.y > 1.f);
+  CHECK(view.eye.y < 2.8f);
+  // Moved up 100 m (a model at its site's elevation) with nothing around it, no storey is near 0: the
+  // lowest of them, the basement. With the site's ground around it (a 2 m ring at the ground floor's
+  // level), the ground floor again.
+  for (const bool terrain : {false, true}) {
+    Scene high;
+    for (const float floor : {-3.f, 0.f, 3.f}) {
+      builders::add_box(high, Vec3(0.f, 100.f + floor, 0.f), Vec3(10.f, 102.8f + floor, 8.f), Rgb(0.7f), true, "storey");
+      if (floor < 0.f) continue;
+      builders::add_box(high, Vec3(4.9f, 100.f + floor, 0.f), Vec3(5.1f, 102.8f + floor, 3.5f), Rgb(0.7f), false, "partition");
+      builders::add_box(high, Vec3(4.9f, 100.f + floor, 4.5f), Vec3(5.1f, 102.8f + floor, 8.f), Rgb(0.7f), false, "partition");
+    }
+    if (terrain) {
+      const Rgb grass(0.3f, 0.45f, 0.2f);
+      builders::add_box(high, Vec3(-2.f, 99.8f, -2.f), Vec3(12.f, 100.f, 0.f), grass, false, "terrain");
+      builders::add_box(high, Vec3(-2.f, 99.8f, 8.f), Vec3(12.f, 100.f, 10.f), grass, false, "terrain");
+      builders::add_box(high, Vec3(-2.f, 99.8f, 0.f), Vec3(0.f, 100.f, 8.f), grass, false, "terrain");
+      builders::add_box(high, Vec3(10.f, 99.8f, 0.f), Vec3(12.f, 100.f, 8.f), grass, false, "terrain");
+    }
+    const auto high_scene = test::finish(std::move(high), 0.5f);
+    const Camera high_view = default_view(*RayScene::shared(high_scene), {}, 4.f / 3.f);
+    INFO((terrain ? "with" : "without") << " the site's ground: eye " << high_view.eye.x << ", " << high_view.eye.y << ", "
+                                        << high_view.eye.z);
+    if (terrain) {
+      CHECK(high_view.eye.y > 101.f);
+      CHECK(high_view.eye.y < 102.8f);
+    } else {
+      CHECK(high_view.eye.y < 99.8f);
+    }
+  }
+  // A lamp in the basement takes the eyes there: a light decides before any storey does.
+  const Lighting lamp = {Light::point(Vec3(3.f, -0.8f, 4.f), Rgb(1.f))};
+  const Camera lit = default_view(*rays, lamp, 4.f / 3.f);
+  INFO("lit eye " << lit.eye.x << ", " << lit.eye.y << ", " << lit.eye.z);
+  CHECK(lit.eye.y < -0.2f);
+}

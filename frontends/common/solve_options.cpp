@@ -208,13 +208,18 @@ std::string building_kind(const Scene& scene, bool storeys) {
 
 bool offered_as_room(const Region& region) { return !region.at_border && region.box.extent().y >= 1.8f; }
 
+std::string why_not_a_room(const Region& region, const std::string& building) {
+  if (building.empty() || offered_as_room(region)) return "";
+  return region.at_border ? "it is outside" : "too low to stand in";
+}
+
 void refuse_regions_not_rooms(const PlacementRules& rules, const Regions& regions, const std::string& building) {
-  if (building.empty()) return;
-  for (int r : rules.regions)
-    if (size_t(r) < regions.list().size() && !offered_as_room(regions.list()[size_t(r)]))
+  for (int r : rules.regions) {
+    if (size_t(r) >= regions.list().size()) continue;
+    if (const std::string why = why_not_a_room(regions.list()[size_t(r)], building); !why.empty())
       throw InputError("--place region:" + std::to_string(r) + ": region " + std::to_string(r) + " is not a room of " + building +
-                       " (" + (regions.list()[size_t(r)].at_border ? "it is outside" : "too low to stand in") +
-                       "; hilight info lists the rooms)");
+                       " (" + why + "; hilight info lists the rooms)");
+  }
 }
 
 std::string apply_building_default(PlacementRules& rules, const Scene& scene, bool storeys) {

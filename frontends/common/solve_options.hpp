@@ -76,6 +76,10 @@ std::string building_kind(const Scene& scene, bool storeys);
 /// light bounds' border) and tall enough to stand in (1.8 m: not the void
 /// under a slab).
 bool offered_as_room(const Region& region);
+/// Why a building's region is not offered as a room: "it is outside" or "too
+/// low to stand in"; "" when it is one, or when the scene is no building
+/// (`building` empty). The painter's room focus asks this too.
+std::string why_not_a_room(const Region& region, const std::string& building);
 /// In a building (`building`: building_kind's answer), `--place region:K`
 /// naming a region not offered as a room (the outside, the void under a
 /// slab) is an InputError: such regions are not offered (issue 34 §5).

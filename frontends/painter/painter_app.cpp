@@ -136,13 +136,7 @@ int PainterApp::run() {
     }
   }
   if (!m_options.screenshot.empty()) screenshot(m_options.screenshot);
-  if (!m_options.window_screenshot.empty()) {
-    // ImGui sizes new windows over a frame or two: capture the third.
-    settle();
-    frame(false);
-    frame(false);
-    frame(false, m_options.window_screenshot);
-  }
+  if (!m_options.window_screenshot.empty()) screenshot(m_options.window_screenshot, true);
   if (m_options.bench) run_bench();
   if (m_options.exit_after_script) {
     write_timings();

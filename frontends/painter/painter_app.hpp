@@ -99,8 +99,11 @@ private:
   void record(const TypedAction& action) { record(untyped(action)); }
   void unrecord_failed_job();
   std::filesystem::path default_record_path() const;
-  void screenshot(const std::filesystem::path& path);
+  /// The 3D view, or with `panels` the whole window (as --window-screenshot).
+  void screenshot(const std::filesystem::path& path, bool panels = false);
   void status(const std::string& line);
+  /// Why a region is no room to focus ("" when it is one, or the scene is no building).
+  std::string not_a_room(const Region& region);
   /// A job's answer went into the document: the Solve panel's line and notes,
   /// the unreachable painted vertices marked (hooks.fit).
   void show_fit(const JobResult& result);

@@ -100,6 +100,11 @@ void PainterApp::panel_rooms() {
     char label[96];
     std::snprintf(label, sizeof label, "region %d: %.1f x %.1f m, %.0f m3", r.id, size.x, size.z, r.volume);
     const bool focused = std::find(focus.begin(), focus.end(), r.id) != focus.end();
+    // A building's outside and the voids under its slabs are listed, not offered (as hilight info lists them).
+    if (const std::string why = not_a_room(r); !why.empty()) {
+      ImGui::TextDisabled("%s: %s", label, why.c_str());
+      continue;
+    }
     if (ImGui::Selectable(label, focused)) {
       std::vector<int> rooms = ImGui::GetIO().KeyCtrl ? focus : std::vector<int>{};
       if (!focused || !ImGui::GetIO().KeyCtrl) rooms.push_back(r.id);

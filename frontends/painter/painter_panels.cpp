@@ -2,6 +2,7 @@
 // Buttons call perform() with the same actions a session script holds.
 #include "painter_app.hpp"
 #include "ui/tooltip.hpp"
+#include "hilight/scene_origin.hpp"
 #include "hilight/units.hpp"
 
 #include <algorithm>
@@ -255,7 +256,10 @@ void PainterApp::panel_fit() {
 
 void PainterApp::panel_placement() {
   if (!ImGui::CollapsingHeader("Placement")) return;
-  const std::string now = m_job->options().settings.placement.describe();
+  const PlacementRules& rules = m_job->options().settings.placement;
+  const std::string now = rules.describe();
+  // Shown in the file's coordinates, as the rules are given (the job's are hilight's own).
+  const std::string shown = rules_to_world(rules, m_scene->frame).describe();
   // Each button is a recorded place action, taken as hilight solve takes the same --place text;
   // one refused (a bad rule, a region that is not a room) says why here.
   auto apply = [this](const std::string& text) { m_solve_panel.place_error = perform(PlaceAction{text}) ? "" : m_status_panel.line; };
@@ -264,16 +268,17 @@ void PainterApp::panel_placement() {
   tip("Where the next solves may put lights, as hilight solve --place: ceiling[:OFFSET], height:MIN:MAX, "
       "box:X0,Y0,Z0,X1,Y1,Z1, exclude:..., count:MIN:MAX, region:K or region:NAME (a room's or storey's name, "
       "as hilight info lists them), anywhere (space-separated; in a building, lights hang from the ceiling "
-      "unless a rule says where, as in hilight solve)");
+      "unless a rule says where, as in hilight solve). Boxes and heights are in the scene file's coordinates.");
   ImGui::BeginDisabled(m_job->busy());
   ImGui::SameLine();
   if (ImGui::Button("Apply")) apply(m_solve_panel.place_text);
   ImGui::SameLine();
   if (ImGui::Button("On the ceiling")) {
-    std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "ceiling:0.2");
+    // 0.2 m, in the file's unit as the rules are read.
+    std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "ceiling:%g", 0.2 / m_scene->frame.scale);
     apply(m_solve_panel.place_text);
   }
-  tip("Ceiling lights only: mounted 0.2 below the ceiling above each light");
+  tip("Ceiling lights only: mounted 0.2 m below the ceiling above each light");
   ImGui::SameLine();
   if (ImGui::Button("Anywhere")) {
     std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "anywhere");
@@ -281,7 +286,7 @@ void PainterApp::panel_placement() {
   }
   tip("Anywhere free, a building's ceiling default lifted (--place anywhere)");
   ImGui::EndDisabled();
-  ImGui::TextDisabled("lights may stand: %s", now.empty() ? "anywhere free" : now.c_str());
+  ImGui::TextDisabled("lights may stand: %s", shown.empty() ? "anywhere free" : shown.c_str());
   // Why they hang from the ceiling when nobody said so (issue 34 §7), while the rules are still the default's.
   if (!m_solve_panel.building_note.empty() && now == m_solve_panel.noted_rules)
     ImGui::TextWrapped("A building: %s. The Anywhere button lifts it too.", m_solve_panel.building_note.c_str());
@@ -304,12 +309,13 @@ void PainterApp::panel_lights() {
   for (size_t i = 0; i < lights.size(); ++i) {
     const Light& l = lights[i];
     const Rgb& I = shown[i].intensity;
+    // Where the lights file puts it: the scene file's coordinates, as the place rules take them.
+    const glm::dvec3 at = to_world(l.position, m_scene->frame);
     if (l.type == LightType::Luminaire && l.profile)
       ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  dimmed to %.0f%%", i, std::filesystem::path(l.profile_path).filename().string().c_str(),
-                  l.position.x, l.position.y, l.position.z, 100.0 * luminaire_dimming(l));
+                  at.x, at.y, at.z, 100.0 * luminaire_dimming(l));
     else
-      ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  I (%.3g, %.3g, %.3g) %s", i, to_string(l.type), l.position.x, l.position.y, l.position.z,
-                  I.r, I.g, I.b, unit);
+      ImGui::Text("%zu %s (%.2f, %.2f, %.2f)  I (%.3g, %.3g, %.3g) %s", i, to_string(l.type), at.x, at.y, at.z, I.r, I.g, I.b, unit);
     if (l.type == LightType::Spot && ImGui::IsItemHovered())
       ImGui::SetTooltip("direction (%.2f, %.2f, %.2f), cutoff %.1f deg, soft edge %.1f deg", l.direction.x, l.direction.y,
                         l.direction.z, l.cutoff_deg, l.falloff_deg);

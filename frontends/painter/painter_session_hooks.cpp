@@ -31,7 +31,7 @@ PlayerHooks PainterApp::make_hooks() {
     view_changed();
   };
   hooks.frame = [this](const Bounds& box) { frame_room(box); };
-  hooks.screenshot = [this](const std::filesystem::path& path) { screenshot(path); };
+  hooks.screenshot = [this](const std::filesystem::path& path, bool panels) { screenshot(path, panels); };
   hooks.view = [this](ViewShown show) {
     m_display.view = show == ViewShown::Target ? ui::ViewMode::Target : show == ViewShown::Difference ? ui::ViewMode::Difference : ui::ViewMode::Result;
     m_display.colours_dirty = true;
@@ -45,6 +45,7 @@ PlayerHooks PainterApp::make_hooks() {
     m_next_scene = std::make_shared<const Scene>(load_scene(path, {m_options.max_edge}));
     m_open_scene = std::filesystem::absolute(path).lexically_normal();
   };
+  hooks.not_a_room = [this](const Region& region) { return not_a_room(region); };
   hooks.settle_placement = [this](PlacementRules& rules, std::shared_ptr<const Regions> regions) {
     // hilight solve's own path, so the same text gives the same rules.
     const cli::PlacementScene scene{m_scene, m_options.ifc_storeys,
@@ -60,6 +61,13 @@ PlayerHooks PainterApp::make_hooks() {
     return note;
   };
   return hooks;
+}
+
+std::string PainterApp::not_a_room(const Region& region) {
+  // What makes the scene a building is asked once per scene (it samples every surface).
+  if (!m_building.kind) m_building.kind = cli::building_kind(*m_scene, m_options.ifc_storeys);
+  const std::string why = cli::why_not_a_room(region, *m_building.kind);
+  return why.empty() ? "" : "not a room of " + *m_building.kind + " (" + why + ")";
 }
 
 void PainterApp::show_fit(const JobResult& result) {
@@ -179,12 +187,19 @@ std::filesystem::path PainterApp::default_record_path() const {
   return dir / (m_options.scene.stem().string() + "-" + stamp + ".json");
 }
 
-void PainterApp::screenshot(const std::filesystem::path& path) {
+void PainterApp::screenshot(const std::filesystem::path& path, bool panels) {
   settle();
-  draw_scene();
-  int w = 1, h = 1;
-  m_window->framebuffer_size(w, h);
-  ui::save_screenshot(path, w, h);
+  if (panels) {
+    // ImGui sizes new windows over a frame or two: capture the third.
+    frame(false);
+    frame(false);
+    frame(false, path);
+  } else {
+    draw_scene();
+    int w = 1, h = 1;
+    m_window->framebuffer_size(w, h);
+    ui::save_screenshot(path, w, h);
+  }
   status("screenshot " + path.string());
 }
 

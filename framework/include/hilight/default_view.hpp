@@ -8,9 +8,11 @@
 /// enclosed one), the largest room of the split at doors
 /// (room_split.hpp), cut at the storeys' floors (plan_sections), that holds
 /// a light; with none lit, the room with the most floor to stand on (its plan
-/// at eye height) of the main storey: the one with the most such floor, the
-/// lowest within a tenth of it (a ground floor, not an attic under a sloping
-/// roof nor an upper floor of the same plan). The whole region where the
+/// at eye height) of the main storey: of the storeys within a tenth of the
+/// most such floor, the one at ground level — the outside ground the scene
+/// shows around the building, else the file's elevation 0 — the lowest of
+/// equally near ones (a ground floor, not a basement of the same plan, an
+/// attic under a sloping roof nor an upper floor). The whole region where the
 /// split finds no room.
 #include "hilight/camera.hpp"
 #include "hilight/lighting.hpp"

@@ -46,5 +46,7 @@ Lighting lights_from_file(const std::filesystem::path& file, Units units, const 
 /// Placement rules given in the file's coordinates (boxes, heights, the
 /// ceiling offset) in hilight's.
 PlacementRules rules_to_local(PlacementRules rules, const SceneFrame& frame);
+/// The inverse: rules in hilight's coordinates as the file's (to show them as the user gave them).
+PlacementRules rules_to_world(PlacementRules rules, const SceneFrame& frame);
 
 } // namespace hilight

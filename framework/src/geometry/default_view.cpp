@@ -124,14 +124,50 @@ struct RoomExtent {
 };
 using Rooms = std::map<RoomKey, RoomExtent>;
 
+/// The outside ground the scene shows around `rooms` (its enclosed regions):
+/// the median height where rays straight down from above the scene first
+/// meet something outside the regions' plans (grown by a wall's thickness)
+/// no higher than a metre over the top storey's floor (`top_floor`: not the
+/// eaves of a roof), a terrain or site slab; nullopt when too few do (a
+/// building modelled alone: nothing around it).
+std::optional<float> outside_ground(const RayScene& rays, const std::vector<const Region*>& rooms, float top_floor) {
+  constexpr int kGrid = 48;
+  constexpr float kWall = 0.5f;
+  const Bounds& bounds = rays.scene().bounds;
+  const Vec3 extent = bounds.extent();
+  std::vector<float> heights;
+  int outside = 0;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const float x = bounds.lo.x + (float(i) + 0.5f) / kGrid * extent.x, z = bounds.lo.z + (float(j) + 0.5f) / kGrid * extent.z;
+      const bool under_a_room = std::any_of(rooms.begin(), rooms.end(), [&](const Region* r) {
+        return x > r->box.lo.x - kWall && x < r->box.hi.x + kWall && z > r->box.lo.z - kWall && z < r->box.hi.z + kWall;
+      });
+      if (under_a_room) continue;
+      ++outside;
+      const Vec3 from(x, bounds.hi.y + 1.f, z);
+      if (const Hit hit = rays.intersect(from, Vec3(0.f, -1.f, 0.f)); hit.valid() && from.y - hit.t <= top_floor + 1.f)
+        heights.push_back(from.y - hit.t);
+    }
+  // Ground under at least a fifth of the plan around the rooms (a few posts or a hedge are no ground).
+  if (heights.empty() || 5 * heights.size() < size_t(outside)) return std::nullopt;
+  std::nth_element(heights.begin(), heights.begin() + std::ptrdiff_t(heights.size() / 2), heights.end());
+  return heights[heights.size() / 2];
+}
+
 /// With no light to go by, the room a person opening a building expects: on
 /// the storey with the most floor to stand on (at eye height: an attic under
-/// a sloping roof has less than its plan), the lowest of those within a tenth
-/// of it (the ground floor over an upper one of the same plan), the room
-/// with the most of it. By volume, the attic's tall space under the ridge
-/// would win. Where no room has floor at eye height (no storeys), the
-/// largest. Ties by key (never by threads or addresses).
-const Rooms::value_type* largest_on_main_storey(const Rooms& rooms) {
+/// a sloping roof has less than its plan), of those within a tenth of it the
+/// one at ground level, the room with the most of it. Ground level (`ground`,
+/// in hilight's coordinates): the outside ground the scene shows
+/// (outside_ground), else the file's elevation 0 (where architects model the
+/// ground floor); a basement of the ground floor's plan is below it. The
+/// lowest of storeys equally near (the ground floor under an upper one of the
+/// same plan, where the model sits far from 0 with no ground around it). By
+/// volume, the attic's tall space under the ridge would win. Where no room
+/// has floor at eye height (no storeys), the largest. Ties by key (never by
+/// threads or addresses).
+const Rooms::value_type* largest_on_main_storey(const Rooms& rooms, float ground) {
   std::map<float, size_t> storey_floor_at_eye;
   for (const auto& [key, room] : rooms) storey_floor_at_eye[key.floor] += room.at_eye;
   size_t most = 0;
@@ -142,11 +178,16 @@ const Rooms::value_type* largest_on_main_storey(const Rooms& rooms) {
       if (!best || entry.second.points > best->second.points) best = &entry;
     return best;
   }
-  // Storeys from the lowest floor up: the first with nearly the most.
-  const auto main = std::find_if(storey_floor_at_eye.begin(), storey_floor_at_eye.end(),
-                                 [most](const auto& storey) { return 10 * storey.second >= 9 * most; });
+  // Storeys from the lowest floor up: of those with nearly the most, the one nearest the ground.
+  std::optional<float> main;
+  float nearest = 0.f;
+  for (const auto& [floor, at_eye] : storey_floor_at_eye) {
+    if (10 * at_eye < 9 * most) continue;
+    const float off = std::abs(floor - ground);
+    if (!main || off < nearest - 1e-3f) main = floor, nearest = off;
+  }
   for (const auto& entry : rooms)
-    if (entry.first.floor == main->first &&
+    if (entry.first.floor == *main &&
         (!best || std::pair(entry.second.at_eye, entry.second.points) > std::pair(best->second.at_eye, best->second.points)))
       best = &entry;
   return best;
@@ -218,7 +259,11 @@ std::optional<ChosenRoom> choose_room_in(const RayScene& rays, const Regions& re
     for (const auto& entry : rooms)
       if (entry.second.lit && (!best || entry.second.points > best->second.points)) best = &entry;
   } else {
-    best = largest_on_main_storey(rooms);
+    // Ground level: the ground the scene shows around the building, else the file's elevation 0.
+    const SceneFrame& frame = rays.scene().frame;
+    const float top_floor = storeys->empty() ? box.lo.y : storeys->back().floor;
+    const float ground = outside_ground(rays, searched, top_floor).value_or(float((0.0 - frame.origin.y) * frame.scale));
+    best = largest_on_main_storey(rooms, ground);
   }
   if (!best) return std::nullopt;
   return ChosenRoom{Space{best->second.box, [key_of, key = best->first](const Vec3& p) { return key_of(p) == key; }, best->first.floor},

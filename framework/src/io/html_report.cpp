@@ -37,7 +37,12 @@ Image difference_image(const Image& result, const Image& target, float exposure)
 }
 
 std::string dbar_plot(const SolveReport& r, size_t chosen_points) {
-  if (r.cuts.empty()) return "<p>No hierarchy (the lights were given).</p>";
+  if (r.cuts.empty()) {
+    // The spot search's answer replaces the point lights' hierarchy: say so, not that the lights were given.
+    const bool spots_won = std::any_of(r.stages.begin(), r.stages.end(), [](const StageRecord& s) { return s.name == "spot search" && s.kept; });
+    return spots_won ? "<p>No light-count walk: spotlights replaced the point lights (the spot search's answer has no hierarchy).</p>"
+                     : "<p>No hierarchy (the lights were given).</p>";
+  }
   double top = 0;
   size_t most = 1;
   for (const auto& c : r.cuts) {

@@ -61,4 +61,16 @@ PlacementRules rules_to_local(PlacementRules rules, const SceneFrame& frame) {
   return rules;
 }
 
+PlacementRules rules_to_world(PlacementRules rules, const SceneFrame& frame) {
+  for (auto* list : {&rules.boxes, &rules.excluded})
+    for (auto& b : *list) {
+      b.lo = Vec3(to_world(b.lo, frame));
+      b.hi = Vec3(to_world(b.hi, frame));
+    }
+  rules.min_height = float(double(rules.min_height) / frame.scale + frame.origin.y);  // ±infinity stays
+  rules.max_height = float(double(rules.max_height) / frame.scale + frame.origin.y);
+  if (rules.ceiling_offset) rules.ceiling_offset = float(double(*rules.ceiling_offset) / frame.scale);
+  return rules;
+}
+
 } // namespace hilight

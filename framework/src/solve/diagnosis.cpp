@@ -28,9 +28,11 @@ Unreachable find_unreachable(const Target& target, const LightSpace& space, size
       const float distance = glm::length(to);
       if (!(distance > 0.f)) continue;
       to /= distance;
-      // Lit from either side (two-sided surfaces): start on the side facing the place.
-      const Vec3 origin = p + (glm::dot(normal, to) >= 0.f ? 1.f : -1.f) * rays.epsilon() * normal;
-      if (!rays.occluded(origin, to, distance)) return;
+      // Lit from either side (two-sided surfaces): start on the side facing the place,
+      // and a step toward it: a point on a crease (a floor's edge at a wall) lies in the
+      // other face's plane, and a ray starting there would hit that face at once.
+      const Vec3 origin = p + (glm::dot(normal, to) >= 0.f ? 1.f : -1.f) * rays.epsilon() * normal + rays.epsilon() * to;
+      if (!rays.occluded(origin, to, distance - rays.epsilon())) return;
     }
     unreached[k] = energy[k];
   });

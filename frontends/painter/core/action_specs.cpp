@@ -466,10 +466,14 @@ json write(const LoadLightsAction& a) { return {{"path", a.path}}; }
 // ScreenshotAction
 template <>
 Spec schema_of<ScreenshotAction>() {
-  return {{{"path", Kind::String}}, {"path"}, {}, {}, false};
+  return {{{"path", Kind::String}, {"panels", Kind::Bool}}, {"path"}, {}, {}, false};
 }
-ScreenshotAction read(const json& p, Is<ScreenshotAction>) { return {p["path"].get<std::string>()}; }
-json write(const ScreenshotAction& a) { return {{"path", a.path}}; }
+ScreenshotAction read(const json& p, Is<ScreenshotAction>) { return {p["path"].get<std::string>(), p.value("panels", false)}; }
+json write(const ScreenshotAction& a) {
+  json p = {{"path", a.path}};
+  if (a.panels) p["panels"] = true;
+  return p;
+}
 
 // OpenSceneAction
 template <>

@@ -163,9 +163,11 @@ struct LoadLightsAction {
   static constexpr const char* kType = "load_lights";
   std::string path;
 };
+/// The 3D view as the window shows it, or (`panels`) the whole window with its panels.
 struct ScreenshotAction {
   static constexpr const char* kType = "screenshot";
   std::string path;
+  bool panels = false;
 };
 /// Another scene: the window starts again on it (painted target, lights,
 /// undo history and view left behind); the session's later actions apply there.

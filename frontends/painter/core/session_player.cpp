@@ -1,6 +1,7 @@
 #include "core/session_player.hpp"
 
 #include "hilight/error.hpp"
+#include "hilight/scene_origin.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -210,12 +211,14 @@ void SessionPlayer::run(const FocusAction& a, const Action&, const std::string& 
     const SurfacePick at = world_point(*a.world, where);
     const int room = room_of(at.position, at.normal);
     if (room < 0) throw InputError(where + ": no room at " + describe(*a.world) + " (it is outside every region)");
+    refuse_not_a_room(room, where, " at " + describe(*a.world));
     focus.push_back(room);
   }
   for (int r : a.regions) {
     if (r < 0 || size_t(r) >= rooms)
       throw InputError(where + ": no region " + std::to_string(r) + " (the scene has " + std::to_string(rooms) + ", 0 to " +
                        std::to_string(int(rooms) - 1) + ")");
+    refuse_not_a_room(r, where, "");
     if (std::find(focus.begin(), focus.end(), r) == focus.end()) focus.push_back(r);
   }
   if (m_job.busy()) finish_solve(where);
@@ -234,6 +237,13 @@ void SessionPlayer::run(const FocusAction& a, const Action&, const std::string& 
   }
   if (m_hooks.frame) m_hooks.frame(box);
   log("focus on region " + names);
+}
+
+void SessionPlayer::refuse_not_a_room(int region, const std::string& where, const std::string& at) const {
+  // The rooms a building offers, as hilight solve takes region:K: the focus limits the lights to them.
+  if (!m_hooks.not_a_room) return;
+  const std::string why = m_hooks.not_a_room(regions().list()[size_t(region)]);
+  if (!why.empty()) throw InputError(where + ": region " + std::to_string(region) + at + " is " + why + "; focus a room");
 }
 
 PlacementRules SessionPlayer::placement() const {
@@ -407,6 +417,9 @@ void SessionPlayer::run(const PlaceAction& a, const Action&, const std::string& 
   std::string building_note;
   try {
     for (const auto& rule : split_place_rules(a.rules)) rules.add(rule);
+    // Boxes, heights and the ceiling offset in the scene file's coordinates
+    // and unit, as hilight solve --place and the painter's files take them.
+    rules = rules_to_local(std::move(rules), m_document.scene().frame);
     if (!rules.regions.empty()) regions();  // found once, shared with the focus and the light space
     if (m_hooks.settle_placement) building_note = m_hooks.settle_placement(rules, m_regions);
     else if (!rules.region_names.empty() || !rules.not_region_names.empty()) rules.resolve_room_names({});  // throws, naming it
@@ -436,7 +449,7 @@ void SessionPlayer::run(const SaveLightsAction& a, const Action&, const std::str
 
 void SessionPlayer::run(const ScreenshotAction& a, const Action&, const std::string& where) {
   if (m_job.busy() && !m_options.wait_for_solves) throw InputError(where + ": wait for the running solve to finish");
-  if (m_hooks.screenshot) m_hooks.screenshot(resolve(a.path));
+  if (m_hooks.screenshot) m_hooks.screenshot(resolve(a.path), a.panels);
   else log(where + ": no window, no screenshot");
 }
 

@@ -53,8 +53,8 @@ struct PlayerHooks {
   std::function<CameraPose()> camera_pose;
   /// Screen pixel (x right, y down) → surface point under it, nullopt on a miss.
   std::function<std::optional<SurfacePick>(const std::array<float, 2>&)> pick_screen;
-  /// Writes a screenshot to the path.
-  std::function<void(const std::filesystem::path&)> screenshot;
+  /// Writes a screenshot to the path: the 3D view, or with `panels` the whole window.
+  std::function<void(const std::filesystem::path&, bool panels)> screenshot;
   /// Several occluder–light pairs shadow an erase_shadow click and the action
   /// has no "pick": returns the index to erase (default: the first).
   std::function<size_t(const std::vector<ShadowPair>&)> choose_shadow_pair;
@@ -78,6 +78,11 @@ struct PlayerHooks {
   /// `regions`: the player's, when found. Unset: the rules as parsed, and the
   /// scene names no rooms.
   std::function<std::string(PlacementRules&, std::shared_ptr<const Regions> regions)> settle_placement;
+  /// Why a region may not be focused: "not a room of <building> (<why>)",
+  /// as hilight solve refuses `--place region:K` of it (the outside of a
+  /// building, the void under a slab); "" when it is a room, or the scene is
+  /// no building. Unset: every region may be focused.
+  std::function<std::string(const Region&)> not_a_room;
   /// A job's lights went into the document: its report and, for a poor fit,
   /// the painted vertices no allowed place sees (the window says why and marks them).
   std::function<void(const JobResult&)> fit;
@@ -193,6 +198,8 @@ private:
   void run(const OpenSceneAction& a, const Action& action, const std::string& where);
   /// Gives the job placement().
   void apply_placement();
+  /// An InputError when the not_a_room hook says region `region` is no room (`at`: where the action pointed).
+  void refuse_not_a_room(int region, const std::string& where, const std::string& at) const;
   /// The painted target, only its points in the focused rooms when there are some.
   Target focused_target(const std::string& where) const;
   /// Starts a job on the focused target (no waiting).
