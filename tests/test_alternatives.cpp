@@ -165,7 +165,7 @@ TEST_CASE("alternatives: no open side, or a fitting answer, and the open space i
   CHECK(ctx.said.empty());
 }
 
-TEST_CASE("alternatives: spots win by the judge's eq. 9; none found leaves D̄ as it was", "[alternatives]") {
+TEST_CASE("alternatives: spots win by the judge's eq. 9 and none found leaves D̄ as it was", "[alternatives]") {
   ScriptedContext ctx;
   SECTION("fewer spots, D̄ not ε_impro worse") {
     ctx.spots = {2, 0.31};

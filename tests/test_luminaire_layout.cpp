@@ -328,31 +328,65 @@ TEST_CASE("arrays: --layout array gives rows × columns aligned with the room or
   }
 }
 
+namespace {
+/// The test panel (panel_text) as a luminaire template.
+Light panel_luminaire() {
+  Light luminaire;
+  luminaire.type = LightType::Luminaire;
+  luminaire.profile = std::make_shared<const Photometry>(parse_ies(panel_text(), "panel.ies"));
+  luminaire.profile_path = "panel.ies";
+  return luminaire;
+}
+
+/// Panels 0.1 m under a 3 m ceiling at the centres of 3 m cells (i, k),
+/// dimmed to 80%.
+Lighting panels_in_cells(const Light& luminaire, const std::vector<std::pair<int, int>>& cells) {
+  Lighting made;
+  for (const auto& [i, k] : cells) {
+    Light l = luminaire;
+    l.position = Vec3(1.5f + 3.f * float(i), 2.9f, 1.5f + 3.f * float(k));
+    l.intensity = Rgb(float(0.8 * luminaire.profile->peak() / kLumensPerWatt));
+    made.push_back(l);
+  }
+  return made;
+}
+
+/// The work plane's criteria: what `made` gives there, a hair below.
+IlluminanceCriteria criteria_met_by(const RayScene& rays, const Regions& regions, Renderer& renderer, const Lighting& made) {
+  IlluminanceCriteria c;
+  c.grids.push_back(make_work_plane(rays, regions, {}, 0.75f, 1.0, 0.0));
+  const std::vector<double> lux = lux_from_radiance(renderer.illuminate(c.points(), made));
+  const GridFigures f = grid_figures(c.grids.front(), lux);
+  c.grids.front().lux = 0.99 * f.mean;
+  c.grids.front().u0 = 0.99 * f.u0;
+  return c;
+}
+
+/// The design gave back `made`: each panel within 1 cm, all dimmed to 80%.
+void check_gives_back(const Lighting& made, const Lighting& lights, const DesignReport& report) {
+  CHECK(report.met);
+  REQUIRE(lights.size() == made.size());
+  for (const Light& m : made) {
+    float nearest = 1e9f;
+    for (const Light& l : lights) nearest = std::min(nearest, glm::length(l.position - m.position));
+    CHECK(nearest < 0.01f);
+  }
+  for (double d : report.dimming) CHECK(d == Approx(0.8).epsilon(0.02));
+}
+} // namespace
+
 TEST_CASE("a target made from a 3 × 4 array of panels comes back as that array", "[lux][layout]") {
   // A 9 m × 12 m room, panels 0.1 m under its 3 m ceiling at the centres of 3 × 4 cells.
   auto scene = test::finish(builders::box_room(Vec3(9.f, 3.f, 12.f)), 0.5f);
   const RayScene rays(*scene);
   const Regions regions(rays);
-  Light luminaire;
-  luminaire.type = LightType::Luminaire;
-  luminaire.profile = std::make_shared<const Photometry>(parse_ies(panel_text(), "panel.ies"));
-  luminaire.profile_path = "panel.ies";
-  Lighting made;
+  const Light luminaire = panel_luminaire();
+  std::vector<std::pair<int, int>> cells;
   for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 4; ++k) {
-      Light l = luminaire;
-      l.position = Vec3(1.5f + 3.f * float(i), 2.9f, 1.5f + 3.f * float(k));
-      l.intensity = Rgb(float(0.8 * luminaire.profile->peak() / kLumensPerWatt));  // dimmed to 80%
-      made.push_back(l);
-    }
-  IlluminanceCriteria c;
-  c.grids.push_back(make_work_plane(rays, regions, {}, 0.75f, 1.0, 0.0));
+    for (int k = 0; k < 4; ++k) cells.emplace_back(i, k);
+  const Lighting made = panels_in_cells(luminaire, cells);
   auto renderer = test::make_renderer("embree", scene);
-  const std::vector<double> lux = lux_from_radiance(renderer->illuminate(c.points(), made));
-  const GridFigures f = grid_figures(c.grids.front(), lux);
-  // What that array gives, a hair below, is the target.
-  c.grids.front().lux = 0.99 * f.mean;
-  c.grids.front().u0 = 0.99 * f.u0;
+  const IlluminanceCriteria c = criteria_met_by(rays, regions, *renderer, made);
   PlacementRules rules;
   rules.add("ceiling:0.1");
   const LightSpace space(rays, rules);
@@ -366,14 +400,7 @@ TEST_CASE("a target made from a 3 × 4 array of panels comes back as that array"
     DesignReport report;
     const Lighting lights = design_for_illuminance(*renderer, space, luminaire, c, settings, report);
     INFO(report.array.shape << ", U0 wanted " << c.grids.front().u0);
-    CHECK(report.met);
-    REQUIRE(lights.size() == 12);
-    for (const Light& m : made) {
-      float nearest = 1e9f;
-      for (const Light& l : lights) nearest = std::min(nearest, glm::length(l.position - m.position));
-      CHECK(nearest < 0.01f);
-    }
-    for (double d : report.dimming) CHECK(d == Approx(0.8).epsilon(0.02));
+    check_gives_back(made, lights, report);
   }
 }
 
@@ -407,27 +434,15 @@ TEST_CASE("an L-shaped room gets one regular grid clipped to its outline: a targ
   auto scene = test::finish(l_shaped_room(), 0.5f);
   const RayScene rays(*scene);
   const Regions regions(rays);
-  Light luminaire;
-  luminaire.type = LightType::Luminaire;
-  luminaire.profile = std::make_shared<const Photometry>(parse_ies(panel_text(), "panel.ies"));
-  luminaire.profile_path = "panel.ies";
+  const Light luminaire = panel_luminaire();
   // A 3 × 3 grid of 3 m cells over the 9 m square; the corner cell's centre (7.5, 7.5) is outside.
-  Lighting made;
+  std::vector<std::pair<int, int>> cells;
   for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) {
-      if (i == 2 && k == 2) continue;
-      Light l = luminaire;
-      l.position = Vec3(1.5f + 3.f * float(i), 2.9f, 1.5f + 3.f * float(k));
-      l.intensity = Rgb(float(0.8 * luminaire.profile->peak() / kLumensPerWatt));
-      made.push_back(l);
-    }
-  IlluminanceCriteria c;
-  c.grids.push_back(make_work_plane(rays, regions, {}, 0.75f, 1.0, 0.0));
+    for (int k = 0; k < 3; ++k)
+      if (i != 2 || k != 2) cells.emplace_back(i, k);
+  const Lighting made = panels_in_cells(luminaire, cells);
   auto renderer = test::make_renderer("embree", scene);
-  const std::vector<double> lux = lux_from_radiance(renderer->illuminate(c.points(), made));
-  const GridFigures f = grid_figures(c.grids.front(), lux);
-  c.grids.front().lux = 0.99 * f.mean;
-  c.grids.front().u0 = 0.99 * f.u0;
+  const IlluminanceCriteria c = criteria_met_by(rays, regions, *renderer, made);
   PlacementRules rules;
   rules.add("ceiling:0.1");
   const LightSpace space(rays, rules);
@@ -437,15 +452,8 @@ TEST_CASE("an L-shaped room gets one regular grid clipped to its outline: a targ
   DesignReport report;
   const Lighting lights = design_for_illuminance(*renderer, space, luminaire, c, settings, report);
   INFO(report.array.shape << ", Ē wanted " << c.grids.front().lux << ", U0 wanted " << c.grids.front().u0);
-  CHECK(report.met);
   CHECK_THAT(report.array.shape, Catch::Contains("3 × 3") && Catch::Contains("8 in the room"));
-  REQUIRE(lights.size() == 8);
-  for (const Light& m : made) {
-    float nearest = 1e9f;
-    for (const Light& l : lights) nearest = std::min(nearest, glm::length(l.position - m.position));
-    CHECK(nearest < 0.01f);
-  }
-  for (double d : report.dimming) CHECK(d == Approx(0.8).epsilon(0.02));
+  check_gives_back(made, lights, report);
 }
 
 TEST_CASE("UGR at the standard observers: reported, and a limit with --ugr-max", "[lux][ugr][cli]") {

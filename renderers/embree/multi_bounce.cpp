@@ -1,5 +1,6 @@
 #include "multi_bounce.hpp"
 
+#include "hilight/bounce_series.hpp"
 #include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
 
@@ -12,14 +13,6 @@ namespace hilight::embree {
 
 namespace {
 SurfacePoints vertices_of(const Scene& scene) { return SurfacePoints::from_vertices(scene); }
-
-/// Σ of a field per channel, in double (the series' convergence test).
-std::array<double, 3> channel_sums(const Rgb* field, size_t n) {
-  std::array<double, 3> s{0.0, 0.0, 0.0};
-  for (size_t k = 0; k < n; ++k)
-    for (int c = 0; c < 3; ++c) s[c] += double(field[k][c]);
-  return s;
-}
 } // namespace
 
 MultiBounce::MultiBounce(const RayScene& es, const std::vector<ShadingPoint>& vertex_shading, int samples, uint64_t seed,
@@ -48,57 +41,25 @@ std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, si
         }
     });
   };
-  std::vector<Rgb> sum(light_count * n, Rgb(0.f)), current(light_count * n, Rgb(0.f)), next(light_count * n, Rgb(0.f));
-  std::vector<char> active(light_count, 1);
+  std::vector<Rgb> current(light_count * n, Rgb(0.f)), next(light_count * n, Rgb(0.f));
+  BounceSeriesSum series(light_count, n, m_bounces, kMaxSteps);
   // d₁ = T e₀ from the scalar direct light.
   step([&](size_t j, const uint32_t* e, const float* w) {
          const float* d = &direct[j * n];
          return Rgb(w[0] * d[e[0]] + w[1] * d[e[1]] + w[2] * d[e[2]]);
        },
-       current, active);
+       current, series.active());
   if (progress) progress->advance();
-  const int last = m_bounces == kAllBounces ? kMaxSteps : m_bounces - 1;  // d₁ … d_last
-  std::vector<std::array<double, 3>> previous_ratio(light_count, {-1.0, -1.0, -1.0}), previous_size(light_count);
-  int steps = 1;
-  for (;; ++steps) {
-    for (size_t j = 0; j < light_count; ++j) {
-      if (!active[j]) continue;
-      const Rgb* d = &current[j * n];
-      Rgb* s = &sum[j * n];
-      for (size_t k = 0; k < n; ++k) s[k] += d[k];
-      const auto size = channel_sums(d, n), total = channel_sums(s, n);
-      std::array<double, 3> ratio{-1.0, -1.0, -1.0};
-      bool negligible = true, steady = steps >= 3;
-      Rgb rest(0.f);
-      for (int c = 0; c < 3; ++c) {
-        if (steps > 1 && previous_size[j][c] > 0.0) ratio[c] = size[c] / previous_size[j][c];
-        if (size[c] <= kNegligible * total[c]) continue;  // this channel has converged
-        negligible = false;
-        steady = steady && ratio[c] > 0.0 && ratio[c] < 1.0 && std::abs(ratio[c] - previous_ratio[j][c]) <= kSteadyRatio;
-        if (steady) rest[c] = float(ratio[c] / (1.0 - ratio[c]));
-      }
-      bool done = negligible || steps >= last;
-      if (m_bounces == kAllBounces && !done && steady) {
-        // The geometric rest, per channel: d_k (r + r² + …) = d_k r/(1−r).
-        for (size_t k = 0; k < n; ++k) s[k] += d[k] * rest;
-        done = true;
-      }
-      if (done) active[j] = 0;
-      previous_ratio[j] = ratio;
-      previous_size[j] = size;
-    }
-    bool any = false;
-    for (char a : active) any = any || a;
-    if (!any) break;
+  for (int steps = 1; series.add(steps, current); ++steps) {
     step([&](size_t j, const uint32_t* e, const float* w) {
            const Rgb* d = &current[j * n];
            return w[0] * d[e[0]] + w[1] * d[e[1]] + w[2] * d[e[2]];
          },
-         next, active);
+         next, series.active());
     if (progress) progress->advance();
     std::swap(current, next);
   }
-  return sum;
+  return std::move(series.sum());
 }
 
 } // namespace hilight::embree

@@ -10,10 +10,9 @@
 /// first, from e₀ at the hits, stays as first_bounce.hpp computes it).
 /// Linear in the lights, deterministic, no light is created: each step
 /// multiplies by the albedo, so a closed room's flux is passed on as ρ^k.
-/// "All" iterates until the steps shrink geometrically (their ratio steady
-/// to kSteadyRatio) or fall under kNegligible of the sum, and adds the
-/// geometric rest d_k·r/(1−r) per channel (bright rooms converge as ρ^k:
-/// ρ = 0.95 would take ~180 steps to 10⁻⁴ without it).
+/// "All" iterates until the steps shrink geometrically or fall under a
+/// negligible share of the sum, and adds the geometric rest (the rule every
+/// renderer shares: hilight/bounce_series.hpp).
 #include "first_bounce.hpp"
 #include "hilight/bounces.hpp"
 
@@ -43,9 +42,7 @@ public:
   /// ends within this many by the geometric rest).
   int expected_steps() const { return m_bounces == kAllBounces ? 8 : m_bounces - 1; }
 
-  static constexpr int kMaxSteps = 200;
-  static constexpr double kNegligible = 1e-5;  ///< a step this small of the sum ends the series
-  static constexpr double kSteadyRatio = 2e-3; ///< ratios of successive steps this close: the geometric rest is added
+  static constexpr int kMaxSteps = 200;  ///< "all" ends by then (the stopping rule: hilight/bounce_series.hpp)
 
 private:
   const RayScene& m_es;

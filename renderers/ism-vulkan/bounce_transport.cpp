@@ -1,5 +1,7 @@
 #include "bounce_transport.hpp"
 
+#include "hilight/bounce_series.hpp"
+
 #include "hilight/bounces.hpp"
 
 #include <algorithm>
@@ -105,14 +107,6 @@ BounceSeries::BounceSeries(GatherRows transport, std::vector<Rgb> albedo, int bo
   if (m_transport.rows() != 2 * m_albedo.size()) throw std::logic_error("BounceSeries: one row per bounce point side");
 }
 
-namespace {
-std::array<double, 3> channel_sums(const Rgb* field, size_t n) {
-  std::array<double, 3> s{0.0, 0.0, 0.0};
-  for (size_t k = 0; k < n; ++k)
-    for (int c = 0; c < 3; ++c) s[c] += double(field[k][c]);
-  return s;
-}
-} // namespace
 
 std::vector<Rgb> BounceSeries::bounced(const std::vector<float>& direct, size_t lights) const {
   const size_t n = sides();
@@ -134,43 +128,14 @@ std::vector<Rgb> BounceSeries::bounced(const std::vector<float>& direct, size_t 
       }
     });
   };
-  std::vector<Rgb> sum(lights * n, Rgb(0.f)), current(lights * n, Rgb(0.f)), next(lights * n, Rgb(0.f));
-  std::vector<char> active(lights, 1);
-  step([&](size_t j, uint32_t h) { return Rgb(direct[j * n + h]); }, current, active);  // d₁ = T e₀
-  const int last = m_bounces == kAllBounces ? kMaxSteps : m_bounces - 1;                // d₁ … d_last
-  std::vector<std::array<double, 3>> previous_ratio(lights, {-1.0, -1.0, -1.0}), previous_size(lights);
-  for (int steps = 1;; ++steps) {
-    for (size_t j = 0; j < lights; ++j) {
-      if (!active[j]) continue;
-      const Rgb* d = &current[j * n];
-      Rgb* s = &sum[j * n];
-      for (size_t k = 0; k < n; ++k) s[k] += d[k];
-      const auto size = channel_sums(d, n), total = channel_sums(s, n);
-      std::array<double, 3> ratio{-1.0, -1.0, -1.0};
-      bool negligible = true, steady = steps >= 3;
-      Rgb rest(0.f);
-      for (int c = 0; c < 3; ++c) {
-        if (steps > 1 && previous_size[j][c] > 0.0) ratio[c] = size[c] / previous_size[j][c];
-        if (size[c] <= kNegligible * total[c]) continue;  // this channel has converged
-        negligible = false;
-        steady = steady && ratio[c] > 0.0 && ratio[c] < 1.0 && std::abs(ratio[c] - previous_ratio[j][c]) <= kSteadyRatio;
-        if (steady) rest[c] = float(ratio[c] / (1.0 - ratio[c]));
-      }
-      bool done = negligible || steps >= last;
-      if (m_bounces == kAllBounces && !done && steady) {
-        // The geometric rest, per channel: d_k (r + r² + …) = d_k r/(1−r).
-        for (size_t k = 0; k < n; ++k) s[k] += d[k] * rest;
-        done = true;
-      }
-      if (done) active[j] = 0;
-      previous_ratio[j] = ratio;
-      previous_size[j] = size;
-    }
-    if (std::none_of(active.begin(), active.end(), [](char a) { return a != 0; })) break;
-    step([&](size_t j, uint32_t h) { return current[j * n + h]; }, next, active);
+  std::vector<Rgb> current(lights * n, Rgb(0.f)), next(lights * n, Rgb(0.f));
+  BounceSeriesSum series(lights, n, m_bounces, kMaxSteps);
+  step([&](size_t j, uint32_t h) { return Rgb(direct[j * n + h]); }, current, series.active());  // d₁ = T e₀
+  for (int steps = 1; series.add(steps, current); ++steps) {
+    step([&](size_t j, uint32_t h) { return current[j * n + h]; }, next, series.active());
     std::swap(current, next);
   }
-  return sum;
+  return std::move(series.sum());
 }
 
 void BounceSeries::gather(const GatherRows& points, const std::vector<Rgb>& point_albedo, size_t first, const std::vector<Rgb>& f,

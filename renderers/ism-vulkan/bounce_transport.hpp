@@ -65,9 +65,7 @@ public:
               size_t lights, Rgb* out, size_t stride) const;
 
   size_t sides() const { return 2 * m_albedo.size(); }
-  static constexpr int kMaxSteps = 1000;
-  static constexpr double kNegligible = 1e-5;  ///< a step this small of the sum ends the series
-  static constexpr double kSteadyRatio = 2e-3; ///< successive ratios this close: the geometric rest is added
+  static constexpr int kMaxSteps = 1000;  ///< "all" ends by then (the stopping rule: hilight/bounce_series.hpp)
 
 private:
   GatherRows m_transport;

@@ -36,7 +36,7 @@ test::RunResult run_session(const fs::path& scene, const fs::path& dir, const nl
 
 } // namespace
 
-TEST_CASE("painter ui: a focus on the void under a raised floor is refused; the room over it is focused and lit", "[painter-ui][focus][rooms]") {
+TEST_CASE("painter ui: a focus on the void under a raised floor is refused and the room over it is focused and lit", "[painter-ui][focus][rooms]") {
   if (test::skip_without_display()) return;
   test::CliOwnPlacement own;  // a closed interior: the building's rules
   const fs::path dir = test::output_dir("painter_ui_focus_void");

@@ -4,6 +4,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <optional>
 
 #include <stdexcept>
 #include <string>
@@ -203,6 +204,22 @@ float facet_tilt(const Vec3& face, const Vec3& n) {
   return sine >= 1e-4f ? sine : 0.f;
 }
 
+/// Where p lies on an edge of `tri` (within touch): the direction from that
+/// edge into the triangle, perpendicular to it; nullopt off every edge (the
+/// callers look at the corners first).
+std::optional<Vec3> into_from_edge(const Scene& scene, const std::array<uint32_t, 3>& tri, const Vec3& p, float touch) {
+  const auto& pos = scene.positions;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = pos[tri[k]], ab = pos[tri[(k + 1) % 3]] - a, ac = pos[tri[(k + 2) % 3]] - a;
+    const float length2 = glm::dot(ab, ab);
+    if (!(length2 > 0.f)) continue;
+    const float along = glm::dot(p - a, ab) / length2;
+    if (along < 0.f || along > 1.f || glm::length(a + along * ab - p) > touch) continue;
+    return ac - (glm::dot(ac, ab) / length2) * ab;
+  }
+  return std::nullopt;
+}
+
 /// The mean of the unit directions from p into triangle `tri` over its angle
 /// at p (∫ω dθ: 2 sin(α/2) along the bisector at a corner, 2 inward on an
 /// edge); sets `inside` when p is inside it (the whole disk).
@@ -216,15 +233,8 @@ Vec3 angle_mean(const Scene& scene, const std::array<uint32_t, 3>& tri, const Ve
       const Vec3 ub = to_b / lb, uc = to_c / lc, bisector = ub + uc;
       return glm::length(bisector) > 0.f ? glm::length(ub - uc) * glm::normalize(bisector) : Vec3(0.f);
     }
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 a = pos[tri[k]], ab = pos[tri[(k + 1) % 3]] - a, ac = pos[tri[(k + 2) % 3]] - a;
-    const float length2 = glm::dot(ab, ab);
-    if (!(length2 > 0.f)) continue;
-    const float along = glm::dot(p - a, ab) / length2;
-    if (along < 0.f || along > 1.f || glm::length(a + along * ab - p) > touch) continue;
-    const Vec3 inward = ac - (glm::dot(ac, ab) / length2) * ab;
-    return glm::length(inward) > 0.f ? 2.f * glm::normalize(inward) : Vec3(0.f);
-  }
+  if (const auto inward = into_from_edge(scene, tri, p, touch))
+    return glm::length(*inward) > 0.f ? 2.f * glm::normalize(*inward) : Vec3(0.f);
   float u, v;
   inside = inside || glm::length(closest_on_triangle(p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v) - p) <= touch;
   return Vec3(0.f);
@@ -304,14 +314,7 @@ bool points_into(const Scene& scene, const std::array<uint32_t, 3>& tri, const V
       const Vec3 e1 = pos[tri[(k + 1) % 3]] - p, e2 = pos[tri[(k + 2) % 3]] - p, wound = glm::cross(e1, e2);
       return glm::dot(glm::cross(e1, x), wound) >= 0.f && glm::dot(glm::cross(x, e2), wound) >= 0.f;
     }
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 a = pos[tri[k]], ab = pos[tri[(k + 1) % 3]] - a, ac = pos[tri[(k + 2) % 3]] - a;
-    const float length2 = glm::dot(ab, ab);
-    if (!(length2 > 0.f)) continue;
-    const float along = glm::dot(p - a, ab) / length2;
-    if (along < 0.f || along > 1.f || glm::length(a + along * ab - p) > touch) continue;
-    return glm::dot(x, ac - (glm::dot(ac, ab) / length2) * ab) >= 0.f;
-  }
+  if (const auto inward = into_from_edge(scene, tri, p, touch)) return glm::dot(x, *inward) >= 0.f;
   float u, v;
   return glm::length(closest_on_triangle(p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v) - p) <= touch;
 }

@@ -103,10 +103,13 @@ Target bind_target(const std::string& source, const std::vector<Vec3>& positions
       // for bit, as render shaded it: the same position and normal also key
       // the renderers' random streams. Its normal may stray from the one
       // interpolated here (a midpoint of midpoints is normalized at each
-      // step: 28° where an edge's normals nearly oppose), not by half a turn
-      // (the other sheet of a doubled one).
+      // step: 28° where an edge's normals nearly oppose), but not by 35° or
+      // more: a mesh painted in Blender brings its vertex normals averaged
+      // over a box's hard edge (45°, 55° at a corner), where the scene has
+      // one normal a face, and the other sheet of a doubled one is half a
+      // turn off.
       const float length = normals.empty() ? 0.f : glm::length(normals[i]);
-      if (hits[i].t <= rays.epsilon() && length > 0.f && glm::dot(normals[i] / length, nrm) > 0.5f) {
+      if (hits[i].t <= rays.epsilon() && length > 0.f && glm::dot(normals[i] / length, nrm) > 0.82f) {
         p = positions[i];
         nrm = std::abs(length - 1.f) < 1e-5f ? normals[i] : normals[i] / length;
       }

@@ -157,43 +157,27 @@ public:
 
   /// Derivative-free: a shadow edge sweeping over samples as a lamp moves
   /// is a kink that no finite difference sees (they leave those samples out).
-  /// A kink is one lamp's, so each light gets a simplex of its own with the
-  /// others held where they are (their direct light kept): an evaluation
-  /// traces one light, not all, and a simplex over one lamp's 3 (a spot's 7)
-  /// parameters closes in far fewer evaluations than one over every light's.
-  /// The slopes after it move the lights together again.
   void simplex() {
     if (m_settings.simplex_evaluations <= 0 || m_current.empty() || !(m_now.cost > 0.0)) return;
-    for (size_t s = 0; s < m_current.size() && m_now.cost > 0.0; ++s) simplex_of(s);
-  }
-
-private:
-  using Columns = std::vector<std::pair<size_t, int>>;  ///< (light, parameter)
-
-  /// Light s moved by a simplex, the others where they are.
-  void simplex_of(size_t s) {
-    const size_t m = m_samples.size();
-    Columns columns;
-    for (const auto& c : parameters())
-      if (c.first == s) columns.push_back(c);
+    const auto columns = parameters();
     std::vector<double> steps;
     for (const auto& c : columns) steps.push_back(m_settings.simplex_step * kFiniteStep[c.second]);
     const Lighting start = m_current;
     SimplexSettings settings;
     settings.max_evaluations = m_settings.simplex_evaluations;
     settings.x_tolerance = 1e-4;
-    std::vector<Rgb> direct = m_direct;
     const SimplexResult r = nelder_mead(
         [&](const std::vector<double>& v) {
-          Lighting one{at(start, columns, v.data())[s]};
-          if (!place(one)) return 1e300;
-          const std::vector<Rgb> own = direct_of(one);
-          std::copy(own.begin(), own.end(), direct.begin() + std::ptrdiff_t(s * m));
-          return m_model.evaluate(direct).cost;
+          Lighting l = at(start, columns, v.data());
+          if (!place(l)) return 1e300;
+          return m_model.evaluate(direct_of(l)).cost;
         },
         std::vector<double>(steps.size(), 0.0), steps, settings);
     try_move(at(start, columns, r.x.data()));
   }
+
+private:
+  using Columns = std::vector<std::pair<size_t, int>>;  ///< (light, parameter)
 
   /// What may move: a spot's every parameter, a point light's position.
   Columns parameters() const {

@@ -1,0 +1,85 @@
+#pragma once
+/// The sum of the light bounced again and again, f = d₁ + d₂ + …, and when it
+/// ends: one rule for every renderer that carries every bounce (Embree's
+/// vertex transport, ism-vulkan's bounce points; docs/rendering-model.md,
+/// "Every bounce"). Each light's series ends when a step is negligible
+/// against its sum (kNegligible, per channel), at the count asked for, or,
+/// for "all", once successive steps shrink by a steady ratio r
+/// (kSteadyRatio), with the geometric rest d_k·r/(1−r) added: a bright room
+/// converges as ρ^k, so ρ = 0.95 would take ~180 steps to 10⁻⁴ without it.
+#include "hilight/bounces.hpp"
+#include "hilight/math.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace hilight {
+
+class BounceSeriesSum {
+public:
+  static constexpr double kNegligible = 1e-5;   ///< a step this small of the sum ends the series
+  static constexpr double kSteadyRatio = 2e-3;  ///< ratios of successive steps this close: the geometric rest is added
+
+  /// `lights` series of `n` values each (light-major); `bounces`: the total
+  /// count (≥ 2) or kAllBounces, which stops by `most_steps` at the latest.
+  BounceSeriesSum(size_t lights, size_t n, int bounces, int most_steps)
+      : m_n(n), m_all(bounces == kAllBounces), m_last(m_all ? most_steps : bounces - 1), m_sum(lights * n, Rgb(0.f)),
+        m_active(lights, 1), m_previous_ratio(lights, {-1.0, -1.0, -1.0}), m_previous_size(lights) {}
+
+  /// Adds step `step` (d_step, counted from 1; light-major as the sums) to
+  /// each active light's sum and ends the series that are done. False once
+  /// none is active.
+  bool add(int step, const std::vector<Rgb>& current) {
+    for (size_t j = 0; j < m_active.size(); ++j) {
+      if (!m_active[j]) continue;
+      const Rgb* d = &current[j * m_n];
+      Rgb* s = &m_sum[j * m_n];
+      for (size_t k = 0; k < m_n; ++k) s[k] += d[k];
+      const auto size = channel_sums(d), total = channel_sums(s);
+      std::array<double, 3> ratio{-1.0, -1.0, -1.0};
+      bool negligible = true, steady = step >= 3;
+      Rgb rest(0.f);
+      for (int c = 0; c < 3; ++c) {
+        if (step > 1 && m_previous_size[j][c] > 0.0) ratio[c] = size[c] / m_previous_size[j][c];
+        if (size[c] <= kNegligible * total[c]) continue;  // this channel has converged
+        negligible = false;
+        steady = steady && ratio[c] > 0.0 && ratio[c] < 1.0 && std::abs(ratio[c] - m_previous_ratio[j][c]) <= kSteadyRatio;
+        if (steady) rest[c] = float(ratio[c] / (1.0 - ratio[c]));
+      }
+      bool done = negligible || step >= m_last;
+      if (m_all && !done && steady) {
+        // The geometric rest, per channel: d_k (r + r² + …) = d_k r/(1−r).
+        for (size_t k = 0; k < m_n; ++k) s[k] += d[k] * rest;
+        done = true;
+      }
+      if (done) m_active[j] = 0;
+      m_previous_ratio[j] = ratio;
+      m_previous_size[j] = size;
+    }
+    return std::any_of(m_active.begin(), m_active.end(), [](char a) { return a != 0; });
+  }
+
+  /// Per light, whether its series goes on (the next step is needed).
+  const std::vector<char>& active() const { return m_active; }
+  std::vector<Rgb>& sum() { return m_sum; }
+
+private:
+  /// Σ of a field per channel, in double (the convergence test).
+  std::array<double, 3> channel_sums(const Rgb* field) const {
+    std::array<double, 3> s{0.0, 0.0, 0.0};
+    for (size_t k = 0; k < m_n; ++k)
+      for (int c = 0; c < 3; ++c) s[c] += double(field[k][c]);
+    return s;
+  }
+
+  size_t m_n;
+  bool m_all;
+  int m_last;
+  std::vector<Rgb> m_sum;
+  std::vector<char> m_active;
+  std::vector<std::array<double, 3>> m_previous_ratio, m_previous_size;
+};
+
+} // namespace hilight
