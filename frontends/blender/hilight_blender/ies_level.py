@@ -37,10 +37,19 @@ def is_eulumdat(path):
     return os.path.splitext(path)[1].lower() == ".ldt"
 
 
+# Converted profiles by (file, its size and time, the hilight asked): a layout
+# of many luminaires of one product runs hilight once, not once a light.
+_converted = {}
+
+
 def ies_for_cycles(path, hilight):
     """The IES LM-63 text hilight writes for the profile at `path`, its C
     planes mirrored for Cycles."""
-    return mirrored(ies_written_by_hilight(path, hilight))
+    stat = os.stat(path)
+    key = (os.path.abspath(path), stat.st_size, stat.st_mtime_ns, hilight)
+    if key not in _converted:
+        _converted[key] = mirrored(ies_written_by_hilight(path, hilight))
+    return _converted[key]
 
 
 def ies_written_by_hilight(path, hilight):

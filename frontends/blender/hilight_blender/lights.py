@@ -86,6 +86,17 @@ def _hilight():
     return runner.executable(bpy.context)
 
 
+def _ies_text_block(name, text):
+    """The .blend's text block holding `text`: one a profile, shared by its
+    luminaires (Blender numbers a second block of the same name)."""
+    for block in bpy.data.texts:
+        if block.name.startswith(name) and block.as_string() == text:
+            return block
+    block = bpy.data.texts.new(name)
+    block.write(text)
+    return block
+
+
 def _ies_node(data, profile):
     """The profile's shape on the emission: Cycles' IES Fac over its peak
     (ies_level.py), so the light's Power sets the peak as hilight's
@@ -105,8 +116,7 @@ def _ies_node(data, profile):
             text = None
         if text is not None:
             peak = ies_level.cycles_peak_of_text(text, path)
-            internal = bpy.data.texts.new(os.path.basename(path) + ".ies")
-            internal.write(text)
+            internal = _ies_text_block(os.path.basename(path) + ".ies", text)
         else:
             peak = ies_level.cycles_peak(path)
     except (OSError, ValueError, subprocess.SubprocessError, scene_io.InputError) as e:  # NotIes is a ValueError
