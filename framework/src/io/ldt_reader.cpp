@@ -100,6 +100,7 @@ Photometry parse_ldt(const std::string& text, const std::string& source) {
   for (size_t i = 1; i < ng; ++i)
     if (!(p.vertical[i] > p.vertical[i - 1])) throw InputError(source, "gamma angles must increase");
   if (p.vertical.front() < 0 || p.vertical.back() > 180) throw InputError(source, "gamma angles must lie in 0-180");
+  if (c_angles.front() < 0 || c_angles.back() > 360) throw InputError(source, "C angles must lie in 0-360");
   // The planes stored: all (Isym 0), one (1), C0-C180 (2), C90-C270 (3), C0-C90 (4).
   std::vector<double> stored;
   for (double c : c_angles)
