@@ -118,6 +118,8 @@ TEST_CASE("bad photometry files are refused in one line naming the file, exit 2"
       {"no-flux.ldt", ldt(1, {0}, angles(0, 180, 90), {{1, 2, 3}}, 0)},
       // A C angle past a turn (the fuzzer's: planes at 510 and 870, read as if at 150 and 150).
       {"c-past-360.ldt", ldt(0, {510, 870}, angles(0, 180, 90), {{1, 2, 3}, {1, 2, 3}}, 1000)},
+      // Isym 2 (C0-C180 mirrored) with planes only from 0.5 to 5: nothing to mirror between 5 and 175.
+      {"half-planes.ldt", ldt(2, {0.5, 5}, angles(0, 180, 90), {{1, 2, 3}, {1, 2, 3}}, 1000)},
       {"wrong.txt", good}};
   for (const auto& [name, text] : cases) {
     INFO(name);

@@ -107,6 +107,15 @@ Photometry parse_ldt(const std::string& text, const std::string& source) {
     if (isym == 0 || (isym == 2 && c <= 180) || (isym == 3 && c >= 90 && c <= 270) || (isym == 4 && c <= 90)) stored.push_back(c);
   if (isym == 1) stored = {0.0};
   if (stored.empty()) throw InputError(source, "no C plane is stored for Isym " + std::to_string(isym));
+  // A symmetry's stored planes run its whole range (as an IES file's must):
+  // between a gap's edges there is nothing to mirror or interpolate.
+  const double from = isym == 3 ? 90.0 : 0.0, to = isym == 2 ? 180.0 : isym == 3 ? 270.0 : 90.0;
+  if (isym >= 2 && (stored.front() != from || stored.back() != to)) {
+    char message[160];
+    std::snprintf(message, sizeof(message), "Isym %d stores the C planes from %g to %g, but this file's run from %g to %g", int(isym), from, to,
+                  stored.front(), stored.back());
+    throw InputError(source, message);
+  }
   p.horizontal = stored;
   p.symmetry = isym == 1 ? Photometry::Symmetry::Rotational
                : isym == 2 ? Photometry::Symmetry::AboutC0C180
@@ -129,9 +138,9 @@ Photometry parse_ldt(const std::string& text, const std::string& source) {
     if (v < 0) throw InputError(source, "luminous intensity " + std::to_string(k + 1) + " is negative");
     p.candela[k] = v * scale;
     if (!(p.candela[k] <= kBrightestCandela)) {
-      char text[160];
-      std::snprintf(text, sizeof(text), "luminous intensity %zu comes to %.3g cd, beyond any luminaire (at most 1e10 cd)", k + 1, p.candela[k]);
-      throw InputError(source, text);
+      char message[160];
+      std::snprintf(message, sizeof(message), "luminous intensity %zu comes to %.3g cd, beyond any luminaire (at most 1e10 cd)", k + 1, p.candela[k]);
+      throw InputError(source, message);
     }
   }
   // Isym 0 planes cover a turn: close the circle for interpolation with the
