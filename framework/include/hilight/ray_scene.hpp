@@ -7,6 +7,8 @@
 #include "hilight/scene.hpp"
 
 #include <embree3/rtcore.h>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -45,6 +47,12 @@ struct ShadingPoint {
   /// into coplanar triangles, a tessellated one): its wedge is told from that
   /// plane alone, with no look-up.
   bool flat_fan = false;
+  /// The tilted facets of a smooth point's own fan (the only ones its wedge
+  /// test looks at), kept so that the test needs no look-up; a fan with more
+  /// than kKeptFan of them (a sphere's pole) is looked up (kFanLookedUp).
+  static constexpr uint8_t kKeptFan = 8, kFanLookedUp = 255;
+  uint8_t fan_size = kFanLookedUp;
+  std::array<uint32_t, kKeptFan> fan{};
 
   /// Where a ray toward unit `dir` starts, leaving on the side `side_normal` points to.
   Vec3 ray_start(const Vec3& dir, const Vec3& side_normal, float eps) const {
@@ -146,11 +154,12 @@ public:
   /// True when every triangle within `radius` of `p` is `own_triangle` or has
   /// a vertex at `p` (within radius/20) whose normal agrees with `normal`
   /// (cos ≥ 0.999): only the point's own smooth surface is near it. With
-  /// `tilt`, also the sine of the largest tilt of those own triangles
-  /// against the plane normal to `normal` (ShadingPoint::wedge), and with
-  /// `flat` whether they are one plane all around p (ShadingPoint::flat_fan).
+  /// `fan`, also what the point's wedge test needs of those own triangles:
+  /// the sine of their largest tilt against the plane normal to `normal`
+  /// (ShadingPoint::wedge), whether they are one plane all around p
+  /// (ShadingPoint::flat_fan) and the tilted ones (ShadingPoint::fan).
   bool only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius,
-                             float* tilt = nullptr, bool* flat = nullptr) const;
+                             ShadingPoint* fan = nullptr) const;
 
   RTCScene rtc_scene() const { return m_rtc_scene; }
 

@@ -251,9 +251,15 @@ struct OwnSurfaceQuery {
   bool coplanar = true;    ///< every own triangle in own_triangle's plane
   bool inside = false;     ///< p inside an own triangle
   Vec3 around{0.f};        ///< the own triangles' angle_mean: 0 where they go all around p
+  uint8_t tilted_count = 0;  ///< own triangles with a tilt (ShadingPoint::fan_size)
+  std::array<uint32_t, ShadingPoint::kKeptFan> tilted{};
   void own(uint32_t triangle) {
     const Vec3& face = (*face_normals)[triangle];
-    tilt = std::max(tilt, facet_tilt(face, normal));
+    const float t = facet_tilt(face, normal);
+    tilt = std::max(tilt, t);
+    if (t > 0.f && tilted_count != ShadingPoint::kFanLookedUp &&
+        std::find(tilted.begin(), tilted.begin() + tilted_count, triangle) == tilted.begin() + tilted_count)
+      tilted_count < ShadingPoint::kKeptFan ? void(tilted[tilted_count++] = triangle) : void(tilted_count = ShadingPoint::kFanLookedUp);
     coplanar = coplanar && glm::dot(face, (*face_normals)[own_triangle]) >= 1.f - 1e-6f;
     around += angle_mean(*scene, scene->triangles[triangle], p, same_position, inside);
   }
@@ -319,17 +325,22 @@ bool points_into(const Scene& scene, const std::array<uint32_t, 3>& tri, const V
   return glm::length(closest_on_triangle(p, pos[tri[0]], pos[tri[1]], pos[tri[2]], u, v) - p) <= touch;
 }
 
+/// Whether facet `triangle` of the fan blocks q's direction: it lies under
+/// dir and dir passes between it and the tangent plane.
+bool facet_blocks(const WedgeQuery& q, uint32_t triangle) {
+  const Vec3& face = (*q.face_normals)[triangle];
+  if (facet_tilt(face, q.n) == 0.f) return false;  // no wedge under this facet
+  const float facing = glm::dot(face, q.n);
+  // dir moved along n into the facet's plane: the facet under dir, if it holds that.
+  const Vec3 in_plane = q.dir - (glm::dot(face, q.dir) / facing) * q.n;
+  if (!points_into(*q.scene, q.scene->triangles[triangle], q.p, in_plane, q.same_position)) return false;
+  // On one side of the tangent plane and on the other of the facet (turned to agree with n).
+  return glm::dot(q.n, q.dir) * glm::dot(face, q.dir) * facing < 0.f;
+}
+
 bool wedge_callback(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<WedgeQuery*>(args->userPtr);
-  if (q->blocked) return false;
-  const Vec3& face = (*q->face_normals)[args->primID];
-  if (facet_tilt(face, q->n) == 0.f) return false;  // no wedge under this facet
-  const float facing = glm::dot(face, q->n);
-  // dir moved along n into the facet's plane: the facet under dir, if it holds that.
-  const Vec3 in_plane = q->dir - (glm::dot(face, q->dir) / facing) * q->n;
-  if (!points_into(*q->scene, q->scene->triangles[args->primID], q->p, in_plane, q->same_position)) return false;
-  // On one side of the tangent plane and on the other of the facet (turned to agree with n).
-  q->blocked = glm::dot(q->n, q->dir) * glm::dot(face, q->dir) * facing < 0.f;
+  q->blocked = q->blocked || facet_blocks(*q, args->primID);
   return false;
 }
 
@@ -451,11 +462,15 @@ Hit RayScene::closest_point(const Vec3& p, float max_distance, const Vec3& norma
 }
 
 bool RayScene::only_own_surface_near(const Vec3& p, const Vec3& normal, uint32_t own_triangle, float radius,
-                                     float* tilt, bool* flat) const {
+                                     ShadingPoint* fan) const {
   OwnSurfaceQuery q{&m_scene, &m_face_normals, p, normal, own_triangle, radius, radius / 20.f};
   query_triangles_near(m_rtc_scene, p, radius, own_surface_callback, &q);
-  if (tilt) *tilt = q.foreign ? 0.f : q.tilt;
-  if (flat) *flat = !q.foreign && q.flat();
+  if (fan && !q.foreign) {
+    fan->wedge = q.tilt > 0.f ? q.tilt * 1.001f : 0.f;  // (a hair over: in_own_wedge_slow decides)
+    fan->flat_fan = q.flat();
+    fan->fan_size = q.tilted_count;
+    fan->fan = q.tilted;
+  }
   return !q.foreign;
 }
 
@@ -481,10 +496,8 @@ ShadingPoint shading_point(const RayScene& rays, const Vec3& position, const Vec
   const Scene& scene = rays.scene();
   Hit h = rays.closest_point(position, 1e-3f * scene.diagonal(), normal);
   if (!h.valid()) return {position, false};
-  float tilt = 0.f;
-  bool flat = false;
-  if (rays.only_own_surface_near(position, normal, h.triangle, 2.f * rays.epsilon(), &tilt, &flat))
-    return {position, true, h.triangle, tilt > 0.f ? tilt * 1.001f : 0.f, flat};  // (a hair over: in_own_wedge_slow decides)
+  ShadingPoint smooth{position, true, h.triangle};
+  if (rays.only_own_surface_near(position, normal, h.triangle, 2.f * rays.epsilon(), &smooth)) return smooth;
   // Into the chosen triangle's face, away from the crease (or the touching
   // surface), a fixed step relative to the scene (RayScene::shading_step)
   // halved until the point is still on that face. All of it is the same on
@@ -524,6 +537,10 @@ bool in_own_wedge_slow(const RayScene& rays, const ShadingPoint& at, const Vec3&
   // The triangles that made the point smooth: within the same 2ε.
   const float radius = 2.f * rays.epsilon();
   WedgeQuery q{&rays.scene(), &rays.face_normals(), at.position, n, dir, radius, radius / 20.f};
+  if (at.fan_size != ShadingPoint::kFanLookedUp) {
+    for (uint8_t k = 0; k < at.fan_size && !q.blocked; ++k) q.blocked = facet_blocks(q, at.fan[k]);
+    return q.blocked;
+  }
   query_triangles_near(rays.rtc_scene(), at.position, radius, wedge_callback, &q);
   return q.blocked;
 }
