@@ -286,7 +286,9 @@ TEST_CASE("rotation and scale: with the bounce, real models turned at random and
   // intensities within 0.1%. Measured over seven random turns in metres:
   // the solve within 1.6·10⁻⁵ of the size of the lamps, fine-tune from 6–9
   // cm off the same, intensities within 0.01%; upright at ×1000 and ×0.001
-  // 1.4·10⁻⁵, as at ×1; this turn at ×1000: 1.5·10⁻⁵, fine-tune 1.6·10⁻⁵.
+  // 1.4·10⁻⁵, as at ×1; this turn at ×1000: 1.5·10⁻⁵, fine-tune 1.6·10⁻⁵
+  // (1.3·10⁻⁵ and 2.3·10⁻⁵ since the settling's simplex takes two lights at
+  // most, in 0.7 of the time).
   // Before the settling left the bounce's spikes out
   // (spot_proposals.cpp), the rounds stopped where a few samples' spikes
   // balanced the direct light: up to 1.2·10⁻⁴ (fine-tune 1.7·10⁻⁴); before
