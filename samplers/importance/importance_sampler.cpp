@@ -62,33 +62,46 @@ private:
     mean_square = std::max(1e-24, mean_square / double(n));
     std::vector<double> out(n);
     const float r2 = radius * radius;
-    // Each point reads the grid and writes only its own entry: parallel-safe
-    // and the same result whatever the thread count.
-    tbb::parallel_for(uint32_t(0), uint32_t(n), [&](uint32_t i) {
-      const Vec3& p = target.points.positions[i];
-      glm::ivec3 c = grid.coord(p);
-      double sum = 0;
-      int count = 0;
+    // Cell by cell: a cell's points share the 27 cells around them, gathered
+    // once into a flat list (in the order a point would visit them, so the
+    // sums are the same to the bit). Each cell writes only its own points'
+    // entries: parallel-safe and the same whatever the thread count.
+    std::vector<std::pair<glm::ivec3, const std::vector<uint32_t>*>> cells;
+    cells.reserve(grid.cells.size());
+    for (const auto& [key, members] : grid.cells) cells.emplace_back(grid.coord(target.points.positions[members.front()]), &members);
+    tbb::parallel_for(size_t(0), cells.size(), [&](size_t k) {
+      const glm::ivec3 c = cells[k].first;
+      std::vector<Vec3> near_position;
+      std::vector<float> near_luminance;
       for (int dx = -1; dx <= 1; ++dx)
         for (int dy = -1; dy <= 1; ++dy)
           for (int dz = -1; dz <= 1; ++dz) {
             auto it = grid.cells.find(PointGrid::key(c.x + dx, c.y + dy, c.z + dz));
             if (it == grid.cells.end()) continue;
             for (uint32_t j : it->second) {
-              Vec3 d = target.points.positions[j] - p;
-              if (glm::dot(d, d) <= r2) {
-                sum += luminance(target.value[j]);
-                ++count;
-              }
+              near_position.push_back(target.points.positions[j]);
+              near_luminance.push_back(luminance(target.value[j]));
             }
           }
-      double local = count ? sum / count : luminance(target.value[i]);
-      double lum = luminance(target.value[i]);
-      // Contrast relative to the scene's mean, so dark regions' edges count too.
-      double contrast = std::min(1.0, std::abs(lum - local) / (0.25 * mean_lum + 0.5 * local));
-      double shadow = lum < local ? std::min(1.0, (local - lum) / (local + 1e-12)) : 0.0;
-      double energy = std::min(16.0, lum * lum / mean_square);
-      out[i] = target.weight[i] * (1.0 + m_contrast_gain * contrast + m_shadow_gain * shadow + m_energy_gain * energy);
+      for (uint32_t i : *cells[k].second) {
+        const Vec3& p = target.points.positions[i];
+        double sum = 0;
+        int count = 0;
+        for (size_t q = 0; q < near_position.size(); ++q) {
+          const Vec3 d = near_position[q] - p;
+          if (glm::dot(d, d) <= r2) {
+            sum += near_luminance[q];
+            ++count;
+          }
+        }
+        double local = count ? sum / count : luminance(target.value[i]);
+        double lum = luminance(target.value[i]);
+        // Contrast relative to the scene's mean, so dark regions' edges count too.
+        double contrast = std::min(1.0, std::abs(lum - local) / (0.25 * mean_lum + 0.5 * local));
+        double shadow = lum < local ? std::min(1.0, (local - lum) / (local + 1e-12)) : 0.0;
+        double energy = std::min(16.0, lum * lum / mean_square);
+        out[i] = target.weight[i] * (1.0 + m_contrast_gain * contrast + m_shadow_gain * shadow + m_energy_gain * energy);
+      }
     });
     return out;
   }
