@@ -66,6 +66,9 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   }
   // The starting files are the session's first actions, so a recording replays from the same state.
   auto absolute = [](const std::filesystem::path& p) { return std::filesystem::absolute(p).lexically_normal().string(); };
+  // The units first: the files after them are read in them.
+  if (!m_options.recorded_before && (m_options.units != Units::Radiometric || m_options.quantity != TargetQuantity::Radiance))
+    record(UnitsAction{m_options.units, m_options.quantity});
   // (Loaded by the document directly: its errors name the file, not a script action.)
   if (!m_options.target.empty()) {
     m_document->load_target(m_options.target);

@@ -7,6 +7,7 @@
 #include "../support.hpp"
 #include "hilight/io/lights_json.hpp"
 #include "hilight/units.hpp"
+#include "core/session.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -29,7 +30,9 @@ fs::path downlight(const fs::path& dir) {
 
 /// Paints two floor patches of `brightness` (in the units given), solves with
 /// the downlight on the ceiling, saves dir/lights.json and dir/target.ply.
-test::RunResult paint_and_solve(const fs::path& dir, double brightness, const std::vector<std::string>& units) {
+/// With `record`, the session is recorded there.
+test::RunResult paint_and_solve(const fs::path& dir, double brightness, const std::vector<std::string>& units,
+                                const fs::path& record = {}) {
   const nlohmann::json actions = {
       {{"type", "brush"}, {"radius", 0.8}, {"colour", 1.0}, {"brightness", brightness}, {"hardness", 0.7}},
       {{"type", "stroke"}, {"world", {{2.0, 0.0, 3.5}}}},
@@ -39,8 +42,10 @@ test::RunResult paint_and_solve(const fs::path& dir, double brightness, const st
       {{"type", "save_target"}, {"path", (dir / "target.ply").string()}}};
   test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
   std::vector<std::string> args = {"paint", kRoom, "--luminaire", downlight(dir).string(), "--place", "ceiling:0.1", "--size", "480x360",
-                                   "--set", "bounce_samples=16", "--samples", "800", "--no-cache", "--no-record", "--exit", "--script",
+                                   "--set", "bounce_samples=16", "--samples", "800", "--no-cache", "--exit", "--script",
                                    (dir / "session.json").string()};
+  if (record.empty()) args.push_back("--no-record");
+  else args.insert(args.end(), {"--record", record.string()});
   args.insert(args.end(), units.begin(), units.end());
   return test::run_hilight(args);
 }
@@ -97,4 +102,50 @@ TEST_CASE("painter ui: with --target-quantity illuminance the brush paints lux, 
   REQUIRE(run.exit_code == 0);
   CHECK(brightest_luminance(dir / "target.ply") == Approx(300.0).epsilon(0.01));
   CHECK(cli_dbar(dir, units) < 0.15);
+}
+
+TEST_CASE("painter ui: a session started in lux records its units first, and its replay without them paints lux and writes candela",
+          "[painter-ui][painter-units][painter-session]") {
+  if (test::skip_without_display()) return;
+  const fs::path dir = test::output_dir("painter_ui_units_recorded");
+  const std::vector<std::string> units = {"--units", "photometric", "--target-quantity", "illuminance"};
+  const test::RunResult run = paint_and_solve(dir, 300.0, units, dir / "recorded.json");
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const nlohmann::json recorded = nlohmann::json::parse(test::read_file(dir / "recorded.json"));
+  REQUIRE_FALSE(recorded["actions"].empty());
+  CHECK(recorded["actions"][0] == nlohmann::json::parse(R"({"type": "units", "units": "photometric", "quantity": "illuminance"})"));
+  const nlohmann::json first = nlohmann::json::parse(test::read_file(dir / "lights.json"));
+  const std::vector<Rgb> first_target = test::ply_colours(dir / "target.ply");
+  fs::remove(dir / "lights.json");
+  fs::remove(dir / "target.ply");
+  // Replayed with none of the unit options: the script's own say what its numbers mean.
+  const test::RunResult replay = test::run_hilight({"paint", kRoom, "--luminaire", (dir / "down.ies").string(), "--place", "ceiling:0.1",
+                                                    "--size", "480x360", "--set", "bounce_samples=16", "--samples", "800", "--no-cache",
+                                                    "--no-record", "--exit", "--script", (dir / "recorded.json").string()});
+  INFO(replay.err);
+  REQUIRE(replay.exit_code == 0);
+  const nlohmann::json again = nlohmann::json::parse(test::read_file(dir / "lights.json"));
+  CHECK(again["intensity_unit"] == "cd");
+  REQUIRE(again["lights"].size() == first["lights"].size());
+  for (size_t j = 0; j < first["lights"].size(); ++j)
+    for (int k = 0; k < 3; ++k) {  // the same candela: a replay in W/sr would be 683 times less
+      CHECK(again["lights"][j]["intensity"][k].get<double>() == Approx(first["lights"][j]["intensity"][k].get<double>()).epsilon(1e-4));
+      CHECK(again["lights"][j]["position"][k].get<double>() == Approx(first["lights"][j]["position"][k].get<double>()).margin(1e-4));
+    }
+  const std::vector<Rgb> replayed_target = test::ply_colours(dir / "target.ply");
+  REQUIRE(replayed_target.size() == first_target.size());
+  size_t differ = 0;  // lux again, painted and written alike
+  for (size_t i = 0; i < first_target.size(); ++i) differ += std::abs(luminance(replayed_target[i]) - luminance(first_target[i])) > 1e-3;
+  CHECK(differ == 0);
+  CHECK(brightest_luminance(dir / "target.ply") == Approx(300.0).epsilon(0.01));
+}
+
+TEST_CASE("painter session: a units action with a bad unit or lux without photometric is refused, naming the script",
+          "[painter][painter-session][bad-input]") {
+  using hilight::painter::Action;
+  CHECK_THROWS_WITH(hilight::painter::validate_action(Action{"units", {{"units", "lumens"}}}, "s.json", 0),
+                    Catch::Contains("s.json: action 0: units: 'units' must be radiometric or photometric"));
+  CHECK_THROWS_WITH(hilight::painter::validate_action(Action{"units", {{"units", "radiometric"}, {"quantity", "illuminance"}}}, "s.json", 2),
+                    Catch::Contains("s.json: action 2: units: illuminance is in lux"));
 }

@@ -463,6 +463,20 @@ Spec schema_of<LoadLightsAction>() {
 LoadLightsAction read(const json& p, Is<LoadLightsAction>) { return {p["path"].get<std::string>()}; }
 json write(const LoadLightsAction& a) { return {{"path", a.path}}; }
 
+// UnitsAction
+template <>
+Spec schema_of<UnitsAction>() {
+  return {{{"units", Kind::String}, {"quantity", Kind::String}}, {"units"}, {}, {}, false};
+}
+UnitsAction read(const json& p, Is<UnitsAction>) {
+  return {parse_units(p["units"].get<std::string>()),
+          p.contains("quantity") ? parse_target_quantity(p["quantity"].get<std::string>()) : TargetQuantity::Radiance};
+}
+json write(const UnitsAction& a) {
+  return {{"units", a.units == Units::Photometric ? "photometric" : "radiometric"},
+          {"quantity", a.quantity == TargetQuantity::Illuminance ? "illuminance" : "luminance"}};
+}
+
 // ScreenshotAction
 template <>
 Spec schema_of<ScreenshotAction>() {
@@ -638,6 +652,14 @@ void validate_action(const Action& action, const std::string& source, size_t ind
   if (action.type == "brush" && action.params.contains("meaning")) {
     const std::string meaning = action.params["meaning"].get<std::string>();
     if (!paint_meaning_from_string(meaning)) fail("brush: 'meaning' must be lamp or reflected, not '" + meaning + "'");
+  }
+  if (action.type == "units") {
+    const std::string units = action.params["units"].get<std::string>();
+    const std::string quantity = action.params.value("quantity", std::string("luminance"));
+    if (units != "radiometric" && units != "photometric") fail("units: 'units' must be radiometric or photometric, not '" + units + "'");
+    if (quantity != "luminance" && quantity != "radiance" && quantity != "illuminance")
+      fail("units: 'quantity' must be luminance (radiance) or illuminance, not '" + quantity + "'");
+    if (quantity == "illuminance" && units != "photometric") fail("units: illuminance is in lux: it needs 'units': 'photometric'");
   }
   if (action.type == "view") {
     const std::string show = action.params["show"].get<std::string>();

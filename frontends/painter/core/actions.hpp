@@ -7,6 +7,7 @@
 /// these.
 #include "core/session.hpp"
 #include "hilight/math.hpp"
+#include "hilight/units.hpp"
 
 #include <optional>
 #include <string>
@@ -176,12 +177,21 @@ struct OpenSceneAction {
   std::string path;
 };
 
+/// What painted values and lights files mean (`--units`,
+/// `--target-quantity`): a session started with others than the defaults
+/// records them first, so that its replay paints, reads and writes the same.
+struct UnitsAction {
+  static constexpr const char* kType = "units";
+  Units units = Units::Radiometric;
+  TargetQuantity quantity = TargetQuantity::Radiance;
+};
+
 /// Every action type, in the order docs/painter.md lists them.
 using TypedAction =
     std::variant<CameraAction, ToolAction, ViewAction, SectionAction, CutawayAction, PlanAction, FocusAction, WalkAction, BrushAction, StrokeAction, EraseAction, ShadowAction, EraseShadowAction,
                  SpotRegionAction, AdjustRegionAction, SolveAction, FineTuneAction, AddLightsAction, CutAction, PlaceAction,
                  UndoAction, RedoAction, SaveTargetAction, SaveLightsAction, LoadTargetAction, LoadLightsAction, ScreenshotAction,
-                 OpenSceneAction>;
+                 OpenSceneAction, UnitsAction>;
 
 /// The typed form of a valid action (validate_action first: it assumes the schema holds).
 TypedAction typed(const Action& action);

@@ -439,6 +439,7 @@ void SessionPlayer::run(const RedoAction&, const Action&, const std::string&) { 
 void SessionPlayer::run(const SaveTargetAction& a, const Action&, const std::string&) { m_document.save_target(resolve(a.path)); }
 void SessionPlayer::run(const LoadTargetAction& a, const Action&, const std::string&) { m_document.load_target(resolve(a.path)); }
 void SessionPlayer::run(const LoadLightsAction& a, const Action&, const std::string&) { m_document.load_lights(resolve(a.path)); }
+void SessionPlayer::run(const UnitsAction& a, const Action&, const std::string&) { m_document.set_units(a.units, a.quantity); }
 
 void SessionPlayer::run(const SaveLightsAction& a, const Action&, const std::string& where) {
   // The lights are about to change under them (a replay, which waits for
