@@ -41,7 +41,8 @@ const std::map<std::string, std::string>& examples() {
       {"load_target", R"({"path": "t.glb"})"},
       {"load_lights", R"({"path": "l.gltf"})"},
       {"screenshot", R"({"path": "s.png"})"},
-      {"open_scene", R"({"path": "room.obj"})"}};
+      {"open_scene", R"({"path": "room.obj"})"},
+      {"units", R"({"units": "photometric", "quantity": "illuminance"})"}};
   return table;
 }
 
