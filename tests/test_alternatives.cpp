@@ -108,16 +108,22 @@ TEST_CASE("alternatives: the list is data, from the settings", "[alternatives]")
   CHECK(names(answer_alternatives(lum)) == std::vector<std::string>{"open space"});  // one turn: nothing to try
 }
 
-TEST_CASE("alternatives: a fitting answer logs only the spot search's skip", "[alternatives]") {
+TEST_CASE("alternatives: a fitting answer logs each alternative's skip with its reason", "[alternatives]") {
   ScriptedContext ctx;
   const Answer kept = run_alternatives(answer_alternatives(ctx.settings_), ctx, first_answer(4, 0.004));
-  REQUIRE(kept.report.stages.size() == 2);
+  REQUIRE(kept.report.stages.size() == 3);  // the first solve, then a line for each alternative skipped
+  const StageRecord& open = kept.report.stages[1];
+  CHECK(open.name == "open space");
+  CHECK(open.skipped == "the lights inside fit (D̄ at most open_space_dbar)");
   const StageRecord& skip = kept.report.stages.back();
   CHECK(skip.name == "spot search");
   CHECK(skip.skipped == "the point lights fit (D̄ at most kSpotDbar)");
-  CHECK(skip.target);
-  CHECK_FALSE(skip.kept);
-  CHECK(skip.dbar_before == 0.004);
+  for (const StageRecord& s : {open, skip}) {
+    CHECK(s.target);
+    CHECK_FALSE(s.kept);
+    CHECK(s.dbar_before == 0.004);
+    CHECK(s.dbar_after == 0.004);
+  }
   CHECK(kept.lights.size() == 4);
   CHECK(ctx.said.empty());  // nothing solved again
 }
@@ -154,14 +160,18 @@ TEST_CASE("alternatives: a near tie stays inside, the space closed again, what t
   CHECK(kept.report.stages[2].dbar_after == ctx.points_open.dbar);
 }
 
-TEST_CASE("alternatives: no open side, or a fitting answer, and the open space is not tried nor logged", "[alternatives]") {
+TEST_CASE("alternatives: no open side, or a fitting answer, and the open space is not tried, its skip logged with the reason",
+          "[alternatives]") {
   ScriptedContext ctx;
   ctx.has_open_sides = false;
   Answer kept = run_alternatives({open_space_alternative()}, ctx, first_answer(3, 0.30));
-  CHECK(kept.report.stages.size() == 1);
+  REQUIRE(kept.report.stages.size() == 2);
+  CHECK(kept.report.stages[1].skipped == "the space is open already, or the scene has no open side");
   ctx.has_open_sides = true;
   kept = run_alternatives({open_space_alternative()}, ctx, first_answer(3, ctx.settings_.open_space_dbar));
-  CHECK(kept.report.stages.size() == 1);
+  REQUIRE(kept.report.stages.size() == 2);
+  CHECK(kept.report.stages[1].skipped == "the lights inside fit (D̄ at most open_space_dbar)");
+  CHECK_FALSE(kept.report.stages[1].kept);
   CHECK(ctx.said.empty());
 }
 
@@ -211,7 +221,9 @@ TEST_CASE("alternatives: the luminaire's turns each compete with the best so far
     ScriptedContext fits;
     fits.settings_.luminaire = luminaire;
     const Answer same = run_alternatives(answer_alternatives(fits.settings_), fits, first_answer(2, Judge::kTurnDbar));
-    CHECK(same.report.stages.size() == 1);
+    REQUIRE(same.report.stages.size() == 3);  // the first solve, the turns' skip, the open space's skip
+    CHECK(same.report.stages[1].name == "luminaire turns");
+    CHECK(same.report.stages[1].skipped == "the template's turn fits (D̄ at most kTurnDbar)");
     CHECK(fits.turns.empty());
   }
 }

@@ -26,8 +26,7 @@ SolveReport candidate_report(const SolveReport& answer) {
 Answer run_alternatives(const Alternatives& alternatives, AlternativeContext& ctx, Answer answer) {
   for (const auto& alternative : alternatives) {
     if (std::string why = alternative->premise_fails(ctx, answer); !why.empty()) {
-      if (alternative->logs_skip())
-        answer.report.stages.push_back({alternative->name(), 0, answer.report.dbar, answer.report.dbar, true, false, std::move(why)});
+      answer.report.stages.push_back({alternative->name(), 0, answer.report.dbar, answer.report.dbar, true, false, std::move(why)});
       continue;
     }
     const std::vector<std::string> names = alternative->candidates();

@@ -59,11 +59,9 @@ public:
   /// Its name in the report's stages (a skipped alternative's line).
   virtual std::string name() const = 0;
   /// Why it need not be tried on the answer so far (empty: it is tried).
+  /// The reason is a line of the report's stages ("spot search: the point
+  /// lights fit"), so a report says of every alternative what became of it.
   virtual std::string premise_fails(const AlternativeContext& ctx, const Answer& current) const = 0;
-  /// Whether a failed premise is a line of the report's stages ("spot
-  /// search: the point lights fit"); false where the report has never
-  /// listed it (a closed room that fits needs no line about the open space).
-  virtual bool logs_skip() const { return true; }
   /// The stage names of the candidates it tries, in order: one by default
   /// (the luminaire's turns: one per spin its profile tells apart). Each
   /// competes with the best answer so far.

@@ -23,7 +23,6 @@ public:
   std::string premise_fails(const AlternativeContext& ctx, const Answer& current) const override {
     return ctx.judge().try_turns(current.report.dbar) ? "" : "the template's turn fits (D̄ at most kTurnDbar)";
   }
-  bool logs_skip() const override { return false; }
   std::vector<std::string> candidates() const override {
     std::vector<std::string> names;
     for (float spin : m_spins) names.push_back("luminaire turned " + std::to_string(int(spin)) + "°");

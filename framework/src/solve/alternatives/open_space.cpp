@@ -17,7 +17,6 @@ public:
     if (!ctx.can_open_space()) return "the space is open already, or the scene has no open side";
     return {};
   }
-  bool logs_skip() const override { return false; }
   Lighting propose(AlternativeContext& ctx, const Answer&, size_t, SolveReport& report) override {
     ctx.stage("looking beyond the scene's bounds");
     ctx.open_space(true);
