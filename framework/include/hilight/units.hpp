@@ -22,6 +22,8 @@ enum class Units { Radiometric, Photometric };
 
 /// "radiometric" / "photometric"; InputError otherwise.
 Units parse_units(const std::string& name);
+/// The name parse_units reads back.
+const char* units_name(Units units);
 
 /// Lights given in `units` → hilight's (W/sr), and back.
 Lighting lights_from_units(Lighting lights, Units units);
@@ -36,6 +38,8 @@ enum class TargetQuantity {
   Illuminance,  ///< lux on the surface (photometric only): converted with each point's albedo
 };
 TargetQuantity parse_target_quantity(const std::string& name);
+/// The name parse_target_quantity reads back ("luminance" for radiance).
+const char* target_quantity_name(TargetQuantity quantity);
 
 /// Converts a target read in `units`/`quantity` to hilight's radiance, in place.
 void target_from_units(Target& target, Units units, TargetQuantity quantity);

@@ -257,11 +257,18 @@ struct OwnSurfaceQuery {
     const Vec3& face = (*face_normals)[triangle];
     const float t = facet_tilt(face, normal);
     tilt = std::max(tilt, t);
-    if (t > 0.f && tilted_count != ShadingPoint::kFanLookedUp &&
-        std::find(tilted.begin(), tilted.begin() + tilted_count, triangle) == tilted.begin() + tilted_count)
-      tilted_count < ShadingPoint::kKeptFan ? void(tilted[tilted_count++] = triangle) : void(tilted_count = ShadingPoint::kFanLookedUp);
+    if (t > 0.f) keep_tilted(triangle);
     coplanar = coplanar && glm::dot(face, (*face_normals)[own_triangle]) >= 1.f - 1e-6f;
     around += angle_mean(*scene, scene->triangles[triangle], p, same_position, inside);
+  }
+  /// Keeps a tilted own triangle for the wedge test, once (a BVH may list a
+  /// triangle twice); past kKeptFan of them the fan is looked up instead.
+  void keep_tilted(uint32_t triangle) {
+    if (tilted_count == ShadingPoint::kFanLookedUp) return;
+    const auto kept = tilted.begin() + tilted_count;
+    if (std::find(tilted.begin(), kept, triangle) != kept) return;
+    if (tilted_count == ShadingPoint::kKeptFan) tilted_count = ShadingPoint::kFanLookedUp;
+    else tilted[tilted_count++] = triangle;
   }
   /// One plane all around p: its wedge needs no look-up (ShadingPoint::flat_fan).
   bool flat() const { return coplanar && (inside || glm::length(around) < 0.05f); }

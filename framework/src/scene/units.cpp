@@ -13,6 +13,12 @@ Units parse_units(const std::string& name) {
   throw InputError("--units must be radiometric or photometric, not '" + name + "'");
 }
 
+const char* units_name(Units units) { return units == Units::Photometric ? "photometric" : "radiometric"; }
+
+const char* target_quantity_name(TargetQuantity quantity) {
+  return quantity == TargetQuantity::Illuminance ? "illuminance" : "luminance";
+}
+
 TargetQuantity parse_target_quantity(const std::string& name) {
   if (name == "radiance" || name == "luminance") return TargetQuantity::Radiance;
   if (name == "illuminance") return TargetQuantity::Illuminance;

@@ -55,11 +55,12 @@ constexpr int kSettlePatience = 3;
 /// dimensions (7 a spot, 3 a point light) outgrow what
 /// kSettleSimplexEvaluations can search (measured on the curved models:
 /// every run over 13 or 17 dimensions used all its evaluations, those over
-/// 10 converged) while each evaluation renders every light. The home's four lamps and a downlight settled in 23 s with it, 5 s
-/// without, as well (D̄ over the whole target 1.52% with, 1.37% without);
-/// the curved models' three-light trial (wide_spots_as_points) took the
-/// solve from 40 to 56 s, for lamps within 1.3·10⁻⁵ of the size instead of
-/// 1.5·10⁻⁵ (the answer's own settling, two lights, keeps its simplex).
+/// 10 converged) while each evaluation renders every light. The home's four
+/// lamps and a downlight settled in 23 s with it, 5 s without, as well (D̄
+/// over the whole target 1.52% with, 1.37% without); the curved models'
+/// three-light trial (wide_spots_as_points) made their solve 56 s with it,
+/// 40 s without, for lamps within 1.5·10⁻⁵ and 1.3·10⁻⁵ of the size (the
+/// answer's own settling, two lights, keeps its simplex).
 constexpr size_t kSimplexMaxLights = 2;
 /// A candidate beside the spots found so far: it may light less than the
 /// target (lamps not yet found will add) but over-lighting counts 100

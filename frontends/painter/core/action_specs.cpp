@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 namespace hilight::painter {
@@ -472,10 +473,7 @@ UnitsAction read(const json& p, Is<UnitsAction>) {
   return {parse_units(p["units"].get<std::string>()),
           p.contains("quantity") ? parse_target_quantity(p["quantity"].get<std::string>()) : TargetQuantity::Radiance};
 }
-json write(const UnitsAction& a) {
-  return {{"units", a.units == Units::Photometric ? "photometric" : "radiometric"},
-          {"quantity", a.quantity == TargetQuantity::Illuminance ? "illuminance" : "luminance"}};
-}
+json write(const UnitsAction& a) { return {{"units", units_name(a.units)}, {"quantity", target_quantity_name(a.quantity)}}; }
 
 // ScreenshotAction
 template <>
@@ -653,13 +651,16 @@ void validate_action(const Action& action, const std::string& source, size_t ind
     const std::string meaning = action.params["meaning"].get<std::string>();
     if (!paint_meaning_from_string(meaning)) fail("brush: 'meaning' must be lamp or reflected, not '" + meaning + "'");
   }
-  if (action.type == "units") {
+  if (action.type == "units") {  // the names the CLI's --units and --target-quantity read (hilight/units.hpp)
     const std::string units = action.params["units"].get<std::string>();
-    const std::string quantity = action.params.value("quantity", std::string("luminance"));
-    if (units != "radiometric" && units != "photometric") fail("units: 'units' must be radiometric or photometric, not '" + units + "'");
-    if (quantity != "luminance" && quantity != "radiance" && quantity != "illuminance")
-      fail("units: 'quantity' must be luminance (radiance) or illuminance, not '" + quantity + "'");
-    if (quantity == "illuminance" && units != "photometric") fail("units: illuminance is in lux: it needs 'units': 'photometric'");
+    const std::string quantity = action.params.value("quantity", std::string(target_quantity_name(TargetQuantity::Radiance)));
+    std::optional<Units> u;
+    std::optional<TargetQuantity> q;
+    try { u = parse_units(units); } catch (const InputError&) {}
+    try { q = parse_target_quantity(quantity); } catch (const InputError&) {}
+    if (!u) fail("units: 'units' must be radiometric or photometric, not '" + units + "'");
+    if (!q) fail("units: 'quantity' must be luminance (radiance) or illuminance, not '" + quantity + "'");
+    if (*q == TargetQuantity::Illuminance && *u != Units::Photometric) fail("units: illuminance is in lux: it needs 'units': 'photometric'");
   }
   if (action.type == "view") {
     const std::string show = action.params["show"].get<std::string>();
