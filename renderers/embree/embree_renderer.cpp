@@ -224,13 +224,19 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
   }
   std::vector<const HotSpots*> hot_of(l_count, nullptr);
   for (size_t j = 0; j < hot.size(); ++j) hot_of[j] = &hot[j];
-  tbb::combinable<std::vector<Rgb>> indirect_buffer;
+  tbb::combinable<std::vector<Rgb>> indirect_buffer, further_buffer;
   constexpr size_t kChunk = 32;  // points whose bounce is gathered before the lights' loop
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), grain), [&](const tbb::blocked_range<size_t>& range) {
     uint64_t& local_rays = rays.local();
     std::vector<Rgb>& indirect = indirect_buffer.local();
+    std::vector<Rgb>& further = further_buffer.local();  // the light bounced twice or more, per point and light
     for (size_t begin = range.begin(); begin < range.end(); begin += kChunk) {
       const size_t end = std::min(range.end(), begin + kChunk);
+      if (!bounced.empty()) {
+        further.resize((end - begin) * l_count);
+        for (size_t i = begin; i != end; ++i)
+          gather->field_irradiance(i, BounceGather::kBothSides, bounced.data(), l_count, &further[(i - begin) * l_count]);
+      }
       if (interpolated) {
         indirect.resize((end - begin) * l_count);
         for (size_t i = begin; i != end; ++i)
@@ -259,7 +265,7 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
               e += gather->unit_indirect_irradiance(i, light, h, at.position, local_rays);
               if (h) e += h->irradiance(*m_embree, at, n, local_rays);
             }
-            if (!bounced.empty()) e += gather->field_irradiance(i, BounceGather::kBothSides, &bounced[j * 2 * v_count]);
+            if (!bounced.empty()) e += further[(i - begin) * l_count + j];
           }
           visit(i, j, points.albedo[i] * float(1.0 / kPi) * e);
         }
@@ -311,15 +317,18 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
     tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
     CallProgress::Phase phase(&progress, "bounce light at the vertices", double(vertices.size()), vertex_rays);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, vertices.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i != r.end(); ++i)
+      std::vector<Rgb> further(bounced.empty() ? 0 : prepared.size());  // the light bounced twice or more, per light
+      for (size_t i = r.begin(); i != r.end(); ++i) {
+        if (!bounced.empty()) gather.field_irradiance(i, BounceGather::kBothSides, bounced.data(), prepared.size(), further.data());
         for (size_t j = 0; j < prepared.size(); ++j) {
           const HotSpots* h = hot.empty() ? nullptr : &hot[j];
           const ShadingPoint& at = m_vertex_shading[i];
           Rgb e = gather.unit_indirect_irradiance(i, prepared[j], h, at.position, rays.local());
           if (h) e += h->irradiance(*m_embree, at, scene.normals[i], rays.local());
-          if (!bounced.empty()) e += gather.field_irradiance(i, BounceGather::kBothSides, &bounced[j * 2 * vertices.size()]);
+          if (!bounced.empty()) e += further[j];
           vertex_indirect[i] += prepared[j].intensity * e;
         }
+      }
       phase.advance(double(r.size()));
     });
     m_rays += rays.combine(std::plus<uint64_t>());

@@ -155,12 +155,14 @@ void BounceGather::interpolated_indirect_irradiance(size_t i, const float* verte
   for (size_t j = 0; j < lights; ++j) out[j] = Rgb(r[j], g[j], b[j]) * scale;
 }
 
-Rgb BounceGather::field_irradiance(size_t i, int side, const Rgb* field) const {
-  Rgb sum(0.f);
+void BounceGather::field_irradiance(size_t i, int side, const Rgb* field, size_t lights, Rgb* out) const {
+  std::fill(out, out + lights, Rgb(0.f));
   for_each_hit(i, side, [&](const Rgb& albedo, const uint32_t* entry, const float* weight) {
-    sum += albedo * (weight[0] * field[entry[0]] + weight[1] * field[entry[1]] + weight[2] * field[entry[2]]);
+    const Rgb *a = field + entry[0] * lights, *b = field + entry[1] * lights, *c = field + entry[2] * lights;
+    for (size_t j = 0; j < lights; ++j) out[j] += albedo * (weight[0] * a[j] + weight[1] * b[j] + weight[2] * c[j]);
   });
-  return sum * (2.f / float(m_samples));
+  const float scale = 2.f / float(m_samples);
+  for (size_t j = 0; j < lights; ++j) out[j] = out[j] * scale;
 }
 
 } // namespace hilight::embree

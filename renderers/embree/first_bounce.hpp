@@ -60,13 +60,15 @@ public:
   void interpolated_indirect_irradiance(size_t i, const float* vertex_direct, size_t stride, size_t lights,
                                         const HotSpots* const* hot, const uint8_t* lit, size_t lit_stride, const Vec3& x,
                                         Rgb* out) const;
-  /// Irradiance at point i gathered from a field of irradiance given per
-  /// (vertex, side) as vertex_sides_read() indexes it, interpolated across
-  /// each hit triangle: (2/N) Σ ρ(y) F(y), over hemisphere `side` (0: the
-  /// point's normal side, 1: the other; kBothSides: the whole sphere). The
-  /// further bounces read the light already bounced from this (multi_bounce.hpp).
+  /// Irradiance at point i gathered from `lights` fields of irradiance given
+  /// per (vertex, side) as vertex_sides_read() indexes it, interpolated across
+  /// each hit triangle: (2/N) Σ ρ(y) F_j(y), over hemisphere `side` (0: the
+  /// point's normal side, 1: the other; kBothSides: the whole sphere), into
+  /// out[j]. Entry-major (MultiBounce's layout): the lights' values at vertex
+  /// side e from field[e · lights], so one walk over the hits serves all.
+  /// The further bounces read the light already bounced from this (multi_bounce.hpp).
   static constexpr int kBothSides = 2;
-  Rgb field_irradiance(size_t i, int side, const Rgb* field) const;
+  void field_irradiance(size_t i, int side, const Rgb* field, size_t lights, Rgb* out) const;
   /// Visits each valid hit of point i's hemisphere `side` (as above) with the
   /// hit triangle's albedo, its three field entries and their barycentric
   /// weights: visit(albedo, const uint32_t entry[3], const float weight[3]).

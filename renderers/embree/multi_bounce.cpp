@@ -23,38 +23,42 @@ MultiBounce::MultiBounce(const RayScene& es, const std::vector<ShadingPoint>& ve
 }
 
 std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, size_t light_count, ProgressStage* progress) const {
-  const size_t v_count = m_es.scene().positions.size(), n = 2 * v_count;
+  const size_t v_count = m_es.scene().positions.size(), n = 2 * v_count, lights = light_count;
   const float scale = 2.f / float(m_gather.samples());
-  // One step for every light: out_j(v, s) = (2/N) Σ ρ(y) in_j(y) over v's hemisphere s.
-  auto step = [&](auto&& read, std::vector<Rgb>& out, const std::vector<char>& active) {
+  // Entry-major fields: a hit reads the lights' values at a vertex side
+  // together (light-major, each light was a cache miss of its own).
+  // One step for every light: out_j(v, s) = (2/N) Σ ρ(y) in_j(y) over v's
+  // hemisphere s; `value` interpolates the hit's light from its vertices.
+  auto step = [&](const auto* in, auto&& value, std::vector<Rgb>& out, const std::vector<char>& active) {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, v_count, 256), [&](const tbb::blocked_range<size_t>& r) {
-      std::vector<Rgb> acc(light_count);
+      std::vector<Rgb> acc(lights);
       for (size_t v = r.begin(); v != r.end(); ++v)
         for (int side = 0; side < 2; ++side) {
           std::fill(acc.begin(), acc.end(), Rgb(0.f));
           m_gather.for_each_hit(v, side, [&](const Rgb& albedo, const uint32_t* entry, const float* weight) {
-            for (size_t j = 0; j < light_count; ++j)
-              if (active[j]) acc[j] += albedo * read(j, entry, weight);
+            const auto *a = in + entry[0] * lights, *b = in + entry[1] * lights, *c = in + entry[2] * lights;
+            for (size_t j = 0; j < lights; ++j)
+              if (active[j]) acc[j] += albedo * value(weight, a[j], b[j], c[j]);
           });
-          for (size_t j = 0; j < light_count; ++j)
-            if (active[j]) out[j * n + 2 * v + side] = acc[j] * scale;
+          Rgb* o = &out[(2 * v + side) * lights];
+          for (size_t j = 0; j < lights; ++j)
+            if (active[j]) o[j] = acc[j] * scale;
         }
     });
   };
-  std::vector<Rgb> current(light_count * n, Rgb(0.f)), next(light_count * n, Rgb(0.f));
-  BounceSeriesSum series(light_count, n, m_bounces, kMaxSteps);
+  std::vector<float> direct_by_entry(direct.size());
+  for (size_t j = 0; j < lights; ++j)
+    for (size_t e = 0; e < n; ++e) direct_by_entry[e * lights + j] = direct[j * n + e];
+  std::vector<Rgb> current(lights * n, Rgb(0.f)), next(lights * n, Rgb(0.f));
+  BounceSeriesSum series(lights, n, m_bounces, kMaxSteps, BounceSeriesSum::Layout::EntryMajor);
   // d₁ = T e₀ from the scalar direct light.
-  step([&](size_t j, const uint32_t* e, const float* w) {
-         const float* d = &direct[j * n];
-         return Rgb(w[0] * d[e[0]] + w[1] * d[e[1]] + w[2] * d[e[2]]);
-       },
-       current, series.active());
+  step(direct_by_entry.data(),
+       [](const float* w, float a, float b, float c) { return Rgb(w[0] * a + w[1] * b + w[2] * c); }, current,
+       series.active());
+  std::vector<float>().swap(direct_by_entry);
   if (progress) progress->advance();
   for (int steps = 1; series.add(steps, current); ++steps) {
-    step([&](size_t j, const uint32_t* e, const float* w) {
-           const Rgb* d = &current[j * n];
-           return w[0] * d[e[0]] + w[1] * d[e[1]] + w[2] * d[e[2]];
-         },
+    step(current.data(), [](const float* w, const Rgb& a, const Rgb& b, const Rgb& c) { return w[0] * a + w[1] * b + w[2] * c; },
          next, series.active());
     if (progress) progress->advance();
     std::swap(current, next);

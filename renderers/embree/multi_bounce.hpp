@@ -35,7 +35,9 @@ public:
 
   /// f for each light: `direct` holds e₀ per light (2 values a vertex, light-
   /// major, as EmbreeRenderer::vertex_direct_irradiance lays them out); the
-  /// result holds, per light, 2 RGB values a vertex.
+  /// result holds 2 RGB values a vertex for each light, entry-major: the
+  /// lights' values at (vertex v, side s) from [(2v + s) · light_count]
+  /// (BounceGather::field_irradiance reads them so).
   /// `progress`: advanced by one per step (expected_steps() of them, about).
   std::vector<Rgb> bounced_field(const std::vector<float>& direct, size_t light_count, ProgressStage* progress = nullptr) const;
   /// About how many steps bounced_field takes (for progress; "all" usually

@@ -22,42 +22,68 @@ public:
   static constexpr double kNegligible = 1e-5;   ///< a step this small of the sum ends the series
   static constexpr double kSteadyRatio = 2e-3;  ///< ratios of successive steps this close: the geometric rest is added
 
-  /// `lights` series of `n` values each (light-major); `bounces`: the total
-  /// count (≥ 2) or kAllBounces, which stops by `most_steps` at the latest.
-  BounceSeriesSum(size_t lights, size_t n, int bounces, int most_steps)
-      : m_n(n), m_all(bounces == kAllBounces), m_last(m_all ? most_steps : bounces - 1), m_sum(lights * n, Rgb(0.f)),
-        m_active(lights, 1), m_previous_ratio(lights, {-1.0, -1.0, -1.0}), m_previous_size(lights) {}
+  /// How a step's values lie: a light's n values together, or the lights'
+  /// values of one entry together (what a walk over entries reads best).
+  enum class Layout { LightMajor, EntryMajor };
 
-  /// Adds step `step` (d_step, counted from 1; light-major as the sums) to
-  /// each active light's sum and ends the series that are done. False once
-  /// none is active.
+  /// `lights` series of `n` values each; `bounces`: the total count (≥ 2)
+  /// or kAllBounces, which stops by `most_steps` at the latest.
+  BounceSeriesSum(size_t lights, size_t n, int bounces, int most_steps, Layout layout = Layout::LightMajor)
+      : m_n(n), m_lights(lights), m_all(bounces == kAllBounces), m_last(m_all ? most_steps : bounces - 1),
+        m_entry_stride(layout == Layout::EntryMajor ? lights : 1), m_light_stride(layout == Layout::EntryMajor ? 1 : n),
+        m_sum(lights * n, Rgb(0.f)), m_active(lights, 1), m_previous_ratio(lights, {-1.0, -1.0, -1.0}), m_previous_size(lights) {}
+
+  /// Adds step `step` (d_step, counted from 1; in the sums' layout) to each
+  /// active light's sum and ends the series that are done. False once none
+  /// is active.
   bool add(int step, const std::vector<Rgb>& current) {
-    for (size_t j = 0; j < m_active.size(); ++j) {
+    // One pass over the entries for every light (entry-major, the lights of
+    // an entry lie together): the step joins the sums, and the step's and the
+    // sums' totals per channel, in double, are summed in entry order.
+    std::vector<std::array<double, 3>> size(m_lights, {0.0, 0.0, 0.0}), total(m_lights, {0.0, 0.0, 0.0});
+    for (size_t k = 0; k < m_n; ++k)
+      for (size_t j = 0; j < m_lights; ++j) {
+        if (!m_active[j]) continue;
+        const size_t at = k * m_entry_stride + j * m_light_stride;
+        const Rgb d = current[at];
+        Rgb& s = m_sum[at];
+        s += d;
+        for (int c = 0; c < 3; ++c) {
+          size[j][c] += double(d[c]);
+          total[j][c] += double(s[c]);
+        }
+      }
+    std::vector<Rgb> rest(m_lights, Rgb(0.f));
+    bool any_rest = false;
+    for (size_t j = 0; j < m_lights; ++j) {
       if (!m_active[j]) continue;
-      const Rgb* d = &current[j * m_n];
-      Rgb* s = &m_sum[j * m_n];
-      for (size_t k = 0; k < m_n; ++k) s[k] += d[k];
-      const auto size = channel_sums(d), total = channel_sums(s);
       std::array<double, 3> ratio{-1.0, -1.0, -1.0};
       bool negligible = true, steady = step >= 3;
-      Rgb rest(0.f);
+      Rgb r(0.f);
       for (int c = 0; c < 3; ++c) {
-        if (step > 1 && m_previous_size[j][c] > 0.0) ratio[c] = size[c] / m_previous_size[j][c];
-        if (size[c] <= kNegligible * total[c]) continue;  // this channel has converged
+        if (step > 1 && m_previous_size[j][c] > 0.0) ratio[c] = size[j][c] / m_previous_size[j][c];
+        if (size[j][c] <= kNegligible * total[j][c]) continue;  // this channel has converged
         negligible = false;
         steady = steady && ratio[c] > 0.0 && ratio[c] < 1.0 && std::abs(ratio[c] - m_previous_ratio[j][c]) <= kSteadyRatio;
-        if (steady) rest[c] = float(ratio[c] / (1.0 - ratio[c]));
+        if (steady) r[c] = float(ratio[c] / (1.0 - ratio[c]));
       }
       bool done = negligible || step >= m_last;
       if (m_all && !done && steady) {
-        // The geometric rest, per channel: d_k (r + r² + …) = d_k r/(1−r).
-        for (size_t k = 0; k < m_n; ++k) s[k] += d[k] * rest;
+        rest[j] = r;  // the geometric rest, per channel: d_k (r + r² + …) = d_k r/(1−r)
+        any_rest = true;
         done = true;
       }
       if (done) m_active[j] = 0;
       m_previous_ratio[j] = ratio;
-      m_previous_size[j] = size;
+      m_previous_size[j] = size[j];
     }
+    if (any_rest)
+      for (size_t k = 0; k < m_n; ++k)
+        for (size_t j = 0; j < m_lights; ++j) {
+          if (rest[j] == Rgb(0.f)) continue;
+          const size_t at = k * m_entry_stride + j * m_light_stride;
+          m_sum[at] += current[at] * rest[j];
+        }
     return std::any_of(m_active.begin(), m_active.end(), [](char a) { return a != 0; });
   }
 
@@ -66,17 +92,10 @@ public:
   std::vector<Rgb>& sum() { return m_sum; }
 
 private:
-  /// Σ of a field per channel, in double (the convergence test).
-  std::array<double, 3> channel_sums(const Rgb* field) const {
-    std::array<double, 3> s{0.0, 0.0, 0.0};
-    for (size_t k = 0; k < m_n; ++k)
-      for (int c = 0; c < 3; ++c) s[c] += double(field[k][c]);
-    return s;
-  }
-
-  size_t m_n;
+  size_t m_n, m_lights;
   bool m_all;
   int m_last;
+  size_t m_entry_stride, m_light_stride;  ///< from one entry, one light to the next
   std::vector<Rgb> m_sum;
   std::vector<char> m_active;
   std::vector<std::array<double, 3>> m_previous_ratio, m_previous_size;
