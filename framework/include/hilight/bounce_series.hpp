@@ -5,8 +5,9 @@
 /// "Every bounce"). Each light's series ends when a step is negligible
 /// against its sum (kNegligible, per channel), at the count asked for, or,
 /// for "all", once successive steps shrink by a steady ratio r
-/// (kSteadyRatio), with the geometric rest d_k·r/(1−r) added: a bright room
-/// converges as ρ^k, so ρ = 0.95 would take ~180 steps to 10⁻⁴ without it.
+/// (kSteadyRatio) and the geometric rest d_k·r/(1−r) is a small share of the
+/// sum (kRestShare), with that rest added: a bright room converges as ρ^k,
+/// so ρ = 0.95 would take ~180 steps to 10⁻⁴ without it.
 #include "hilight/bounces.hpp"
 #include "hilight/math.hpp"
 
@@ -21,6 +22,12 @@ class BounceSeriesSum {
 public:
   static constexpr double kNegligible = 1e-5;   ///< a step this small of the sum ends the series
   static constexpr double kSteadyRatio = 2e-3;  ///< ratios of successive steps this close: the geometric rest is added
+  /// ... once the rest is at most this share of the sum: the rest takes the
+  /// last step's shape, which the tail has only once the slowest mode leads.
+  /// In the bundled room the ratio was steady at the 4th step, the rest 15%
+  /// of the light, and it put 1% of the vertices 14% or more (up to 53%)
+  /// from the series summed out; with 2%, every lit vertex within 4.9%.
+  static constexpr double kRestShare = 0.02;
 
   /// How a step's values lie: a light's n values together, or the lights'
   /// values of one entry together (what a walk over entries reads best).
@@ -64,7 +71,8 @@ public:
         if (step > 1 && m_previous_size[j][c] > 0.0) ratio[c] = size[j][c] / m_previous_size[j][c];
         if (size[j][c] <= kNegligible * total[j][c]) continue;  // this channel has converged
         negligible = false;
-        steady = steady && ratio[c] > 0.0 && ratio[c] < 1.0 && std::abs(ratio[c] - m_previous_ratio[j][c]) <= kSteadyRatio;
+        steady = steady && ratio[c] > 0.0 && ratio[c] < 1.0 && std::abs(ratio[c] - m_previous_ratio[j][c]) <= kSteadyRatio &&
+                 size[j][c] * ratio[c] / (1.0 - ratio[c]) <= kRestShare * total[j][c];
         if (steady) r[c] = float(ratio[c] / (1.0 - ratio[c]));
       }
       bool done = negligible || step >= m_last;
