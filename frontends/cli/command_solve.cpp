@@ -137,12 +137,12 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
   solve.add_luminaire_tuning(app, kSolveAdvanced);
   app.add_flag("--vertex-colours", vertex_colours, "with a .gltf/.glb output: the result as COLOR_0 and the target as COLOR_1 (alpha: weight) per vertex")
       ->group(kSolveAdvanced);
-  app.add_option("--energy-tolerance", criteria.design.energy_tolerance,
+  app.add_option("--energy-tolerance", criteria.design.settings.energy_tolerance,
                  "with criteria: the fewest luminaires whose total flux is within this share of the least possible")
       ->check(CLI::Range(0.0, 10.0))
       ->capture_default_str()
       ->group(kSolveAdvanced);
-  app.add_option("--candidate-spacing", criteria.design.candidate_spacing,
+  app.add_option("--candidate-spacing", criteria.design.settings.candidate_spacing,
                  "with criteria: the lattice of places tried (default: a third of the finest grid's spacing)")
       ->check(CLI::Range(1e-4, 1e6))
       ->group(kSolveAdvanced);
@@ -180,7 +180,7 @@ int run_solve(const std::vector<std::string>& args, Registry& registry) {
     criteria.quiet = quiet;
     criteria.luminaire = s.luminaire;
     criteria.placement = s.placement;
-    criteria.design.fixed_count = s.fixed_count;
+    criteria.design.settings.fixed_count = s.fixed_count;
     criteria.renderer = ropts;
     return solve_for_criteria(criteria, registry);
   }

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include "hilight/solve/criteria_in_scene.hpp"
 
 namespace hilight::cli {
 
@@ -28,34 +29,10 @@ bool is_ifc_path(const std::string& path) {
   return ext == ".ifc";
 }
 
-bool is_criteria_target(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".json";
-}
-
 namespace {
 
-/// The options add_criteria_options adds, for check_criteria_options.
-const char* const kCriteriaOptions[] = {"--maintenance-factor", "--margin", "--layout", "--ceiling-grid", "--ceiling-grid-origin",
-                                        "--min-spacing", "--max-spacing-ratio", "--ugr-max", "--schedule", "--operating-hours",
-                                        "--leni-factors", "--parasitic-power"};
-
-/// "a,b[,c]": exactly `count` finite numbers, or InputError naming the option.
-std::vector<double> numbers(const std::string& text, size_t count, const std::string& option, const std::string& example) {
-  std::vector<double> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    char* end = nullptr;
-    const double v = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(v)) break;
-    out.push_back(v);
-  }
-  if (out.size() != count || std::count(text.begin(), text.end(), ',') != long(count - 1))
-    throw InputError(option + " " + text + ": give " + std::to_string(count) + " numbers separated by commas, e.g. " + example);
-  return out;
-}
+/// The report's options add_criteria_options adds (the layout's: criteria_options.hpp).
+const std::vector<std::string> kReportOptions = {"--schedule", "--operating-hours", "--leni-factors", "--parasitic-power"};
 
 std::string product_of(const Light& luminaire) {
   if (luminaire.profile && !luminaire.profile->product.empty()) return luminaire.profile->product;
@@ -142,7 +119,7 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
           {"met", r.met},
           {"unmet", r.unmet.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.unmet)},
           {"lights", lights.size()},
-          {"lights_asked", a.design.fixed_count ? nlohmann::json(a.design.fixed_count) : nlohmann::json(nullptr)},
+          {"lights_asked", a.design.settings.fixed_count ? nlohmann::json(a.design.settings.fixed_count) : nlohmann::json(nullptr)},
           {"luminaire", a.luminaire->profile_path},
           {"product", product_of(*a.luminaire)},
           {"luminaire_size_m", {r.luminaire_size[0], r.luminaire_size[1]}},
@@ -152,16 +129,16 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
           {"spin_deg", spins},
           {"luminaires", luminaires_json(a, r, lights, frame)},
           {"grids", grids},
-          {"layout", {{"asked", to_string(a.design.layout)}, {"chosen", r.chosen}, {"why", r.why},
+          {"layout", {{"asked", to_string(a.design.settings.layout)}, {"chosen", r.chosen}, {"why", r.why},
                       {"array", summary_json(r.array)}, {"free", summary_json(r.free)},
-                      {"ceiling_grid_m", a.design.ceiling_grid > 0 ? nlohmann::json(a.design.ceiling_grid) : nlohmann::json(nullptr)},
-                      {"min_spacing_m", a.design.spacing.min_spacing},
-                      {"max_spacing_ratio", a.design.spacing.max_spacing_ratio > 0 ? nlohmann::json(a.design.spacing.max_spacing_ratio)
+                      {"ceiling_grid_m", a.design.settings.ceiling_grid > 0 ? nlohmann::json(a.design.settings.ceiling_grid) : nlohmann::json(nullptr)},
+                      {"min_spacing_m", a.design.settings.spacing.min_spacing},
+                      {"max_spacing_ratio", a.design.settings.spacing.max_spacing_ratio > 0 ? nlohmann::json(a.design.settings.spacing.max_spacing_ratio)
                                                                                     : nlohmann::json(nullptr)},
                       {"fewest_free_meeting", r.fewest_free ? nlohmann::json(r.fewest_free) : nlohmann::json(nullptr)}}},
           {"room", {{"length_m", r.room.length()}, {"width_m", r.room.width()}, {"axis", {r.room.u.x, r.room.u.z}},
                     {"floor_area_m2", r.room.floor_area}}},
-          {"ugr", {{"max", finite_or_null(r.ugr)}, {"limit", a.design.ugr_max > 0 ? nlohmann::json(a.design.ugr_max) : nlohmann::json(nullptr)},
+          {"ugr", {{"max", finite_or_null(r.ugr)}, {"limit", a.design.settings.ugr_max > 0 ? nlohmann::json(a.design.settings.ugr_max) : nlohmann::json(nullptr)},
                    {"luminous_area_m2", r.luminous_area}, {"observers", observers}}},
           {"cylindrical", {{"height_m", r.cylindrical.height}, {"points", r.cylindrical.points}, {"mean_lux", r.cylindrical.mean},
                            {"min_lux", r.cylindrical.min}, {"u0", r.cylindrical.u0}, {"modelling", r.cylindrical.modelling}}},
@@ -174,7 +151,7 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
                       {"fo", a.energy.fo}, {"fd", a.energy.fd}, {"parasitic_w", a.energy.parasitic_w}}},
           {"total_luminous_flux_lm", r.flux_lm},
           {"least_luminous_flux_lm", r.least_flux_lm},
-          {"energy_tolerance", a.design.energy_tolerance},
+          {"energy_tolerance", a.design.settings.energy_tolerance},
           {"electrical_power_w", watts ? nlohmann::json(r.power_w) : nlohmann::json(nullptr)},
           {"candidates", r.candidates},
           {"shortfall_lux", r.shortfall_lux},
@@ -222,52 +199,21 @@ std::string schedule_csv(const CriteriaSolve& a, const DesignReport& r, const Li
 } // namespace
 
 void add_criteria_options(CLI::App& app, CriteriaSolve& c, const std::string& group) {
-  struct Grouped {  // every option added here in `group` (when given)
+  add_criteria_design_options(app, c.design, group);
+  struct Grouped {  // the report's options in `group` too (when given)
     CLI::App& app;
     const std::string& group;
     ~Grouped() {
       if (group.empty()) return;
-      for (const char* name : kCriteriaOptions)
+      for (const std::string& name : kReportOptions)
         if (CLI::Option* o = app.get_option_no_throw(name)) o->group(group);
     }
   } grouped{app, group};
-  app.add_option("--maintenance-factor", c.design.maintenance_factor,
-                 "with criteria: maintained illuminance = MF × new (EN 12464-1's Ēm; in (0, 1])")
-      ->capture_default_str();
-  app.add_option("--margin", c.design.margin,
-                 "with criteria: keep every criterion this share clear of its limit (0.05: Ē and U0 5% above, Emin also between "
-                 "the grid's points, UGR 5% below)")
-      ->capture_default_str();
-  app.add_option_function<std::string>(
-         "--layout",
-         [&c](const std::string& v) {
-           c.design.layout = v == "array" ? LayoutChoice::Array : v == "free" ? LayoutChoice::Free : LayoutChoice::Auto;
-         },
-         "with criteria: array (rows × columns aligned with the room, or on --ceiling-grid), free (anywhere on the lattice), "
-         "auto (both; the array where it costs nothing; default)")
-      ->check(CLI::IsMember({"auto", "array", "free"}));
-  app.add_option("--ceiling-grid", c.design.ceiling_grid, "with criteria: arrays on a ceiling grid of this tile, metres (0.6, 0.625)")
-      ->check(CLI::Range(1e-3, 1e3));
-  app.add_option_function<std::string>(
-      "--ceiling-grid-origin",
-      [&c](const std::string& v) {
-        const auto n = numbers(v, 2, "--ceiling-grid-origin", "0,0");
-        c.grid_origin_world = glm::dvec2(n[0], n[1]);
-      },
-      "X,Z of a tile corner of --ceiling-grid, in the scene file's coordinates (default: the room's corner)");
-  app.add_option("--min-spacing", c.design.spacing.min_spacing,
-                 "with criteria: luminaires' centres at least this far apart, metres (outlines never overlap in any case)")
-      ->check(FiniteNonNegative);
-  app.add_option("--max-spacing-ratio", c.design.spacing.max_spacing_ratio,
-                 "with criteria: spacing at most this × the mounting height over the work plane (SHR; 0: none)")
-      ->check(FiniteNonNegative);
-  app.add_option("--ugr-max", c.design.ugr_max, "with criteria: UGR (CIE 117, standard observers) at most this, e.g. 19")
-      ->check(CLI::Range(1.0, 40.0));
   app.add_option("--schedule", c.schedule_path, "with criteria: write the luminaire schedule here (CSV: product, position, aim, dimming, lm, W)");
   app.add_option_function<std::string>(
       "--operating-hours",
       [&c](const std::string& v) {
-        const auto n = numbers(v, 2, "--operating-hours", "2250,250");
+        const auto n = comma_numbers(v, 2, "--operating-hours", "2250,250");
         if (n[0] < 0 || n[1] < 0 || n[0] + n[1] > 8760) throw InputError("--operating-hours " + v + ": day and night hours within one year (8760)");
         c.energy.day_hours = n[0], c.energy.night_hours = n[1];
       },
@@ -275,7 +221,7 @@ void add_criteria_options(CLI::App& app, CriteriaSolve& c, const std::string& gr
   app.add_option_function<std::string>(
       "--leni-factors",
       [&c](const std::string& v) {
-        const auto n = numbers(v, 3, "--leni-factors", "1,1,1");
+        const auto n = comma_numbers(v, 3, "--leni-factors", "1,1,1");
         for (double f : n)
           if (!(f >= 0 && f <= 1)) throw InputError("--leni-factors " + v + ": FC, FO and FD are each in [0, 1]");
         c.energy.fc = n[0], c.energy.fo = n[1], c.energy.fd = n[2];
@@ -288,16 +234,13 @@ void add_criteria_options(CLI::App& app, CriteriaSolve& c, const std::string& gr
 
 void check_criteria_options(const CLI::App& app, bool criteria_target) {
   if (criteria_target) return;
-  for (const char* name : kCriteriaOptions)
-    if (app.count(name)) throw InputError(std::string(name) + " works with illuminance criteria (a .json target), not with a painted target");
+  refuse_without_criteria(app, criteria_design_option_names());
+  refuse_without_criteria(app, kReportOptions);
 }
 
 int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   if (!a.luminaire) throw InputError(a.target_path + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
-  if (!(a.design.maintenance_factor > 0 && a.design.maintenance_factor <= 1))
-    throw InputError("--maintenance-factor " + std::to_string(a.design.maintenance_factor) +
-                     ": must be in (0, 1] (maintained = MF × new; 0.8 is a clean office's)");
-  if (!(a.design.margin >= 0 && a.design.margin < 1)) throw InputError("--margin " + std::to_string(a.design.margin) + ": must be in [0, 1)");
+  check_criteria_design(a.design);
   if (!a.schedule_path.empty()) check_writable(a.schedule_path);
   if (is_ifc_path(a.output)) {  // the luminaires into a copy of the input IFC
     if (!is_ifc_path(a.scene_path))
@@ -312,27 +255,11 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, a.scene_options));
   auto rays = RayScene::shared(scene);
   const auto reference = a.renderer.create(registry, scene);
-  if (criteria.length_unit != scene->frame.unit)
-    throw InputError(a.target_path, "its points are in " + criteria.length_unit + ", the scene in " + scene->frame.unit +
-                                        " (--unit " + criteria.length_unit + "?)");
-  // Positions read in the world's coordinates, solved in the scene's (scene_origin.hpp).
-  for (auto& g : criteria.grids)
-    for (auto& p : g.points) p = to_local(p, scene->frame);
   PlacementRules rules = rules_to_local(a.placement, scene->frame);
   rules.resolve_room_names(scene_rooms(a.scene_path, rules, *rays));
-  // Luminaires for a lux target hang from the ceiling unless told otherwise (--place anywhere lifts it).
-  if (!rules.anywhere && !rules.ceiling_offset && !std::isfinite(rules.min_height) && !std::isfinite(rules.max_height)) rules.add("ceiling");
-  DesignSettings settings = a.design;
-  settings.min_count = rules.min_count;
-  settings.max_count = rules.max_count;
-  if (a.grid_origin_world) {
-    const Vec3 o = to_local(glm::dvec3(a.grid_origin_world->x, 0.0, a.grid_origin_world->y), scene->frame);
-    settings.grid_origin = glm::dvec2(o.x, o.z);
-  }
-  const LightSpace space(*rays, rules);
   DesignReport report;
   stage.emplace("placing the luminaires");
-  const Lighting lights = design_for_illuminance(*reference, space, *a.luminaire, criteria, settings, report);
+  const Lighting lights = design_in_scene(*reference, *scene, *rays, criteria, rules, *a.luminaire, a.design, report);
 
   stage.emplace("writing " + std::filesystem::path(a.output).filename().string());
   const Units units = parse_units(a.units_name);
@@ -425,9 +352,9 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
       if (std::isfinite(report.ugr)) std::snprintf(text, sizeof(text), "UGR %.1f at the standard observers", report.ugr);
       else std::snprintf(text, sizeof(text), "UGR below 10 at the standard observers (no luminaire in view)");
       std::string limit;
-      if (a.design.ugr_max > 0) {
+      if (a.design.settings.ugr_max > 0) {
         char l[64];
-        std::snprintf(l, sizeof(l), " (limit %g)", a.design.ugr_max);
+        std::snprintf(l, sizeof(l), " (limit %g)", a.design.settings.ugr_max);
         limit = l;
       }
       std::fprintf(stderr, "hilight: %s%s\n", text, limit.c_str());

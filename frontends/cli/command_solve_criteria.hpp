@@ -2,6 +2,7 @@
 /// `hilight solve SCENE --target C.json --luminaire L.ies`: lights for
 /// illuminance criteria (solve/illuminance_design.hpp) instead of paint.
 #include "cli_common.hpp"
+#include "criteria_options.hpp"
 #include "hilight/light_space.hpp"
 #include "hilight/solve/illuminance_design.hpp"
 
@@ -27,20 +28,17 @@ struct CriteriaSolve {
   bool quiet = false;
   std::optional<Light> luminaire;
   PlacementRules placement;
-  DesignSettings design;
+  CriteriaDesign design;  ///< the layout's options, as the painter takes them
   RendererOptions renderer;
   EnergyInputs energy;
-  std::optional<glm::dvec2> grid_origin_world;  ///< --ceiling-grid-origin, in the scene file's coordinates
 };
 
-/// A target file is criteria when it is JSON (paint comes as PLY or glTF).
-bool is_criteria_target(const std::string& path);
 /// .ifc (any case): -o writes the luminaires into a copy of the input IFC.
 bool is_ifc_path(const std::string& path);
 
-/// The options only a solve for criteria takes (--maintenance-factor,
-/// --margin, --layout, --ceiling-grid, --min-spacing, --ugr-max,
-/// --schedule, LENI's inputs, ...), added to `app`.
+/// The options only a solve for criteria takes: the layout's
+/// (add_criteria_design_options) and the report's (--schedule, LENI's
+/// inputs), added to `app`.
 void add_criteria_options(CLI::App& app, CriteriaSolve& solve, const std::string& group = "");
 /// InputError naming the first of them given when the target is not criteria.
 void check_criteria_options(const CLI::App& app, bool criteria_target);
