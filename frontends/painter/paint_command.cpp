@@ -3,12 +3,14 @@
 #include "paint_command.hpp"
 
 #include "cli_arguments.hpp"
+#include "criteria_options.hpp"
 #include "ifc_spaces.hpp"
 #include "solve_options.hpp"
 
 #include "hilight/error.hpp"
 #include "hilight/light_cache_store.hpp"
 #include "hilight/io/atomic_file.hpp"
+#include "hilight/io/criteria_file.hpp"
 #include "hilight/io/scene_io.hpp"
 #include "hilight/ray_scene.hpp"
 #include "hilight/scene_origin.hpp"
@@ -99,7 +101,9 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   bool no_auto = false;
   app.add_option("scene", scene, "scene file (any format assimp reads)")->required();
   app.add_option("--max-edge", o.max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::Range(0.f, 1e30f));
-  app.add_option("--target", target, "target PLY or glTF with vertex colours to start from (as `hilight solve --target` reads)");
+  app.add_option("--target", target,
+                 "target PLY or glTF with vertex colours to start from, or lux criteria (.json, from `hilight target workplane`: "
+                 "Solve places --luminaire for them), as `hilight solve --target` reads it");
   app.add_option("--lights", lights, "lights JSON or glTF (KHR_lights_punctual) to start from");
   solve.add_placement(app);
   solve.add_luminaire(app);
@@ -120,11 +124,20 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--timings", timings, "write frame and stroke-to-fine-tune times as JSON ('-': stdout)");
   app.add_flag("--bench", o.bench, "after the script: timed orbit, strokes and fine-tunes (use with --timings)");
   app.add_flag("--no-auto-fine-tune", no_auto, "do not fine-tune the lights after each brush stroke");
+  cli::add_criteria_design_options(app, o.design, "Lux criteria (a .json target)");
   if (auto code = parse_arguments(app, args)) return *code;
   if (!std::isfinite(o.max_edge) || o.max_edge < 0.f) throw InputError("paint: --max-edge must be a finite number >= 0");
   parse_size(size, o.width, o.height);
   o.scene = scene;
   o.target = target;
+  if (cli::is_criteria_target(target)) {  // lux criteria: Solve places the luminaire for them
+    o.criteria = read_criteria(target);
+    o.criteria_path = target;
+    o.target.clear();
+    check_criteria_design(o.design);
+  } else {
+    cli::refuse_without_criteria(app, cli::criteria_design_option_names());
+  }
   o.lights = lights;
   o.script = script;
   o.screenshot = screenshot;
@@ -132,10 +145,16 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   o.record = record;
   o.timings = timings;
   o.auto_fine_tune = !no_auto;
+  // Lux criteria are about lux a meter would read: every bounce, as hilight
+  // solve takes them, unless --bounces says otherwise (there is no stroke to
+  // keep quick).
+  if (cli::is_criteria_target(target) && !app.count("--bounces")) solve.renderer.bounces = "all";
   o.job = solve.to_spec(registry);
   o.job.settings.placement = solve.placement();
   // As hilight solve takes them (solve_options.hpp): every light this luminaire; the files in these units.
   const std::optional<Light> given_luminaire = solve.luminaire();
+  if (o.criteria && !given_luminaire) throw InputError(target + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
+  if (o.criteria) o.auto_fine_tune = false;  // nothing painted to fine-tune to
   o.units = solve.units();
   o.quantity = solve.target_quantity();
   if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty() && window_screenshot.empty())
@@ -186,6 +205,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
     o.scene = next->scene;
     next_loaded = next->loaded;
     o.target.clear();
+    o.criteria.reset();  // in the first scene's coordinates
     o.lights.clear();
     session = std::move(next->rest_of_script);
     o.recorded_before = std::move(next->recorded);

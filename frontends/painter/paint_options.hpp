@@ -2,6 +2,8 @@
 /// What `hilight paint` was asked to do (parsed by paint_command.cpp).
 #include "core/session.hpp"
 #include "core/solve_job.hpp"
+#include "hilight/illuminance_criteria.hpp"
+#include "hilight/solve/criteria_in_scene.hpp"
 #include "hilight/named_room.hpp"
 #include "hilight/units.hpp"
 
@@ -17,6 +19,13 @@ struct PaintOptions {
   std::filesystem::path scene;
   float max_edge = 0.f;              ///< tessellation limit (0: diagonal/40, as everywhere)
   std::filesystem::path target;      ///< target PLY to start from
+  /// A lux target (`--target C.json`, hilight target workplane's): Solve
+  /// places the --luminaire for it as `hilight solve` does, with `design`
+  /// (the criteria options); nothing painted is read, and fine-tune, add
+  /// lights and the fine-tune after a stroke do not apply.
+  std::optional<IlluminanceCriteria> criteria;
+  std::filesystem::path criteria_path;
+  CriteriaDesign design;
   std::filesystem::path lights;      ///< lights JSON to start from
   std::filesystem::path script;      ///< session to replay
   std::filesystem::path screenshot;  ///< final frame, written after the script

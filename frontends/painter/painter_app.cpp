@@ -53,6 +53,7 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   m_document = std::make_unique<Document>(m_scene, m_rays);
   m_document->set_units(m_options.units, m_options.quantity);
   m_job = std::make_unique<SolveJob>(registry, m_scene, m_rays, m_options.job);
+  if (m_options.criteria) m_job->set_criteria(*m_options.criteria, m_options.design);
   std::snprintf(m_solve_panel.place_text, sizeof(m_solve_panel.place_text), "%s", m_options.job.settings.placement.describe().c_str());
   m_solve_panel.named_rooms = m_options.named_rooms;
   m_solve_panel.building_note = m_options.building_note;
@@ -69,6 +70,7 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   // The units first: the files after them are read in them.
   if (!m_options.recorded_before && (m_options.units != Units::Radiometric || m_options.quantity != TargetQuantity::Radiance))
     record(UnitsAction{m_options.units, m_options.quantity});
+  if (m_options.criteria) record(CriteriaAction{absolute(m_options.criteria_path), m_options.design});
   // (Loaded by the document directly: its errors name the file, not a script action.)
   if (!m_options.target.empty()) {
     m_document->load_target(m_options.target);

@@ -72,6 +72,15 @@ std::string PainterApp::not_a_room(const Region& region) {
 
 void PainterApp::show_fit(const JobResult& result) {
   const SolveReport& r = result.report;
+  if (m_job->has_criteria()) {  // hilight solve's lines for criteria
+    m_solve_panel.fit_line = std::to_string(result.lights.size()) + " luminaire" + (result.lights.size() == 1 ? "" : "s") + ", criteria " +
+                             (result.criteria_met ? "met" : "NOT met");
+    m_solve_panel.fit_notes = result.criteria_notes;
+    for (const FitNote& note : m_solve_panel.fit_notes) status((note.warning ? "warning: " : "") + note.text);
+    m_display.unreachable.clear();
+    m_display.colours_dirty = true;
+    return;
+  }
   char line[160];
   std::snprintf(line, sizeof line, "%s: %zu light%s, D̄ %.1f%%", to_string(result.kind), r.chosen, r.chosen == 1 ? "" : "s", 100.0 * r.dbar);
   m_solve_panel.fit_line = line;

@@ -475,6 +475,51 @@ UnitsAction read(const json& p, Is<UnitsAction>) {
 }
 json write(const UnitsAction& a) { return {{"units", units_name(a.units)}, {"quantity", target_quantity_name(a.quantity)}}; }
 
+// CriteriaAction: the path and the criteria options, by hilight solve's names (without the dashes).
+const char* layout_name(LayoutChoice c) { return c == LayoutChoice::Array ? "array" : c == LayoutChoice::Free ? "free" : "auto"; }
+template <>
+Spec schema_of<CriteriaAction>() {
+  return {{{"path", Kind::String},
+           {"maintenance_factor", Kind::Positive},
+           {"margin", Kind::NonNegative},
+           {"layout", Kind::String},
+           {"ceiling_grid", Kind::NonNegative},
+           {"ceiling_grid_origin", Kind::Vec2},
+           {"min_spacing", Kind::NonNegative},
+           {"max_spacing_ratio", Kind::NonNegative},
+           {"ugr_max", Kind::NonNegative}},
+          {"path"}, {}, {}, false};
+}
+CriteriaAction read(const json& p, Is<CriteriaAction>) {
+  CriteriaAction a;
+  a.path = p["path"].get<std::string>();
+  DesignSettings& s = a.design.settings;
+  s.maintenance_factor = p.value("maintenance_factor", s.maintenance_factor);
+  s.margin = p.value("margin", s.margin);
+  const std::string layout = p.value("layout", std::string("auto"));
+  s.layout = layout == "array" ? LayoutChoice::Array : layout == "free" ? LayoutChoice::Free : LayoutChoice::Auto;
+  s.ceiling_grid = p.value("ceiling_grid", s.ceiling_grid);
+  if (p.contains("ceiling_grid_origin"))
+    a.design.grid_origin_world = glm::dvec2(p["ceiling_grid_origin"][0].get<double>(), p["ceiling_grid_origin"][1].get<double>());
+  s.spacing.min_spacing = p.value("min_spacing", s.spacing.min_spacing);
+  s.spacing.max_spacing_ratio = p.value("max_spacing_ratio", s.spacing.max_spacing_ratio);
+  s.ugr_max = p.value("ugr_max", s.ugr_max);
+  return a;
+}
+json write(const CriteriaAction& a) {
+  const DesignSettings& s = a.design.settings;
+  json p = {{"path", a.path},
+            {"maintenance_factor", s.maintenance_factor},
+            {"margin", s.margin},
+            {"layout", layout_name(s.layout)},
+            {"ceiling_grid", s.ceiling_grid},
+            {"min_spacing", s.spacing.min_spacing},
+            {"max_spacing_ratio", s.spacing.max_spacing_ratio},
+            {"ugr_max", s.ugr_max}};
+  if (a.design.grid_origin_world) p["ceiling_grid_origin"] = {a.design.grid_origin_world->x, a.design.grid_origin_world->y};
+  return p;
+}
+
 // ScreenshotAction
 template <>
 Spec schema_of<ScreenshotAction>() {
@@ -661,6 +706,15 @@ void validate_action(const Action& action, const std::string& source, size_t ind
     if (!u) fail("units: 'units' must be radiometric or photometric, not '" + units + "'");
     if (!q) fail("units: 'quantity' must be luminance (radiance) or illuminance, not '" + quantity + "'");
     if (*q == TargetQuantity::Illuminance && *u != Units::Photometric) fail("units: illuminance is in lux: it needs 'units': 'photometric'");
+  }
+  if (action.type == "criteria") {  // as hilight solve's --layout, --maintenance-factor, --margin and --ugr-max take them
+    const json& p = action.params;
+    const std::string layout = p.value("layout", std::string("auto"));
+    if (layout != "auto" && layout != "array" && layout != "free") fail("criteria: 'layout' must be auto, array or free, not '" + layout + "'");
+    if (p.contains("maintenance_factor") && p["maintenance_factor"].get<double>() > 1) fail("criteria: 'maintenance_factor' must be in (0, 1]");
+    if (p.contains("margin") && p["margin"].get<double>() >= 1) fail("criteria: 'margin' must be in [0, 1)");
+    if (p.contains("ugr_max") && p["ugr_max"].get<double>() != 0 && !(p["ugr_max"].get<double>() >= 1 && p["ugr_max"].get<double>() <= 40))
+      fail("criteria: 'ugr_max' must be 0 (none) or in [1, 40]");
   }
   if (action.type == "view") {
     const std::string show = action.params["show"].get<std::string>();

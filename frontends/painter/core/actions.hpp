@@ -7,6 +7,7 @@
 /// these.
 #include "core/session.hpp"
 #include "hilight/math.hpp"
+#include "hilight/solve/criteria_in_scene.hpp"
 #include "hilight/units.hpp"
 
 #include <optional>
@@ -186,12 +187,23 @@ struct UnitsAction {
   TargetQuantity quantity = TargetQuantity::Radiance;
 };
 
+/// A lux target instead of paint (`--target C.json` and the criteria
+/// options): a session started with one records it first, so that its
+/// replay's solve places the luminaires for the same criteria (given the
+/// same --luminaire; the solve's renderer and bounces are the command
+/// line's, as for every session).
+struct CriteriaAction {
+  static constexpr const char* kType = "criteria";
+  std::string path;
+  CriteriaDesign design;
+};
+
 /// Every action type, in the order docs/painter.md lists them.
 using TypedAction =
     std::variant<CameraAction, ToolAction, ViewAction, SectionAction, CutawayAction, PlanAction, FocusAction, WalkAction, BrushAction, StrokeAction, EraseAction, ShadowAction, EraseShadowAction,
                  SpotRegionAction, AdjustRegionAction, SolveAction, FineTuneAction, AddLightsAction, CutAction, PlaceAction,
                  UndoAction, RedoAction, SaveTargetAction, SaveLightsAction, LoadTargetAction, LoadLightsAction, ScreenshotAction,
-                 OpenSceneAction, UnitsAction>;
+                 OpenSceneAction, UnitsAction, CriteriaAction>;
 
 /// The typed form of a valid action (validate_action first: it assumes the schema holds).
 TypedAction typed(const Action& action);

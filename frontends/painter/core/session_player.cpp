@@ -1,5 +1,7 @@
 #include "core/session_player.hpp"
 
+#include "hilight/io/criteria_file.hpp"
+
 #include "hilight/error.hpp"
 #include "hilight/scene_origin.hpp"
 
@@ -388,6 +390,13 @@ void SessionPlayer::start_in_background(JobKind kind) {
 }
 
 void SessionPlayer::launch(JobKind kind, const std::string& where) {
+  if (m_job.has_criteria()) {  // a lux target: nothing painted to read
+    if (kind != JobKind::Solve)
+      throw InputError(where + ": " + to_string(kind) + " works on painted targets; with lux criteria, solve places the luminaires");
+    m_job_revision = m_document.revision();
+    m_job.start_solve(Target{});
+    return;
+  }
   Target target = focused_target(where);
   const PaintState& s = m_document.state();
   if (kind != JobKind::Solve && s.lights.empty()) throw InputError(where + ": there are no lights yet (solve first)");
@@ -440,6 +449,10 @@ void SessionPlayer::run(const SaveTargetAction& a, const Action&, const std::str
 void SessionPlayer::run(const LoadTargetAction& a, const Action&, const std::string&) { m_document.load_target(resolve(a.path)); }
 void SessionPlayer::run(const LoadLightsAction& a, const Action&, const std::string&) { m_document.load_lights(resolve(a.path)); }
 void SessionPlayer::run(const UnitsAction& a, const Action&, const std::string&) { m_document.set_units(a.units, a.quantity); }
+void SessionPlayer::run(const CriteriaAction& a, const Action&, const std::string& where) {
+  if (m_job.busy()) finish_solve(where);
+  m_job.set_criteria(read_criteria(resolve(a.path)), a.design);
+}
 
 void SessionPlayer::run(const SaveLightsAction& a, const Action&, const std::string& where) {
   // The lights are about to change under them (a replay, which waits for
@@ -478,7 +491,9 @@ void SessionPlayer::commit(JobResult& result) {
   label << to_string(result.kind) << ": " << result.lights.size() << (result.lights.size() == 1 ? " light" : " lights");
   m_document.set_lights(result.lights, label.str());
   std::ostringstream line;
-  line << label.str() << ", D̄ " << 100.0 * result.report.dbar << "%";
+  line << label.str();
+  if (m_job.has_criteria()) line << ", criteria " << (result.criteria_met ? "met" : "not met");
+  else line << ", D̄ " << 100.0 * result.report.dbar << "%";
   log(line.str());
   if (m_hooks.fit) m_hooks.fit(result);
 }

@@ -197,6 +197,7 @@ private:
   void run(const ScreenshotAction& a, const Action& action, const std::string& where);
   void run(const OpenSceneAction& a, const Action& action, const std::string& where);
   void run(const UnitsAction& a, const Action& action, const std::string& where);
+  void run(const CriteriaAction& a, const Action& action, const std::string& where);
   /// Gives the job placement().
   void apply_placement();
   /// An InputError when the not_a_room hook says region `region` is no room (`at`: where the action pointed).

@@ -4,6 +4,8 @@
 #include "hilight/solve/diagnosis.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace hilight::painter {
@@ -29,6 +31,29 @@ void diagnose(const Solver& solver, const Target& target, JobResult& result) {
   result.report.unreachable = found.share;
   for (uint32_t i : found.points)
     if (target.vertex[i] >= 0) result.unreachable_vertices.push_back(uint32_t(target.vertex[i]));
+}
+
+/// A criteria solve's answer in `hilight solve`'s words: per grid, then the luminaires.
+std::vector<FitNote> criteria_notes(const IlluminanceCriteria& criteria, const DesignReport& report, size_t count) {
+  std::vector<FitNote> notes;
+  for (size_t g = 0; g < criteria.grids.size() && g < report.figures.size(); ++g) {
+    const CriterionGrid& c = criteria.grids[g];
+    const GridFigures& f = report.figures[g];
+    char text[256];
+    std::snprintf(text, sizeof text, "%s: maintained Ē %.0f lx, U0 %.2f (wanted Ē ≥ %g, U0 ≥ %g)%s", c.name.c_str(), f.mean, f.u0, c.lux,
+                  c.u0, f.met ? "" : ": not met");
+    notes.push_back({!f.met, text});
+  }
+  char text[256];
+  std::snprintf(text, sizeof text, "%zu luminaire%s, %.0f lm (least possible %.0f lm), MF %.2f, layout %s", count, count == 1 ? "" : "s",
+                report.flux_lm, report.least_flux_lm, report.maintenance_factor, report.chosen.c_str());
+  notes.push_back({false, text});
+  if (std::isfinite(report.ugr) && report.luminous_area > 0) {
+    std::snprintf(text, sizeof text, "UGR %.1f at the standard observers", report.ugr);
+    notes.push_back({false, text});
+  }
+  if (!report.met && !report.unmet.empty()) notes.push_back({true, report.unmet});
+  return notes;
 }
 
 /// Hints as the Solver sees them: only their shape (intensity is the solve's to find).
@@ -65,7 +90,14 @@ Solver& SolveJob::solver_for(const Lighting& spot_hints) {
   return *m_solver;
 }
 
+void SolveJob::set_criteria(IlluminanceCriteria criteria, CriteriaDesign design) {
+  if (m_busy) throw std::logic_error("SolveJob::set_criteria while busy");
+  m_criteria = std::move(criteria);
+  m_design = std::move(design);
+}
+
 void SolveJob::start_solve(Target target, Lighting spot_hints) {
+  if (m_criteria) return start_criteria();
   start(JobKind::Solve, std::move(target), {}, std::move(spot_hints));
 }
 void SolveJob::start_fine_tune(Target target, Lighting lights) {
@@ -104,20 +136,59 @@ void SolveJob::start(JobKind kind, Target target, Lighting lights, Lighting spot
       result.outcome = JobOutcome::Failed;
       result.error = e.what();
     }
-    std::function<void()> on_finished;
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
-      if (result.outcome == JobOutcome::Done && kind != JobKind::FineTune) {
-        m_cuts_valid = true;
-        m_cut_base = kind == JobKind::AddLights ? lights : Lighting{};
-      }
-      m_progress.clear();
-      m_result = std::move(result);
-      m_busy = false;
-      on_finished = m_on_finished;
-      m_done.notify_all();
+    finish(std::move(result), lights);
+  });
+}
+
+void SolveJob::finish(JobResult result, const Lighting& kept) {
+  std::function<void()> on_finished;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (result.outcome == JobOutcome::Done && result.kind != JobKind::FineTune && !m_criteria) {
+      m_cuts_valid = true;
+      m_cut_base = result.kind == JobKind::AddLights ? kept : Lighting{};
     }
-    if (on_finished) on_finished();
+    m_progress.clear();
+    m_result = std::move(result);
+    m_busy = false;
+    on_finished = m_on_finished;
+    m_done.notify_all();
+  }
+  if (on_finished) on_finished();
+}
+
+void SolveJob::start_criteria() {
+  if (m_busy) throw std::logic_error("SolveJob: a job is already running");
+  if (m_worker.joinable()) m_worker.join();
+  if (!m_options.settings.luminaire) throw InputError(m_criteria->source + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
+  m_cuts_valid = false;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_result.reset();
+    m_progress = "placing the luminaires";
+  }
+  m_stop = std::stop_source();
+  m_busy = true;
+  // The design itself cannot stop midway: a cancel takes effect when it ends.
+  m_worker = std::thread([this, stop = m_stop.get_token()]() {
+    JobResult result;
+    result.kind = JobKind::Solve;
+    try {
+      IlluminanceCriteria criteria = *m_criteria;  // moved into the scene's frame by the design
+      PlacementRules rules = m_options.settings.placement;
+      DesignReport report;
+      result.lights = design_in_scene(m_session->reference(), *m_scene, *m_rays, criteria, rules, *m_options.settings.luminaire,
+                                      m_design, report);
+      result.report.chosen = result.lights.size();
+      result.report.seconds = report.seconds;
+      result.criteria_met = report.met;
+      result.criteria_notes = criteria_notes(criteria, report, result.lights.size());
+      result.outcome = stop.stop_requested() ? JobOutcome::Cancelled : JobOutcome::Done;
+    } catch (const std::exception& e) {
+      result.outcome = JobOutcome::Failed;
+      result.error = e.what();
+    }
+    finish(std::move(result), {});
   });
 }
 

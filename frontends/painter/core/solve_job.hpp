@@ -12,6 +12,8 @@
 /// Cancelling: each job gets a stop token; cancel() requests it, and the
 /// Solver throws SolveCancelled at its next stage or renderer batch
 /// (solve/stoppable_renderer.hpp); the light cache's build is one batch.
+#include "hilight/solve/criteria_in_scene.hpp"
+#include "hilight/solve/fit_notes.hpp"
 #include "hilight/solve/solve_session.hpp"
 #include "hilight/registry.hpp"
 
@@ -49,6 +51,12 @@ struct JobResult {
   /// no place a light may stand can see (diagnosis.hpp, every painted point
   /// looked at); report.unreachable is their share of the painted light.
   std::vector<uint32_t> unreachable_vertices;
+  /// A solve for lux criteria (SolveJob::set_criteria; Done only): each
+  /// grid's maintained figures against what it asks, and the luminaires'
+  /// count and flux, in the words `hilight solve` prints them (a grid not
+  /// met is a warning); `criteria_met` when every one is.
+  std::vector<FitNote> criteria_notes;
+  bool criteria_met = false;
 };
 
 class SolveJob {
@@ -62,7 +70,16 @@ public:
   SolveJob(const SolveJob&) = delete;
   SolveJob& operator=(const SolveJob&) = delete;
 
-  /// Full solve of `target`; `spot_hints` are spotlights the designer asked for.
+  /// A lux target instead of paint (`hilight paint --target C.json`, the
+  /// criteria in the scene file's coordinates): start_solve then places the
+  /// luminaire (the options' settings.luminaire) for it as `hilight solve`
+  /// does (criteria_in_scene.hpp), under the placement rules; fine-tune and
+  /// add lights have nothing painted to work on. Not while busy.
+  void set_criteria(IlluminanceCriteria criteria, CriteriaDesign design);
+  bool has_criteria() const { return m_criteria.has_value(); }
+
+  /// Full solve of `target` (with criteria: of them, `target` unused);
+  /// `spot_hints` are spotlights the designer asked for.
   void start_solve(Target target, Lighting spot_hints = {});
   /// Re-optimizes `lights` (the count never changes).
   void start_fine_tune(Target target, Lighting lights);
@@ -110,6 +127,9 @@ public:
 
 private:
   void start(JobKind kind, Target target, Lighting lights, Lighting spot_hints);
+  void start_criteria();
+  /// Hands a finished job's result over (the worker's last step).
+  void finish(JobResult result, const Lighting& kept);
   Solver& solver_for(const Lighting& spot_hints);
 
   const Registry& m_registry;
@@ -119,6 +139,8 @@ private:
   std::unique_ptr<SolveSession> m_session;
   std::unique_ptr<Solver> m_solver;
   Lighting m_solver_hints;
+  std::optional<IlluminanceCriteria> m_criteria;  ///< in the scene file's coordinates
+  CriteriaDesign m_design;
   Lighting m_cut_base;  ///< lights an add kept (cut_lights puts them first)
   bool m_cuts_valid = false;
 
