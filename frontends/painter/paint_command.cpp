@@ -59,7 +59,7 @@ OpenedScene open_scene(PaintOptions& o, const PlacementRules& given_rules, const
                        std::shared_ptr<const Scene> loaded = nullptr) {
   o.started = std::chrono::steady_clock::now();  // --timings: open_to_first_frame counts from here
   OpenedScene opened;
-  if (!loaded) loaded = std::make_shared<const Scene>(load_scene(o.scene, {o.max_edge}));
+  if (!loaded) loaded = std::make_shared<const Scene>(load_scene(o.scene, o.scene_options));
   opened.scene = loaded;
   // --area-light's size is in the scene's unit (a luminaire file's opening is in metres already).
   o.job.settings.luminaire = given_luminaire;
@@ -100,7 +100,7 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   solve.spec.settings.evaluation_points = 256;
   bool no_auto = false;
   app.add_option("scene", scene, "scene file (any format assimp reads)")->required();
-  app.add_option("--max-edge", o.max_edge, "longest edge after tessellation (default: diagonal/40)")->check(CLI::Range(0.f, 1e30f));
+  cli::add_scene_options(app, o.scene_options, "");  // --unit, --max-edge, --max-vertices, as hilight solve's
   app.add_option("--target", target,
                  "target PLY or glTF with vertex colours to start from, or lux criteria (.json, from `hilight target workplane`: "
                  "Solve places --luminaire for them), as `hilight solve --target` reads it");
@@ -126,7 +126,6 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   app.add_flag("--no-auto-fine-tune", no_auto, "do not fine-tune the lights after each brush stroke");
   cli::add_criteria_design_options(app, o.design, "Lux criteria (a .json target)");
   if (auto code = parse_arguments(app, args)) return *code;
-  if (!std::isfinite(o.max_edge) || o.max_edge < 0.f) throw InputError("paint: --max-edge must be a finite number >= 0");
   parse_size(size, o.width, o.height);
   o.scene = scene;
   o.target = target;

@@ -4,6 +4,7 @@
 #include "core/solve_job.hpp"
 #include "hilight/illuminance_criteria.hpp"
 #include "hilight/solve/criteria_in_scene.hpp"
+#include "hilight/io/scene_io.hpp"
 #include "hilight/named_room.hpp"
 #include "hilight/units.hpp"
 
@@ -17,7 +18,9 @@ namespace hilight::painter {
 
 struct PaintOptions {
   std::filesystem::path scene;
-  float max_edge = 0.f;              ///< tessellation limit (0: diagonal/40, as everywhere)
+  /// --unit, --max-edge, --max-vertices, as hilight solve takes them (the
+  /// file's length unit; the tessellation in it, 0: diagonal/40).
+  SceneLoadOptions scene_options;
   std::filesystem::path target;      ///< target PLY to start from
   /// A lux target (`--target C.json`, hilight target workplane's): Solve
   /// places the --luminaire for it as `hilight solve` does, with `design`

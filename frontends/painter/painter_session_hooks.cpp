@@ -42,7 +42,7 @@ PlayerHooks PainterApp::make_hooks() {
     // Read before the window closes: a scene that cannot be read is a status
     // line (InputError, the action not recorded), and the painting stays.
     status("opening " + path.string() + "...");
-    m_next_scene = std::make_shared<const Scene>(load_scene(path, {m_options.max_edge}));
+    m_next_scene = std::make_shared<const Scene>(load_scene(path, m_options.scene_options));
     m_open_scene = std::filesystem::absolute(path).lexically_normal();
   };
   hooks.not_a_room = [this](const Region& region) { return not_a_room(region); };

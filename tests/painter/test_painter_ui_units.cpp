@@ -11,7 +11,9 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 namespace fs = std::filesystem;
 using namespace hilight;
@@ -148,4 +150,63 @@ TEST_CASE("painter session: a units action with a bad unit or lux without photom
                     Catch::Contains("s.json: action 0: units: 'units' must be radiometric or photometric"));
   CHECK_THROWS_WITH(hilight::painter::validate_action(Action{"units", {{"units", "radiometric"}, {"quantity", "illuminance"}}}, "s.json", 2),
                     Catch::Contains("s.json: action 2: units: illuminance is in lux"));
+}
+
+// hilight solve's --unit (the scene file's length unit) in the painter: the
+// bundled room written in millimetres and read with --unit mm is the metre
+// room, so the same strokes (the script's points are in the painter's own
+// metres) solve to the same lights, their positions in millimetres and their
+// intensities the same (W/sr: at 1000× the distance read as metres they
+// would be 10⁶ times stronger).
+TEST_CASE("painter ui: --unit mm reads a millimetre room as the metre room: the same lights, positions in millimetres",
+          "[painter-ui][painter-units]") {
+  if (test::skip_without_display()) return;
+  const test::CliOwnPlacement own_placement;  // each run's own --place, in its file's unit
+  const fs::path dir = test::output_dir("painter_ui_length_unit");
+  // The room in millimetres: every vertex × 1000, the same materials.
+  std::istringstream in(test::read_file(kRoom));
+  std::ostringstream mm;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("v ", 0) == 0) {
+      std::istringstream v(line.substr(2));
+      double x = 0, y = 0, z = 0;
+      v >> x >> y >> z;
+      mm << "v " << 1000 * x << ' ' << 1000 * y << ' ' << 1000 * z << '\n';
+    } else {
+      mm << line << '\n';
+    }
+  }
+  test::write_text(dir / "room.obj", mm.str());
+  fs::copy_file(fs::path(kRoom).replace_extension(".mtl"), dir / "room.mtl", fs::copy_options::overwrite_existing);
+
+  auto paint = [&](const std::string& scene, const std::string& lights, std::vector<std::string> more) {
+    const nlohmann::json actions = {{{"type", "brush"}, {"radius", 0.8}, {"colour", 1.0}, {"brightness", 0.05}},
+                                    {{"type", "stroke"}, {"world", {{2.0, 0.0, 3.5}, {2.6, 0.0, 3.5}}}},
+                                    {{"type", "stroke"}, {"world", {{4.5, 0.0, 1.5}}}},
+                                    {{"type", "solve"}},
+                                    {{"type", "save_lights"}, {"path", (dir / lights).string()}}};
+    test::write_text(dir / "session.json", nlohmann::json{{"actions", actions}}.dump());
+    std::vector<std::string> args = {"paint", scene, "--size", "480x360", "--set", "bounce_samples=16", "--samples", "800", "--no-cache",
+                                     "--no-record", "--exit", "--script", (dir / "session.json").string()};
+    args.insert(args.end(), more.begin(), more.end());
+    const test::RunResult r = test::run_hilight(args);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    return nlohmann::json::parse(test::read_file(dir / lights));
+  };
+  const nlohmann::json metres = paint(kRoom, "m.json", {"--place", "ceiling:0.2"});
+  const nlohmann::json millimetres = paint((dir / "room.obj").string(), "mm.json", {"--unit", "mm", "--place", "ceiling:200"});
+  CHECK(metres["length_unit"] == "m");
+  CHECK(millimetres["length_unit"] == "mm");
+  REQUIRE(metres["lights"].size() >= 1);
+  REQUIRE(millimetres["lights"].size() == metres["lights"].size());
+  for (size_t j = 0; j < metres["lights"].size(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      INFO("light " << j << ", axis " << k);
+      // The file's own decimals: the millimetre room's vertices are not the metre room's × 1000 to the bit.
+      CHECK(millimetres["lights"][j]["position"][k].get<double>() ==
+            Approx(1000 * metres["lights"][j]["position"][k].get<double>()).margin(5.0));
+      CHECK(millimetres["lights"][j]["intensity"][k].get<double>() ==
+            Approx(metres["lights"][j]["intensity"][k].get<double>()).epsilon(0.02));
+    }
 }
