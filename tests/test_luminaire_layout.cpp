@@ -479,6 +479,36 @@ TEST_CASE("UGR at the standard observers: reported, and a limit with --ugr-max",
   CHECK(strict.run.err.find("UGR") != std::string::npos);
 }
 
+// EN 12464-1's two postures: seated people's eyes and cylindrical
+// illuminance at 1.2 m, standing people's at 1.6 m (--posture, issue 34).
+TEST_CASE("posture: --posture standing puts the UGR observers' eyes and the cylindrical illuminance at 1.6 m, seated at 1.2 m", "[lux][ugr][cli]") {
+  const auto dir = test::output_dir("layout_posture");
+  const auto criteria = criteria_file(dir);
+  const auto ies = panel(dir);
+  const Solved seated = solve(dir, criteria, ies, {});
+  const Solved standing = solve(dir, criteria, ies, {"--posture", "standing"});
+  INFO(seated.run.err << standing.run.err);
+  REQUIRE(seated.run.exit_code == 0);
+  REQUIRE(standing.run.exit_code == 0);
+  // The bundled room's floor is at y = 0.
+  for (const auto& [s, height] : {std::pair<const Solved*, double>{&seated, 1.2}, {&standing, 1.6}}) {
+    CHECK(s->report["posture"] == (height > 1.4 ? "standing" : "seated"));
+    CHECK(s->report["cylindrical"]["height_m"].get<double>() == Approx(height));
+    REQUIRE(s->report["ugr"]["observers"].size() == 4);
+    for (const auto& o : s->report["ugr"]["observers"]) CHECK(o["eye"][1].get<double>() == Approx(height).margin(1e-4));
+  }
+  // Standing eyes are nearer the luminaires: more of them in view, their
+  // glare and the walls' vertical light otherwise.
+  CHECK(standing.report["cylindrical"]["mean_lux"].get<double>() != Approx(seated.report["cylindrical"]["mean_lux"].get<double>()));
+  CHECK(standing.run.err.find("at 1.6 m") != std::string::npos);
+  const test::RunResult bad = test::run_hilight({"solve", kRoom, "--target", criteria.string(), "--luminaire", ies.string(), "--posture",
+                                                 "lying", "-o", (dir / "bad.json").string()});
+  CHECK(bad.exit_code == 2);
+  CHECK(test::line_count(bad.err) == 1);
+  CHECK(bad.err.find("--posture") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "bad.json"));
+}
+
 TEST_CASE("energy: W/m² and LENI (EN 15193-1) from the power, the floor and the hours", "[lux][cli]") {
   const auto dir = test::output_dir("layout_energy");
   const auto criteria = criteria_file(dir);

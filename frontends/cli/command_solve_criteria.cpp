@@ -140,6 +140,7 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
                     {"floor_area_m2", r.room.floor_area}}},
           {"ugr", {{"max", finite_or_null(r.ugr)}, {"limit", a.design.settings.ugr_max > 0 ? nlohmann::json(a.design.settings.ugr_max) : nlohmann::json(nullptr)},
                    {"luminous_area_m2", r.luminous_area}, {"observers", observers}}},
+          {"posture", to_string(a.design.settings.posture)},
           {"cylindrical", {{"height_m", r.cylindrical.height}, {"points", r.cylindrical.points}, {"mean_lux", r.cylindrical.mean},
                            {"min_lux", r.cylindrical.min}, {"u0", r.cylindrical.u0}, {"modelling", r.cylindrical.modelling}}},
           {"energy", {{"floor_area_m2", e.area}, {"power_w", watts ? nlohmann::json(e.power) : nlohmann::json(nullptr)},

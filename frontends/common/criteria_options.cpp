@@ -36,7 +36,8 @@ std::vector<double> comma_numbers(const std::string& text, size_t count, const s
 
 const std::vector<std::string>& criteria_design_option_names() {
   static const std::vector<std::string> names = {"--maintenance-factor", "--margin",      "--layout",            "--ceiling-grid",
-                                                 "--ceiling-grid-origin", "--min-spacing", "--max-spacing-ratio", "--ugr-max"};
+                                                 "--ceiling-grid-origin", "--min-spacing", "--max-spacing-ratio", "--ugr-max",
+                                                 "--posture"};
   return names;
 }
 
@@ -71,6 +72,12 @@ void add_criteria_design_options(CLI::App& app, CriteriaDesign& design, const st
                  "with criteria: spacing at most this × the mounting height over the work plane (SHR; 0: none)")
       ->check(FiniteNonNegative);
   app.add_option("--ugr-max", s.ugr_max, "with criteria: UGR (CIE 117, standard observers) at most this, e.g. 19")->check(CLI::Range(1.0, 40.0));
+  app.add_option_function<std::string>(
+         "--posture",
+         [&s](const std::string& v) { s.posture = v == "standing" ? DesignSettings::Posture::Standing : DesignSettings::Posture::Seated; },
+         "with criteria: who the room is for (EN 12464-1): seated (the UGR observers' eyes and the cylindrical illuminance at "
+         "1.2 m; default) or standing (1.6 m)")
+      ->check(CLI::IsMember({"seated", "standing"}));
   if (!group.empty())
     for (const std::string& name : criteria_design_option_names())
       if (CLI::Option* o = app.get_option_no_throw(name)) o->group(group);

@@ -17,6 +17,8 @@
 
 namespace hilight {
 
+const char* to_string(DesignSettings::Posture posture) { return posture == DesignSettings::Posture::Standing ? "standing" : "seated"; }
+
 const char* to_string(LayoutChoice choice) {
   switch (choice) {
     case LayoutChoice::Auto: return "auto";
@@ -490,7 +492,7 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
                      std::to_string(settings.max_count) + ")");
 
   // Observers, points.
-  const std::vector<GlareObserver> observers = luminous_area > 0 ? standard_observers(room, settings.eye_height) : std::vector<GlareObserver>{};
+  const std::vector<GlareObserver> observers = luminous_area > 0 ? standard_observers(room, settings.eye_height()) : std::vector<GlareObserver>{};
   Points pts;
   pts.all = criteria.points();
   pts.criteria = pts.all.positions.size();
@@ -854,7 +856,8 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
     report.met = report.met && f.met;
     first += grid.points.size();
   }
-  // Cylindrical illuminance at 1.2 m over the work planes' points (seated), and the modelling.
+  // Cylindrical illuminance at the eyes' height over the work planes' points, and the modelling.
+  report.cylindrical.height = settings.eye_height();
   {
     SurfacePoints cyl;
     for (const auto& g : criteria.grids)

@@ -487,7 +487,8 @@ Spec schema_of<CriteriaAction>() {
            {"ceiling_grid_origin", Kind::Vec2},
            {"min_spacing", Kind::NonNegative},
            {"max_spacing_ratio", Kind::NonNegative},
-           {"ugr_max", Kind::NonNegative}},
+           {"ugr_max", Kind::NonNegative},
+           {"posture", Kind::String}},
           {"path"}, {}, {}, false};
 }
 CriteriaAction read(const json& p, Is<CriteriaAction>) {
@@ -504,6 +505,7 @@ CriteriaAction read(const json& p, Is<CriteriaAction>) {
   s.spacing.min_spacing = p.value("min_spacing", s.spacing.min_spacing);
   s.spacing.max_spacing_ratio = p.value("max_spacing_ratio", s.spacing.max_spacing_ratio);
   s.ugr_max = p.value("ugr_max", s.ugr_max);
+  s.posture = p.value("posture", std::string("seated")) == "standing" ? DesignSettings::Posture::Standing : DesignSettings::Posture::Seated;
   return a;
 }
 json write(const CriteriaAction& a) {
@@ -515,7 +517,8 @@ json write(const CriteriaAction& a) {
             {"ceiling_grid", s.ceiling_grid},
             {"min_spacing", s.spacing.min_spacing},
             {"max_spacing_ratio", s.spacing.max_spacing_ratio},
-            {"ugr_max", s.ugr_max}};
+            {"ugr_max", s.ugr_max},
+            {"posture", s.posture == DesignSettings::Posture::Standing ? "standing" : "seated"}};
   if (a.design.grid_origin_world) p["ceiling_grid_origin"] = {a.design.grid_origin_world->x, a.design.grid_origin_world->y};
   return p;
 }
@@ -711,6 +714,8 @@ void validate_action(const Action& action, const std::string& source, size_t ind
     const json& p = action.params;
     const std::string layout = p.value("layout", std::string("auto"));
     if (layout != "auto" && layout != "array" && layout != "free") fail("criteria: 'layout' must be auto, array or free, not '" + layout + "'");
+    const std::string posture = p.value("posture", std::string("seated"));
+    if (posture != "seated" && posture != "standing") fail("criteria: 'posture' must be seated or standing, not '" + posture + "'");
     if (p.contains("maintenance_factor") && p["maintenance_factor"].get<double>() > 1) fail("criteria: 'maintenance_factor' must be in (0, 1]");
     if (p.contains("margin") && p["margin"].get<double>() >= 1) fail("criteria: 'margin' must be in [0, 1)");
     if (p.contains("ugr_max") && p["ugr_max"].get<double>() != 0 && !(p["ugr_max"].get<double>() >= 1 && p["ugr_max"].get<double>() <= 40))

@@ -67,8 +67,14 @@ struct DesignSettings {
   /// UGR limit at the standard observers (0: reported only). Needs a
   /// luminaire with a luminous area.
   double ugr_max = 0;
-  float eye_height = 1.2f;  ///< seated observers (EN 12464-1)
+  /// Who the room is for (EN 12464-1): seated people's eyes (the UGR
+  /// observers) and cylindrical illuminance at 1.2 m over the floor,
+  /// standing people's at 1.6 m.
+  enum class Posture { Seated, Standing };
+  Posture posture = Posture::Seated;
+  float eye_height() const { return posture == Posture::Standing ? 1.6f : 1.2f; }
 };
+const char* to_string(DesignSettings::Posture posture);
 
 /// What one kind of layout came to.
 struct LayoutSummary {
@@ -111,7 +117,8 @@ struct DesignReport {
   /// over the work planes' points at `height` over the floor, Ēz (the mean
   /// of four vertical illuminances, facing ±x and ±z: the standard's
   /// approximation), its Emin and U0, and the modelling (Ēz/Ēh, the
-  /// horizontal there; EN 12464-1 asks 0.3 to 0.6). Reported, not a criterion.
+  /// horizontal there; EN 12464-1 asks 0.3 to 0.6). Reported, not a
+  /// criterion; `height` is the posture's eye height (DesignSettings).
   struct Cylindrical {
     double height = 1.2, mean = 0, min = 0, u0 = 0, modelling = 0;
     size_t points = 0;
