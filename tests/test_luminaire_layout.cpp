@@ -509,6 +509,37 @@ TEST_CASE("posture: --posture standing puts the UGR observers' eyes and the cyli
   CHECK_FALSE(std::filesystem::exists(dir / "bad.json"));
 }
 
+// EN 12464-1's Ēz as a criterion: a row of the program as Ē's, so the
+// layout meets it at least flux (issue 34).
+TEST_CASE("cylindrical illuminance as a criterion: --cylindrical-min is met at least flux, or exit 3 when nothing can", "[lux][cli]") {
+  const auto dir = test::output_dir("layout_cylindrical");
+  const auto criteria = criteria_file(dir);
+  const auto ies = panel(dir);
+  const Solved free = solve(dir, criteria, ies, {});
+  INFO(free.run.err);
+  REQUIRE(free.run.exit_code == 0);
+  const double ez = free.report["cylindrical"]["mean_lux"].get<double>();
+  REQUIRE(ez > 0);
+  CHECK(free.report["cylindrical"]["min_mean_lux_wanted"].is_null());
+  // Asked 30% more Ēz than the lux criteria alone give: met, with more flux.
+  const double wanted = std::round(1.3 * ez);
+  const Solved asked = solve(dir, criteria, ies, {"--cylindrical-min", std::to_string(wanted)});
+  INFO(asked.run.err);
+  REQUIRE(asked.run.exit_code == 0);
+  CHECK(asked.report["cylindrical"]["mean_lux"].get<double>() >= wanted * (1 - 1e-3));
+  CHECK(asked.report["cylindrical"]["met"] == true);
+  CHECK(asked.report["cylindrical"]["min_mean_lux_wanted"].get<double>() == wanted);
+  CHECK(asked.report["total_luminous_flux_lm"].get<double>() > free.report["total_luminous_flux_lm"].get<double>());
+  CHECK(asked.run.err.find("wanted Ēz ≥") != std::string::npos);
+  // The work plane is still met.
+  REQUIRE(asked.report["grids"].size() >= 1);
+  for (const auto& g : asked.report["grids"]) CHECK(g["met"] == true);
+  // More than every place at full output can give: the best written, exit 3.
+  const Solved impossible = solve(dir, criteria, ies, {"--cylindrical-min", "1000000"});
+  CHECK(impossible.run.exit_code == 3);
+  CHECK(impossible.report["cylindrical"]["met"] == false);
+}
+
 TEST_CASE("energy: W/m² and LENI (EN 15193-1) from the power, the floor and the hours", "[lux][cli]") {
   const auto dir = test::output_dir("layout_energy");
   const auto criteria = criteria_file(dir);

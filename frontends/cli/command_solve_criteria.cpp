@@ -141,7 +141,8 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
           {"ugr", {{"max", finite_or_null(r.ugr)}, {"limit", a.design.settings.ugr_max > 0 ? nlohmann::json(a.design.settings.ugr_max) : nlohmann::json(nullptr)},
                    {"luminous_area_m2", r.luminous_area}, {"observers", observers}}},
           {"posture", to_string(a.design.settings.posture)},
-          {"cylindrical", {{"height_m", r.cylindrical.height}, {"points", r.cylindrical.points}, {"mean_lux", r.cylindrical.mean},
+          {"cylindrical", {{"height_m", r.cylindrical.height}, {"min_mean_lux_wanted", r.cylindrical.wanted > 0 ? nlohmann::json(r.cylindrical.wanted) : nlohmann::json(nullptr)},
+                           {"met", r.cylindrical.met}, {"points", r.cylindrical.points}, {"mean_lux", r.cylindrical.mean},
                            {"min_lux", r.cylindrical.min}, {"u0", r.cylindrical.u0}, {"modelling", r.cylindrical.modelling}}},
           {"energy", {{"floor_area_m2", e.area}, {"power_w", watts ? nlohmann::json(e.power) : nlohmann::json(nullptr)},
                       {"installed_power_w", watts ? nlohmann::json(e.installed) : nlohmann::json(nullptr)},
@@ -344,10 +345,17 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
     };
     std::fprintf(stderr, "hilight: layouts: %s; %s; kept: %s (%s)\n", layout_line("array", report.array).c_str(),
                  layout_line("free", report.free).c_str(), report.chosen.c_str(), report.why.c_str());
-    if (report.cylindrical.points)
-      std::fprintf(stderr, "hilight: cylindrical Ēz %.0f lx at %.1f m (Emin %.0f lx, U0 %.2f), modelling Ēz/Ēh %.2f\n",
+    if (report.cylindrical.points) {
+      std::string wanted;
+      if (report.cylindrical.wanted > 0) {
+        char w[96];
+        std::snprintf(w, sizeof(w), " (wanted Ēz ≥ %g%s)", report.cylindrical.wanted, report.cylindrical.met ? "" : ", NOT MET");
+        wanted = w;
+      }
+      std::fprintf(stderr, "hilight: cylindrical Ēz %.0f lx at %.1f m (Emin %.0f lx, U0 %.2f), modelling Ēz/Ēh %.2f%s\n",
                    report.cylindrical.mean, report.cylindrical.height, report.cylindrical.min, report.cylindrical.u0,
-                   report.cylindrical.modelling);
+                   report.cylindrical.modelling, wanted.c_str());
+    }
     if (report.luminous_area > 0) {
       char text[160];
       if (std::isfinite(report.ugr)) std::snprintf(text, sizeof(text), "UGR %.1f at the standard observers", report.ugr);

@@ -37,7 +37,7 @@ std::vector<double> comma_numbers(const std::string& text, size_t count, const s
 const std::vector<std::string>& criteria_design_option_names() {
   static const std::vector<std::string> names = {"--maintenance-factor", "--margin",      "--layout",            "--ceiling-grid",
                                                  "--ceiling-grid-origin", "--min-spacing", "--max-spacing-ratio", "--ugr-max",
-                                                 "--posture"};
+                                                 "--posture", "--cylindrical-min"};
   return names;
 }
 
@@ -72,6 +72,10 @@ void add_criteria_design_options(CLI::App& app, CriteriaDesign& design, const st
                  "with criteria: spacing at most this × the mounting height over the work plane (SHR; 0: none)")
       ->check(FiniteNonNegative);
   app.add_option("--ugr-max", s.ugr_max, "with criteria: UGR (CIE 117, standard observers) at most this, e.g. 19")->check(CLI::Range(1.0, 40.0));
+  app.add_option("--cylindrical-min", s.cylindrical_min,
+                 "with criteria: maintained cylindrical illuminance Ēz at the eyes' height over the work planes at least this, "
+                 "lux (EN 12464-1: 50, or 150 where faces must be seen; default: reported only)")
+      ->check(CLI::Range(0.0, 1e6));
   app.add_option_function<std::string>(
          "--posture",
          [&s](const std::string& v) { s.posture = v == "standing" ? DesignSettings::Posture::Standing : DesignSettings::Posture::Seated; },

@@ -15,8 +15,9 @@ namespace hilight::cli {
 bool is_criteria_target(const std::string& path);
 
 /// --maintenance-factor, --margin, --layout, --ceiling-grid,
-/// --ceiling-grid-origin, --min-spacing, --max-spacing-ratio, --ugr-max and
-/// --posture into `design`, in `group` ("": the main options).
+/// --ceiling-grid-origin, --min-spacing, --max-spacing-ratio, --ugr-max,
+/// --cylindrical-min and --posture into `design`, in `group` ("": the main
+/// options).
 void add_criteria_design_options(CLI::App& app, CriteriaDesign& design, const std::string& group = "");
 /// Their names, as add_criteria_design_options adds them.
 const std::vector<std::string>& criteria_design_option_names();

@@ -58,7 +58,24 @@ struct Points {
   size_t criteria = 0;
   std::vector<std::pair<size_t, size_t>> between;  ///< per grid: first, count in `all`
   size_t eyes_first = 0;
+  /// With an Ēz criterion: after the eyes, 4 points a place of the cylinder
+  /// (vertical, facing ±x and ±z), `cylinders` of them.
+  size_t cylinders_first = 0, cylinders = 0;
 };
+
+/// The cylinders Ēz is taken at: over the work planes' points at `height`
+/// above the floor, out of solids.
+std::vector<Vec3> cylinder_places(const RayScene& rays, const IlluminanceCriteria& criteria, float floor_y, float height) {
+  std::vector<Vec3> out;
+  for (const auto& g : criteria.grids)
+    if (g.kind == CriterionGrid::Kind::WorkPlane)
+      for (const Vec3& p : g.points) {
+        const Vec3 at(p.x, floor_y + height, p.z);
+        if (!rays.inside_solid(at)) out.push_back(at);
+      }
+  return out;
+}
+const Vec3 kCylinderNormals[4] = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)};
 
 /// A work plane's points halfway between its points and on its cells'
 /// corners: where its illuminance dips between the calculation points.
@@ -105,6 +122,7 @@ void add_between(const RayScene& rays, const CriterionGrid& g, SurfacePoints& ou
 /// What one place's luminaire gives at full output.
 struct Field {
   std::vector<double> lux;       ///< maintained, at the criteria's points and between them
+  double cylindrical = 0;        ///< maintained Ēz over the cylinders (with an Ēz criterion)
   std::vector<double> indirect;  ///< per observer: illuminance at the eye less the direct (new)
   std::vector<double> glare;     ///< per observer: L²ω/p²
 };
@@ -119,8 +137,10 @@ struct Program {
   size_t rows() const { return b.size(); }
 };
 
-std::vector<double> program_column(const IlluminanceCriteria& criteria, const Points& pts, double margin, const std::vector<double>& e) {
+std::vector<double> program_column(const IlluminanceCriteria& criteria, const Points& pts, double margin, const Field& f) {
+  const std::vector<double>& e = f.lux;
   std::vector<double> col;
+  if (pts.cylinders) col.push_back(f.cylindrical);  // Ēz ≥ (1+m)·wanted
   size_t first = 0;
   for (size_t g = 0; g < criteria.grids.size(); ++g) {
     const auto& grid = criteria.grids[g];
@@ -138,8 +158,9 @@ std::vector<double> program_column(const IlluminanceCriteria& criteria, const Po
   return col;
 }
 
-std::vector<double> program_bounds(const IlluminanceCriteria& criteria, const Points& pts, double margin) {
+std::vector<double> program_bounds(const IlluminanceCriteria& criteria, const Points& pts, double margin, double cylindrical_min) {
   std::vector<double> b;
+  if (pts.cylinders) b.push_back(cylindrical_min * (1 + margin) * (1.0 + 1e-4));
   for (size_t g = 0; g < criteria.grids.size(); ++g) {
     const auto& grid = criteria.grids[g];
     b.push_back(grid.lux * (1 + margin) * (1.0 + 1e-4));
@@ -506,6 +527,17 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
     pts.all.positions.push_back(o.eye);
     pts.all.normals.push_back(glm::normalize(o.view));
   }
+  pts.cylinders_first = pts.all.positions.size();
+  if (settings.cylindrical_min > 0) {
+    const std::vector<Vec3> cylinders = cylinder_places(rays, criteria, room.floor_y, settings.eye_height());
+    if (cylinders.empty()) throw InputError("--cylindrical-min: no work plane point has room for a person's head over it");
+    for (const Vec3& at : cylinders)
+      for (const Vec3& n : kCylinderNormals) {
+        pts.all.positions.push_back(at);
+        pts.all.normals.push_back(n);
+      }
+    pts.cylinders = cylinders.size();
+  }
   pts.all.albedo.assign(pts.all.positions.size(), Rgb(1.f));
   const size_t lux_points = pts.eyes_first;
 
@@ -521,6 +553,11 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
       for (double& v : e) v *= peak / kLumensPerWatt;  // φ is for 1 W/sr at the peak; full output is peak/683
       fields[j].lux.assign(e.begin(), e.begin() + long(lux_points));
       for (double& v : fields[j].lux) v *= mf;
+      if (pts.cylinders) {
+        double sum = 0;
+        for (size_t k = 0; k < 4 * pts.cylinders; ++k) sum += e[pts.cylinders_first + k];
+        fields[j].cylindrical = mf * sum / double(4 * pts.cylinders);
+      }
       const Light full = light_at(places[j], 1.0);
       for (size_t o = 0; o < observers.size(); ++o) {
         const GlareTerms t = glare_terms(rays, full, luminous_area, observers[o]);
@@ -571,8 +608,8 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
   // 2. The program and its bound.
   const auto t1 = Clock::now();
   Program program;
-  program.b = program_bounds(criteria, pts, margin);
-  for (const auto& f : fields) program.column.push_back(program_column(criteria, pts, margin, f.lux));
+  program.b = program_bounds(criteria, pts, margin, settings.cylindrical_min);
+  for (const auto& f : fields) program.column.push_back(program_column(criteria, pts, margin, f));
   std::vector<Footprint> outlines;
   for (const auto& c : useful) outlines.push_back(footprint_of(light_at(c, 1.0), size));
   Walker walker(program, useful, fields, outlines, settings.spacing, plane, observers.size());
@@ -710,9 +747,12 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
     const auto evaluate = [&](ArrayResult& r) {
       // One dimming for all: Ē rows need x ≥ b/col; U0 rows need col ≥ 0 whatever x.
       const size_t rows = program.rows();
-      std::vector<double> sum(lux_points, 0.0);
-      for (const auto& f : r.fields)
-        for (size_t i = 0; i < sum.size(); ++i) sum[i] += f.lux[i];
+      Field sum;
+      sum.lux.assign(lux_points, 0.0);
+      for (const auto& f : r.fields) {
+        for (size_t i = 0; i < sum.lux.size(); ++i) sum.lux[i] += f.lux[i];
+        sum.cylindrical += f.cylindrical;
+      }
       const std::vector<double> col = program_column(criteria, pts, margin, sum);
       double x = 0;
       for (size_t k = 0; k < rows; ++k)
@@ -860,16 +900,11 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
   report.cylindrical.height = settings.eye_height();
   {
     SurfacePoints cyl;
-    for (const auto& g : criteria.grids)
-      if (g.kind == CriterionGrid::Kind::WorkPlane)
-        for (const Vec3& p : g.points) {
-          const Vec3 at(p.x, room.floor_y + float(report.cylindrical.height), p.z);
-          if (rays.inside_solid(at)) continue;
-          for (const Vec3& n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(0, 1, 0)}) {
-            cyl.positions.push_back(at);
-            cyl.normals.push_back(n);
-          }
-        }
+    for (const Vec3& at : cylinder_places(rays, criteria, room.floor_y, float(report.cylindrical.height)))
+      for (const Vec3& n : {kCylinderNormals[0], kCylinderNormals[1], kCylinderNormals[2], kCylinderNormals[3], Vec3(0, 1, 0)}) {
+        cyl.positions.push_back(at);
+        cyl.normals.push_back(n);
+      }
     if (!cyl.positions.empty()) {
       cyl.albedo.assign(cyl.positions.size(), Rgb(1.f));
       const std::vector<double> ev = lux_from_radiance(reference.illuminate(cyl, lights));
@@ -887,6 +922,9 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
       c.u0 = c.mean > 0 ? c.min / c.mean : 0;
       c.modelling = horizontal > 0 ? sum / horizontal : 0;
     }
+    report.cylindrical.wanted = settings.cylindrical_min;
+    report.cylindrical.met = !(settings.cylindrical_min > 0) || report.cylindrical.mean >= settings.cylindrical_min * (1 + margin) * (1 - 1e-3);
+    report.met = report.met && report.cylindrical.met;
   }
   report.ugr = kNaN;
   for (size_t o = 0; o < observers.size(); ++o) {
@@ -916,6 +954,9 @@ Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, co
     else if (settings.fixed_count)
       std::snprintf(text, sizeof(text), "--lights %zu: %zu luminaires fall short of the criteria where they may stand", settings.fixed_count,
                     settings.fixed_count);
+    else if (!report.cylindrical.met)
+      std::snprintf(text, sizeof(text), "cylindrical illuminance Ēz %.0f lx is below the %g lx asked%s", report.cylindrical.mean,
+                    settings.cylindrical_min, margin > 0 ? " (with the margin)" : "");
     else if (ugr_limit > 0 && !ugr_ok(report.ugr))
       std::snprintf(text, sizeof(text), "UGR %.1f is above the limit %.1f%s: a luminaire of lower luminance, or other places", report.ugr,
                     ugr_limit, margin > 0 ? " (with the margin)" : "");

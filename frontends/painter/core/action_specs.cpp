@@ -488,7 +488,8 @@ Spec schema_of<CriteriaAction>() {
            {"min_spacing", Kind::NonNegative},
            {"max_spacing_ratio", Kind::NonNegative},
            {"ugr_max", Kind::NonNegative},
-           {"posture", Kind::String}},
+           {"posture", Kind::String},
+           {"cylindrical_min", Kind::NonNegative}},
           {"path"}, {}, {}, false};
 }
 CriteriaAction read(const json& p, Is<CriteriaAction>) {
@@ -506,6 +507,7 @@ CriteriaAction read(const json& p, Is<CriteriaAction>) {
   s.spacing.max_spacing_ratio = p.value("max_spacing_ratio", s.spacing.max_spacing_ratio);
   s.ugr_max = p.value("ugr_max", s.ugr_max);
   s.posture = p.value("posture", std::string("seated")) == "standing" ? DesignSettings::Posture::Standing : DesignSettings::Posture::Seated;
+  s.cylindrical_min = p.value("cylindrical_min", s.cylindrical_min);
   return a;
 }
 json write(const CriteriaAction& a) {
@@ -518,7 +520,8 @@ json write(const CriteriaAction& a) {
             {"min_spacing", s.spacing.min_spacing},
             {"max_spacing_ratio", s.spacing.max_spacing_ratio},
             {"ugr_max", s.ugr_max},
-            {"posture", s.posture == DesignSettings::Posture::Standing ? "standing" : "seated"}};
+            {"posture", s.posture == DesignSettings::Posture::Standing ? "standing" : "seated"},
+            {"cylindrical_min", s.cylindrical_min}};
   if (a.design.grid_origin_world) p["ceiling_grid_origin"] = {a.design.grid_origin_world->x, a.design.grid_origin_world->y};
   return p;
 }
