@@ -20,9 +20,13 @@ using ui::tip;
 
 namespace {
 
-/// ImGui's built-in font is ASCII: the core's D̄ (D + combining macron) spelled out.
+/// ImGui's built-in font is ASCII: the core's D̄ (D + combining macron), the
+/// criteria's Ē and Ēz, ≥ and ≤ spelled out.
 std::string ascii(std::string text) {
-  for (size_t at; (at = text.find("D\u0304")) != std::string::npos;) text.replace(at, 3, "D-bar");
+  static const std::pair<const char*, const char*> spelled[] = {
+      {"D\u0304", "D-bar"}, {"\u0112z", "Ez-mean"}, {"\u0112", "E-mean"}, {"\u2265", ">="}, {"\u2264", "<="}};
+  for (const auto& [from, to] : spelled)
+    for (size_t at; (at = text.find(from)) != std::string::npos;) text.replace(at, std::string(from).size(), to);
   return text;
 }
 
@@ -191,19 +195,28 @@ void PainterApp::panel_view() {
 
 void PainterApp::panel_solve() {
   if (!ImGui::CollapsingHeader("Solve", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const bool busy = m_job->busy();
+  const bool busy = m_job->busy(), criteria = m_job->has_criteria();
+  if (criteria) {  // a lux target: Solve places the luminaire for it, nothing painted is read
+    const std::string luminaire = m_options.job.settings.luminaire ? m_options.job.settings.luminaire->profile_path : "";
+    ImGui::TextWrapped("%s", ascii("Lux criteria " + std::filesystem::path(m_job->criteria_source()).filename().string() + ": Solve places " +
+                                   std::filesystem::path(luminaire).filename().string() + " for them")
+                                 .c_str());
+  }
   ImGui::BeginDisabled(busy);
   if (ImGui::Button("Solve (F5)")) start_job(SolveAction{});
-  tip("Find how many lights, where and how bright, for the painted target (runs in the background)");
+  tip(criteria ? "Place the luminaires for the lux criteria, as hilight solve does (runs in the background)"
+               : "Find how many lights, where and how bright, for the painted target (runs in the background)");
+  ImGui::EndDisabled();
+  ImGui::BeginDisabled(busy || criteria);
   ImGui::SameLine();
   if (ImGui::Button("Fine-tune (F6)")) start_job(FineTuneAction{});
   tip("Re-optimize the current lights for the edited target; no light is added or removed");
   ImGui::SameLine();
   if (ImGui::Button("Add lights (F7)")) start_job(AddLightsAction{});
   tip("Solve for what the current lights leave unlit and append the new lights; old lights stay");
-  ImGui::EndDisabled();
   ImGui::Checkbox("fine-tune after each stroke", &m_options.auto_fine_tune);
   tip("When there are lights, every brush stroke starts a fine-tune (paper section 4.2)");
+  ImGui::EndDisabled();
   if (busy) {
     // The Solver reports stages, not fractions: a sweeping bar labelled with the stage.
     ImGui::ProgressBar(std::fmod(0.5f * float(ImGui::GetTime()), 1.f), ImVec2(-1, 0), m_job->progress().c_str());

@@ -77,6 +77,8 @@ public:
   /// add lights have nothing painted to work on. Not while busy.
   void set_criteria(IlluminanceCriteria criteria, CriteriaDesign design);
   bool has_criteria() const { return m_criteria.has_value(); }
+  /// The criteria's file ("" without criteria).
+  std::string criteria_source() const { return m_criteria ? m_criteria->source : std::string(); }
 
   /// Full solve of `target` (with criteria: of them, `target` unused);
   /// `spot_hints` are spotlights the designer asked for.
