@@ -13,6 +13,8 @@
 // |                 |         | vertices (fast for many lights; used by the cache)   |
 // | hot_spots       | on      | surfaces near a light lit as virtual lights, not by  |
 // |                 |         | gather hits (no fireflies; hot_spots.hpp)            |
+// | bounce_rest_share | 0.01  | "all" adds the geometric rest once it is at most     |
+// |                 |         | this share of the sum (hilight/bounce_series.hpp)    |
 #include "embree_renderer.hpp"
 #include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
@@ -39,6 +41,8 @@ std::unique_ptr<hilight::Renderer> create(const hilight::Properties& props) {
   const std::string hot = props.get_string("hot_spots", "on");
   if (hot != "on" && hot != "off") throw hilight::InputError("renderer embree: hot_spots must be on or off");
   s.hot_spots = hot == "on";
+  s.bounce_rest_share = props.get_double("bounce_rest_share", s.bounce_rest_share);
+  if (!(s.bounce_rest_share > 0 && s.bounce_rest_share < 1)) throw hilight::InputError("renderer embree: bounce_rest_share must be in (0, 1)");
   return std::make_unique<hilight::embree::EmbreeRenderer>(s);
 }
 
@@ -53,8 +57,10 @@ void register_embree(hilight::PluginRegistrar& registrar) {
   // flat; the reference measures and polishes at the user's setting). The
   // preview gathers 16 rays a point: a stroke's fine-tune shows in a
   // fraction of a render. Direct light at a solve's samples takes
-  // milliseconds.
-  registrar.renderer_traits({{"bounce_direct=vertex", "hot_spots=off", "transport_samples=8"}, {"bounce_samples=16"}, true});
+  // milliseconds. Its "all" ends sooner (the rest added at 10% of the sum,
+  // the ratios steady to 2%: the cold product solve 9.6 → 8.0 s): the
+  // reference measures the answer with the strict rule.
+  registrar.renderer_traits({{"bounce_direct=vertex", "hot_spots=off", "transport_samples=8", "bounce_rest_share=0.1"}, {"bounce_samples=16"}, true});
 }
 
 } // namespace

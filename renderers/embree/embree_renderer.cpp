@@ -75,7 +75,7 @@ const MultiBounce* EmbreeRenderer::multi_bounce(CallProgress* progress) {
     const double vertices = double(m_scene->positions.size());
     CallProgress::Phase phase(progress, "tracing paths between surfaces", vertices, vertices * m_settings.transport_samples);
     m_multi = std::make_unique<MultiBounce>(*m_embree, m_vertex_shading, m_settings.transport_samples, m_settings.seed,
-                                            m_settings.bounces, phase.stage());
+                                            m_settings.bounces, m_settings.bounce_rest_share, phase.stage());
     m_rays += m_multi->rays_cast();
     m_multi_built.store(true);
   });
@@ -106,6 +106,8 @@ std::string EmbreeRenderer::settings_key() const {
   std::string further;
   if (m_settings.further_bounces())
     further = "/transport_samples=" + std::to_string(m_settings.transport_samples);
+  if (m_settings.further_bounces() && m_settings.bounce_rest_share != BounceSeriesSum::kRestShare)
+    further += "/rest_share=" + std::to_string(m_settings.bounce_rest_share);
   return "embree/bounces=" + bounces_text(m_settings.bounces) + further + "/samples=" + std::to_string(m_settings.bounce_samples) +
          "/seed=" + std::to_string(m_settings.seed) + "/vertex_bounce=" + std::to_string(m_settings.vertex_interpolated_bounce) +
          "/hot_spots=" + std::to_string(m_settings.hot_spots) + (m_settings.hot_spots ? "/patches=planes" : "");

@@ -9,6 +9,8 @@
 
 #include "hilight/progress.hpp"
 
+#include "hilight/bounce_series.hpp"
+
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -20,6 +22,9 @@ struct EmbreeSettings {
   int bounces = 1;           ///< 0: direct only; 1: plus the first diffuse bounce; N; kAllBounces
   int bounce_samples = 128;  ///< gather rays per point (even)
   int transport_samples = 32;  ///< gather rays per scene vertex for bounces after the first (even; multi_bounce.hpp)
+  /// "All" adds the geometric rest once it is at most this share of the sum
+  /// (BounceSeriesSum::kRestShare; the fast twin takes a looser one).
+  double bounce_rest_share = BounceSeriesSum::kRestShare;
   bool hot_spots = true;     ///< near-light hot patches lit as virtual lights (hot_spots.hpp)
   uint64_t seed = 1;         ///< gather sample stream
   /// Direct light at the gather's hit points: exact shadow rays per hit, or

@@ -16,9 +16,10 @@ SurfacePoints vertices_of(const Scene& scene) { return SurfacePoints::from_verti
 } // namespace
 
 MultiBounce::MultiBounce(const RayScene& es, const std::vector<ShadingPoint>& vertex_shading, int samples, uint64_t seed,
-                         int bounces, ProgressStage* progress)
+                         int bounces, double rest_share, ProgressStage* progress)
     // Another stream than the points' gathers, so the two estimates are independent.
-    : m_es(es), m_gather(es, vertices_of(es.scene()), vertex_shading, samples, seed ^ 0x6d756c7469626f75ull, progress), m_bounces(bounces) {
+    : m_es(es), m_gather(es, vertices_of(es.scene()), vertex_shading, samples, seed ^ 0x6d756c7469626f75ull, progress), m_bounces(bounces),
+      m_rest_share(rest_share) {
   if (bounces != kAllBounces && bounces < 2) throw std::logic_error("MultiBounce: fewer than two bounces need no vertex transport");
 }
 
@@ -50,7 +51,7 @@ std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, si
   for (size_t j = 0; j < lights; ++j)
     for (size_t e = 0; e < n; ++e) direct_by_entry[e * lights + j] = direct[j * n + e];
   std::vector<Rgb> current(lights * n, Rgb(0.f)), next(lights * n, Rgb(0.f));
-  BounceSeriesSum series(lights, n, m_bounces, kMaxSteps, BounceSeriesSum::Layout::EntryMajor);
+  BounceSeriesSum series(lights, n, m_bounces, kMaxSteps, BounceSeriesSum::Layout::EntryMajor, m_rest_share);
   // d₁ = T e₀ from the scalar direct light.
   step(direct_by_entry.data(),
        [](const float* w, float a, float b, float c) { return Rgb(w[0] * a + w[1] * b + w[2] * c); }, current,

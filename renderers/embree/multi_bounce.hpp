@@ -14,6 +14,7 @@
 /// negligible share of the sum, and adds the geometric rest (the rule every
 /// renderer shares: hilight/bounce_series.hpp).
 #include "first_bounce.hpp"
+#include "hilight/bounce_series.hpp"
 #include "hilight/bounces.hpp"
 
 #include <vector>
@@ -25,8 +26,9 @@ public:
   /// `bounces`: the total count (≥ 2), or kAllBounces; `vertex_shading`:
   /// where each scene vertex is shaded (shading_point).
   /// `progress`: advanced by one per vertex gathered.
+  /// `rest_share`: when "all" may add the geometric rest (BounceSeriesSum).
   MultiBounce(const RayScene& es, const std::vector<ShadingPoint>& vertex_shading, int samples, uint64_t seed, int bounces,
-              ProgressStage* progress = nullptr);
+              double rest_share = BounceSeriesSum::kRestShare, ProgressStage* progress = nullptr);
 
   /// The (vertex, side) entries whose direct light the operator reads
   /// (as BounceGather::vertex_sides_read).
@@ -50,6 +52,7 @@ private:
   const RayScene& m_es;
   BounceGather m_gather;  ///< over the scene's vertices
   int m_bounces;
+  double m_rest_share;
 };
 
 } // namespace hilight::embree
