@@ -165,6 +165,15 @@ TEST_CASE("the HTML report's plans of the IFC house mark each light once, in its
   CHECK(count(html, "class=\"colour-scale\"") == sections.size());
   CHECK(count(html, "class=\"scalebar\"") == 3 * sections.size());  // target, result and lux plans
   CHECK(count(html, " lx</text>") >= 5 * sections.size());
+  // Isolines on each storey's lux map (issue 34), in its div, each labelled in lx.
+  for (size_t k = 0; k < sections.size(); ++k) {
+    INFO("storey " << k);
+    const size_t from = html.find("id=\"luxplan-" + std::to_string(k) + "\""), to = html.find("</div></div>", from);
+    REQUIRE(from != std::string::npos);
+    const std::string map = html.substr(from, to - from);
+    CHECK(count(map, "class=\"isoline\"") >= 2);
+    CHECK(count(map, "class=\"isoline\"") <= 12);
+  }
   CHECK(count(html, " m</text></g>") == 3 * sections.size());
   CHECK(count(html, " m, cut at ") == sections.size());
   if (test::skip_without_chromium()) return;

@@ -74,6 +74,57 @@ double scale_top(const Image& lux, const std::vector<uint8_t>& cut) {
   return round_up(std::max(1.0, double(seen[k])));
 }
 
+/// Isolines over a lux plan (marching squares between pixel centres, cells
+/// with a cut or uncovered corner left out) at round levels, about five
+/// between its least lux and the scale's top: SVG paths in the plan's
+/// pixels, each labelled with its level.
+std::string plan_isolines(const Image& lux, const std::vector<uint8_t>& cut, double top) {
+  const int w = lux.width, h = lux.height;
+  const auto valid = [&](int x, int y) {
+    const size_t i = size_t(y) * size_t(w) + size_t(x);
+    return lux.covered[i] && !cut[i];
+  };
+  const auto value = [&](int x, int y) { return double(lux.pixels[size_t(y) * size_t(w) + size_t(x)].r); };
+  double low = top;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (valid(x, y)) low = std::min(low, value(x, y));
+  if (!(top > low)) return "";
+  const double step = round_length(1.5 * (top - low) / 5.0);
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1);
+  for (double level = std::ceil(low / step) * step; level < top; level += step) {
+    std::ostringstream d;
+    d << std::fixed << std::setprecision(1);
+    std::pair<double, double> label{-1, -1};
+    for (int y = 0; y + 1 < h; ++y)
+      for (int x = 0; x + 1 < w; ++x) {
+        const int cx[4] = {x, x + 1, x + 1, x}, cy[4] = {y, y, y + 1, y + 1};  // the cell's corners around it
+        bool all = true;
+        for (int k = 0; k < 4; ++k) all = all && valid(cx[k], cy[k]);
+        if (!all) continue;
+        std::pair<double, double> cross[4];
+        int n = 0;
+        for (int k = 0; k < 4; ++k) {
+          const int j = (k + 1) % 4;
+          const double a = value(cx[k], cy[k]), b = value(cx[j], cy[j]);
+          if ((a < level) == (b < level)) continue;
+          const double t = (level - a) / (b - a);
+          cross[n++] = {double(cx[k]) + 0.5 + t * double(cx[j] - cx[k]), double(cy[k]) + 0.5 + t * double(cy[j] - cy[k])};
+        }
+        for (int k = 0; k + 1 < n; k += 2) {
+          d << "M" << cross[k].first << "," << cross[k].second << "L" << cross[k + 1].first << "," << cross[k + 1].second;
+          if (label.first < 0) label = cross[k];
+        }
+      }
+    if (d.str().empty()) continue;
+    s << "<path class=\"isoline\" d=\"" << d.str() << "\" stroke=\"black\" stroke-opacity=\"0.6\" stroke-width=\"0.8\" fill=\"none\"/>"
+      << "<text x=\"" << label.first + 2 << "\" y=\"" << label.second - 2 << "\" font-size=\"9\">" << std::setprecision(level < 10 ? 1 : 0)
+      << level << " lx</text>" << std::setprecision(1);
+  }
+  return s.str();
+}
+
 /// The colour scale under a lux plan: five ticks, each in lx.
 std::string colour_scale(double top, int width) {
   const int bar = std::max(120, std::min(width - 40, 360)), steps = 40;
@@ -137,13 +188,14 @@ std::string plans_html(const HtmlReport& page, int width) {
     s << marked_plan(result, cut, exposure, "result, plan of storey " + std::to_string(k + 1), markers.str() + bar) << "<br>"
       << "<div class=\"luxplan\" id=\"luxplan-" << k << "\">"
       << marked_plan(false_colour_plan(lux_plan, cut, top), std::vector<uint8_t>(), 1.f, "lux, plan of storey " + std::to_string(k + 1),
-                     lux_markers.str() + bar)
+                     plan_isolines(lux_plan, cut, top) + lux_markers.str() + bar)
       << "<br>" << colour_scale(top, frame.width) << "</div></div>\n";
   }
   s << "</div><p class=\"legend\">Each storey seen from above, cut at the height given (1.5 m over its floor, or halfway to the "
        "next floor when that is nearer; north, −Z, up; walls cut through in grey)"
     << (painted ? ": the target, then what the lights give (same exposure)" : ": what the lights give")
-    << ", then the illuminance on the surfaces seen from above in false colour (lx, the scale below each). Each light is marked "
+    << ", then the illuminance on the surfaces seen from above in false colour (lx, the scale below each; lines: isolines, "
+       "each labelled with its lux). Each light is marked "
        "in its storey with its number and the illuminance on the floor straight below it (through furniture); the bar is a "
        "length in metres.</p>\n";
   return s.str();
