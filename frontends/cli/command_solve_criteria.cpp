@@ -241,8 +241,8 @@ void check_criteria_options(const CLI::App& app, bool criteria_target) {
 }
 
 int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
-  if (!a.luminaire) throw InputError(a.target_path + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
-  check_criteria_design(a.design);
+  criteria_luminaire(a.luminaire, a.target_path);
+  check_design_settings(a.design.settings);
   if (!a.schedule_path.empty()) check_writable(a.schedule_path);
   if (is_ifc_path(a.output)) {  // the luminaires into a copy of the input IFC
     if (!is_ifc_path(a.scene_path))

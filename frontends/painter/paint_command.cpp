@@ -129,11 +129,11 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   parse_size(size, o.width, o.height);
   o.scene = scene;
   o.target = target;
-  if (cli::is_criteria_target(target)) {  // lux criteria: Solve places the luminaire for them
+  const bool lux_target = cli::is_criteria_target(target);
+  if (lux_target) {  // lux criteria: Solve places the luminaire for them
     o.criteria = read_criteria(target);
-    o.criteria_path = target;
     o.target.clear();
-    check_criteria_design(o.design);
+    check_design_settings(o.design.settings);
   } else {
     cli::refuse_without_criteria(app, cli::criteria_design_option_names());
   }
@@ -147,13 +147,15 @@ int run_paint(const std::vector<std::string>& args, Registry& registry) {
   // Lux criteria are about lux a meter would read: every bounce, as hilight
   // solve takes them, unless --bounces says otherwise (there is no stroke to
   // keep quick).
-  if (cli::is_criteria_target(target) && !app.count("--bounces")) solve.renderer.bounces = "all";
+  if (lux_target && !app.count("--bounces")) solve.renderer.bounces = "all";
   o.job = solve.to_spec(registry);
   o.job.settings.placement = solve.placement();
   // As hilight solve takes them (solve_options.hpp): every light this luminaire; the files in these units.
   const std::optional<Light> given_luminaire = solve.luminaire();
-  if (o.criteria && !given_luminaire) throw InputError(target + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
-  if (o.criteria) o.auto_fine_tune = false;  // nothing painted to fine-tune to
+  if (o.criteria) {
+    criteria_luminaire(given_luminaire, target);
+    o.auto_fine_tune = false;  // nothing painted to fine-tune to
+  }
   o.units = solve.units();
   o.quantity = solve.target_quantity();
   if (o.exit_after_script && script.empty() && !o.bench && screenshot.empty() && window_screenshot.empty())

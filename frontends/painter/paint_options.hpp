@@ -26,8 +26,7 @@ struct PaintOptions {
   /// places the --luminaire for it as `hilight solve` does, with `design`
   /// (the criteria options); nothing painted is read, and fine-tune, add
   /// lights and the fine-tune after a stroke do not apply.
-  std::optional<IlluminanceCriteria> criteria;
-  std::filesystem::path criteria_path;
+  std::optional<IlluminanceCriteria> criteria;  ///< its `source`: the file
   CriteriaDesign design;
   std::filesystem::path lights;      ///< lights JSON to start from
   std::filesystem::path script;      ///< session to replay

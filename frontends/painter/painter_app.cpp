@@ -70,7 +70,7 @@ PainterApp::PainterApp(const PaintOptions& options, const Registry& registry, st
   // The units first: the files after them are read in them.
   if (!m_options.recorded_before && (m_options.units != Units::Radiometric || m_options.quantity != TargetQuantity::Radiance))
     record(UnitsAction{m_options.units, m_options.quantity});
-  if (m_options.criteria) record(CriteriaAction{absolute(m_options.criteria_path), m_options.design});
+  if (m_options.criteria) record(CriteriaAction{absolute(m_options.criteria->source), m_options.design});
   // (Loaded by the document directly: its errors name the file, not a script action.)
   if (!m_options.target.empty()) {
     m_document->load_target(m_options.target);

@@ -104,10 +104,10 @@ std::string EmbreeRenderer::settings_key() const {
   // A cache on disk holds responses of one model: a key changes with it
   // ("patches=planes": every cell's patches, not only hot ones).
   std::string further;
-  if (m_settings.further_bounces())
+  if (m_settings.further_bounces()) {
     further = "/transport_samples=" + std::to_string(m_settings.transport_samples);
-  if (m_settings.further_bounces() && m_settings.bounce_rest_share != BounceSeriesSum::kRestShare)
-    further += "/rest_share=" + std::to_string(m_settings.bounce_rest_share);
+    if (m_settings.bounce_rest_share != BounceSeriesSum::kRestShare) further += "/rest_share=" + std::to_string(m_settings.bounce_rest_share);
+  }
   return "embree/bounces=" + bounces_text(m_settings.bounces) + further + "/samples=" + std::to_string(m_settings.bounce_samples) +
          "/seed=" + std::to_string(m_settings.seed) + "/vertex_bounce=" + std::to_string(m_settings.vertex_interpolated_bounce) +
          "/hot_spots=" + std::to_string(m_settings.hot_spots) + (m_settings.hot_spots ? "/patches=planes" : "");

@@ -33,15 +33,9 @@ std::string isolines(const CriterionGrid& grid, const double* lux, const Bounds&
     at[{std::lround((grid.points[i].x - o.x) / cx), std::lround((grid.points[i].z - o.z) / cz)}] = i;
   double low = lux[0], high = lux[0];
   for (size_t i = 0; i < grid.points.size(); ++i) low = std::min(low, lux[i]), high = std::max(high, lux[i]);
-  if (!(high > low)) return "";
-  // Round levels: a step of 1, 2 or 5 × 10^k giving about five lines.
-  const double raw = (high - low) / 5.0, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = magnitude;
-  for (double m : {1.0, 2.0, 5.0, 10.0})
-    if (m * magnitude <= raw * 1.5) step = m * magnitude;
   std::ostringstream s;
   s << std::fixed << std::setprecision(1);
-  for (double level = std::ceil(low / step) * step; level < high; level += step) {
+  for (const double level : isoline_levels(low, high)) {
     std::ostringstream d;
     d << std::fixed << std::setprecision(1);
     std::pair<double, double> label{-1, -1};

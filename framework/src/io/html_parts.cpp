@@ -69,6 +69,14 @@ double round_length(double at_most) {
   return out;
 }
 
+std::vector<double> isoline_levels(double low, double high) {
+  std::vector<double> levels;
+  if (!(high > low)) return levels;
+  const double step = round_length(1.5 * (high - low) / 5.0);
+  for (double level = std::ceil(low / step) * step; level < high; level += step) levels.push_back(level);
+  return levels;
+}
+
 double round_up(double at_least) {
   const double magnitude = std::pow(10.0, std::floor(std::log10(std::max(at_least, 1e-9))));
   for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})

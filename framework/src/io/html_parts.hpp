@@ -5,6 +5,7 @@
 #include "hilight/image.hpp"
 
 #include <string>
+#include <vector>
 
 namespace hilight {
 
@@ -21,6 +22,9 @@ Rgb false_colour(double t);
 std::string false_colour_css(double t);
 /// A round length (1, 2 or 5 × 10^k) no longer than `at_most`.
 double round_length(double at_most);
+/// Round levels (a step of 1, 2 or 5 × 10^k, about five of them) from `low`
+/// up to below `high`: where isolines are drawn. None unless high > low.
+std::vector<double> isoline_levels(double low, double high);
 /// A round number (1, 2, 2.5, 5 or 10 × 10^k) at least `at_least`: the top of a colour scale.
 double round_up(double at_least);
 

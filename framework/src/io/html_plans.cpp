@@ -89,11 +89,9 @@ std::string plan_isolines(const Image& lux, const std::vector<uint8_t>& cut, dou
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       if (valid(x, y)) low = std::min(low, value(x, y));
-  if (!(top > low)) return "";
-  const double step = round_length(1.5 * (top - low) / 5.0);
   std::ostringstream s;
   s << std::fixed << std::setprecision(1);
-  for (double level = std::ceil(low / step) * step; level < top; level += step) {
+  for (const double level : isoline_levels(low, top)) {
     std::ostringstream d;
     d << std::fixed << std::setprecision(1);
     std::pair<double, double> label{-1, -1};

@@ -10,12 +10,9 @@
 
 namespace hilight {
 
-void check_criteria_design(const CriteriaDesign& design) {
-  const DesignSettings& s = design.settings;
-  if (!(s.maintenance_factor > 0 && s.maintenance_factor <= 1))
-    throw InputError("--maintenance-factor " + std::to_string(s.maintenance_factor) +
-                     ": must be in (0, 1] (maintained = MF × new; 0.8 is a clean office's)");
-  if (!(s.margin >= 0 && s.margin < 1)) throw InputError("--margin " + std::to_string(s.margin) + ": must be in [0, 1)");
+const Light& criteria_luminaire(const std::optional<Light>& luminaire, const std::string& source) {
+  if (!luminaire) throw InputError(source + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
+  return *luminaire;
 }
 
 Lighting design_in_scene(Renderer& reference, const Scene& scene, const RayScene& rays, IlluminanceCriteria& criteria,

@@ -441,13 +441,18 @@ std::vector<float> candidate_layers(const LightSpace& space, float plane, float 
 
 } // namespace
 
+void check_design_settings(const DesignSettings& s) {
+  if (!(s.maintenance_factor > 0 && s.maintenance_factor <= 1))
+    throw InputError("--maintenance-factor " + std::to_string(s.maintenance_factor) +
+                     ": must be in (0, 1] (maintained = MF × new; 0.8 is a clean office's)");
+  if (!(s.margin >= 0 && s.margin < 1)) throw InputError("--margin " + std::to_string(s.margin) + ": must be in [0, 1)");
+}
+
 Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, const Light& luminaire,
                                 const IlluminanceCriteria& criteria, const DesignSettings& settings, DesignReport& report) {
   const bool with_profile = luminaire.profile && (luminaire.type == LightType::Luminaire || is_area(luminaire.type));
   if (!with_profile) throw InputError("illuminance criteria need a luminaire (--luminaire FILE)");
-  if (!(settings.maintenance_factor > 0 && settings.maintenance_factor <= 1))
-    throw InputError("--maintenance-factor " + std::to_string(settings.maintenance_factor) + ": must be in (0, 1]");
-  if (!(settings.margin >= 0 && settings.margin < 1)) throw InputError("--margin " + std::to_string(settings.margin) + ": must be in [0, 1)");
+  check_design_settings(settings);
   const RayScene& rays = space.rays();
   const Photometry& profile = *luminaire.profile;
   const double peak = profile.peak(), rated = profile.flux(), mf = settings.maintenance_factor, margin = settings.margin;

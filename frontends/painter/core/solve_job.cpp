@@ -160,7 +160,7 @@ void SolveJob::finish(JobResult result, const Lighting& kept) {
 void SolveJob::start_criteria() {
   if (m_busy) throw std::logic_error("SolveJob: a job is already running");
   if (m_worker.joinable()) m_worker.join();
-  if (!m_options.settings.luminaire) throw InputError(m_criteria->source + ": illuminance criteria need --luminaire FILE (the luminaire to place)");
+  criteria_luminaire(m_options.settings.luminaire, m_criteria->source);  // before the worker: an input error of the action
   m_cuts_valid = false;
   {
     std::lock_guard<std::mutex> lock(m_mutex);

@@ -10,6 +10,7 @@
 
 #include <glm/vec2.hpp>
 #include <optional>
+#include <string>
 
 namespace hilight {
 
@@ -20,9 +21,9 @@ struct CriteriaDesign {
   std::optional<glm::dvec2> grid_origin_world;
 };
 
-/// InputError for a maintenance factor outside (0, 1] or a margin outside
-/// [0, 1), naming the option.
-void check_criteria_design(const CriteriaDesign& design);
+/// The luminaire to place for the criteria of file `source`, or InputError
+/// naming the file when none was given (--luminaire).
+const Light& criteria_luminaire(const std::optional<Light>& luminaire, const std::string& source);
 
 /// Moves `criteria`'s points from the scene file's coordinates into the
 /// scene's own (InputError, naming `criteria.source`, when their unit is not

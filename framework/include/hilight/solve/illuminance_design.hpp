@@ -135,6 +135,11 @@ struct DesignReport {
   std::map<std::string, double> seconds;
 };
 
+/// InputError for a maintenance factor outside (0, 1] or a margin outside
+/// [0, 1), naming the option (design_for_illuminance checks them too;
+/// callers call it first to fail before loading a scene).
+void check_design_settings(const DesignSettings& settings);
+
 /// `luminaire`: the template (its profile, aim and spin; a point-like
 /// luminaire, or an area source with a profile); the lights returned are
 /// copies with position, spin (or `up`) and intensity (dimming × the
