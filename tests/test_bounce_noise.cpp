@@ -2,7 +2,10 @@
 // makes a 1/d² hot spot that gather rays hit rarely and brightly. Measured as
 // each flat-region vertex's deviation of the indirect light from the mean of
 // its mesh neighbours (the speckle a designer sees).
+#include "hilight/fixtures/real_model_scenes.hpp"
 #include "hilight/fixtures/scene_builders.hpp"
+#include "hilight/io/scene_io.hpp"
+#include "random_lights.hpp"
 #include "support.hpp"
 
 #include <algorithm>
@@ -47,6 +50,46 @@ Speckle neighbour_deviation(const Scene& scene, const std::vector<Rgb>& indirect
     }
     if (!flat || !open || mean < 0.01 * scene_mean) continue;
     deviations.push_back(std::abs((indirect[v].r + indirect[v].g + indirect[v].b) - mean) / mean);
+  }
+  Speckle s;
+  s.vertices = deviations.size();
+  if (deviations.empty()) return s;
+  std::sort(deviations.begin(), deviations.end());
+  s.median = deviations[deviations.size() / 2];
+  s.p99 = deviations[std::min(deviations.size() - 1, size_t(0.99 * double(deviations.size())))];
+  return s;
+}
+
+/// The speckle of `indirect` less that of the converged field `reference`
+/// (its contact shadows and corners): per flat, open vertex of `indirect`,
+/// |(x_v − mean x) − (r_v − mean r)| / mean x over its neighbours.
+Speckle excess_deviation(const Scene& scene, const std::vector<Rgb>& indirect, const std::vector<Rgb>& reference) {
+  std::vector<Rgb> difference(indirect.size());
+  for (size_t v = 0; v < indirect.size(); ++v) difference[v] = indirect[v] - reference[v];
+  std::vector<std::vector<uint32_t>> neighbours(scene.positions.size());
+  for (const auto& t : scene.triangles)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        if (a != b) neighbours[t[a]].push_back(t[b]);
+  auto sum = [](const Rgb& c) { return double(c.r) + c.g + c.b; };
+  double scene_mean = 0;
+  for (const auto& c : indirect) scene_mean += sum(c) / double(indirect.size());
+  std::vector<double> deviations;
+  for (size_t v = 0; v < neighbours.size(); ++v) {
+    auto& n = neighbours[v];
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+    if (n.size() < 3) continue;
+    bool flat = true, open = sum(indirect[v]) > 0;
+    double mean = 0, mean_difference = 0;
+    for (uint32_t w : n) {
+      flat &= glm::dot(scene.normals[w], scene.normals[v]) > 0.999f;
+      open &= sum(indirect[w]) > 0;
+      mean += sum(indirect[w]) / double(n.size());
+      mean_difference += sum(difference[w]) / double(n.size());
+    }
+    if (!flat || !open || mean < 0.01 * scene_mean) continue;
+    deviations.push_back(std::abs(sum(difference[v]) - mean_difference) / mean);
   }
   Speckle s;
   s.vertices = deviations.size();
@@ -104,5 +147,38 @@ TEST_CASE("bounce noise: the hot patches add no light and lose none (against a 4
                 position.x, position.y, position.z, 100 * (sum_with / sum_reference - 1), 100 * dbar_with, 100 * dbar_without);
     CHECK(std::abs(sum_with / sum_reference - 1) < 0.02);  // no light added or lost
     CHECK(dbar_with < 0.08);
+  }
+}
+
+// A measurement, not a check (minutes): issue 32's speckle on the FZK house
+// (assimp-testmodels) with four ceiling lamps 27 cm under the ceilings, at
+// the defaults against a converged gather, with one bounce and with every
+// bounce (docs/rendering-model.md, "Patches of light").
+TEST_CASE("bounce noise: the FZK house's speckle with one and with every bounce (a measurement)", "[.][measure][fzk-speckle]") {
+  const auto scene = std::make_shared<const Scene>(load_scene(builders::testmodels_dir() / "IFC" / "AC14-FZK-Haus.ifc"));
+  const auto rays = RayScene::shared(scene);
+  std::mt19937_64 rng(32);
+  test::LampRules rules;
+  rules.min_drop = rules.max_drop = 0.27f;
+  const Lighting lamps = test::random_ceiling_lamps(*rays, rng, 4, rules);
+  const SurfacePoints vertices = SurfacePoints::from_vertices(*scene);
+  for (const char* bounces : {"1", "all"}) {
+    auto indirect = [&](std::vector<std::string> settings) {
+      settings.push_back(std::string("bounces=") + bounces);
+      const auto responses = test::make_renderer("embree", scene, settings)->unit_responses(vertices, lamps, Transport::IndirectOnly);
+      std::vector<Rgb> out(vertices.size(), Rgb(0.f));
+      for (size_t j = 0; j < lamps.size(); ++j)
+        for (size_t i = 0; i < vertices.size(); ++i) out[i] += lamps[j].intensity * responses[j * vertices.size() + i];
+      return out;
+    };
+    const auto defaults = indirect({});
+    const auto converged = indirect({"bounce_samples=4096", "transport_samples=256", "hot_spots=off"});
+    const Speckle speckle = neighbour_deviation(*scene, defaults), own = neighbour_deviation(*scene, converged),
+                  excess = excess_deviation(*scene, defaults, converged);
+    std::printf("FZK house, bounces %s, %zu vertices: speckle %.1f%% / %.0f%% (converged %.1f%% / %.0f%%), excess %.1f%% / %.0f%%, "
+                "bounce error per vertex D-bar %.1f%%\n",
+                bounces, speckle.vertices, 100 * speckle.median, 100 * speckle.p99, 100 * own.median, 100 * own.p99, 100 * excess.median,
+                100 * excess.p99, 100 * test::dbar(defaults, converged));
+    CHECK(speckle.vertices > 1000);
   }
 }

@@ -186,3 +186,27 @@ TEST_CASE("IFC says its unit (assimp applies it), and IFC refuses another --unit
   CHECK(refused.exit_code == 2);
   CHECK(refused.err.find("does not apply") != std::string::npos);
 }
+
+TEST_CASE("a glTF written in millimetres takes --unit mm as an override, said once: the engine, not rooms", "[units][cli][real]") {
+  const fs::path engine = builders::testmodels_dir() / "glTF2" / "2CylinderEngine-glTF-Binary" / "2CylinderEngine.glb";
+  if (!fs::exists(engine)) {
+    std::cout << "SKIPPED: assimp-testmodels is not installed" << std::endl;
+    return;
+  }
+  const auto m = test::run_hilight({"info", engine.string(), "--json"});
+  const auto mm = test::run_hilight({"info", engine.string(), "--unit", "mm", "--json"});
+  REQUIRE(m.exit_code == 0);
+  REQUIRE(mm.exit_code == 0);
+  const auto as_metres = nlohmann::json::parse(m.out), as_millimetres = nlohmann::json::parse(mm.out);
+  // Read as its specification says, a 766 m engine whose cavities are room-sized.
+  CHECK(double(as_metres["size_m"]) == Approx(765.76).epsilon(1e-3));
+  CHECK(as_metres["rooms"].size() >= 1);
+  CHECK(m.err.find("--unit") == std::string::npos);  // nothing to say: its size is possible
+  // In millimetres, as it was written: 0.77 m, no rooms, and the override said once, naming the file.
+  CHECK(as_millimetres["unit"] == "mm");
+  CHECK(double(as_millimetres["size_m"]) == Approx(double(as_metres["size_m"]) / 1000).epsilon(1e-5));
+  CHECK(as_millimetres["rooms"].empty());
+  CHECK(std::count(mm.err.begin(), mm.err.end(), '\n') == 1);
+  CHECK(mm.err.find("2CylinderEngine.glb") != std::string::npos);
+  CHECK(mm.err.find("glTF is in metres by its specification") != std::string::npos);
+}

@@ -84,8 +84,8 @@ void check_output_type(const std::string& path, const std::vector<std::string>& 
 
 void add_scene_options(CLI::App& app, SceneLoadOptions& options, const std::string& tuning_group) {
   app.add_option("--unit", options.unit,
-                 "the scene file's length unit when its format does not say (OBJ, PLY, ...): mm, cm, m, in, ft (default m); "
-                 "positions in files and options are in it")
+                 "the scene file's length unit when its format does not say (OBJ, PLY, ...), or a glTF written in another "
+                 "unit than its metres: mm, cm, m, in, ft (default m); positions in files and options are in it")
       ->check(CLI::IsMember({"mm", "cm", "m", "in", "ft"}));
   auto* edge = app.add_option("--max-edge", options.max_edge, "longest edge after tessellation, in the file's unit (default: diagonal/40)")
                    ->check(FiniteNonNegative);

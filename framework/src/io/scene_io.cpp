@@ -242,13 +242,17 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   // Its unit, then home from far away, exactly, in metres (scene_origin.hpp).
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  const bool metric = ext == ".gltf" || ext == ".glb" || ext == ".ifc" || ext == ".ifczip";
+  const bool ifc = ext == ".ifc" || ext == ".ifczip", gltf = ext == ".gltf" || ext == ".glb", metric = ifc || gltf;
   scene.frame.unit = options.unit.empty() ? "m" : options.unit;
   scene.frame.scale = metres_per_unit(scene.frame.unit);
-  if (metric && scene.frame.unit != "m")
-    throw InputError(file, std::string(ext == ".ifc" || ext == ".ifczip" ? "IFC files say their unit (assimp converts it to metres)"
-                                                                        : "glTF files are in metres (their specification)") +
-                               ": --unit " + scene.frame.unit + " does not apply");
+  if (ifc && scene.frame.unit != "m")
+    throw InputError(file, "IFC files say their unit (assimp converts it to metres): --unit " + scene.frame.unit + " does not apply");
+  // glTF is in metres by its specification, but some files were written in
+  // another unit (Khronos' 2CylinderEngine in millimetres: 766 m across
+  // read as metres, its cavities as large as rooms): --unit overrides, said.
+  if (gltf && scene.frame.unit != "m")
+    std::fprintf(stderr, "hilight: note: %s: glTF is in metres by its specification; read in %s, as --unit says\n", file.c_str(),
+                 scene.frame.unit.c_str());
   scene.update_bounds();
   if (!shifted.text.empty()) {  // already moved home, in double: scaled only
     scene.frame.origin = shifted.origin;
