@@ -75,13 +75,14 @@ struct BenchScene {
 };
 
 void bench_scene(const BenchScene& s, const std::vector<std::string>& caches, size_t probes, const std::filesystem::path& dir,
-                 Registry& registry) {
+                 const std::string& bounces, Registry& registry) {
   const Scene& scene = *s.scene;
   const RayScene rays(scene);
   // The cache keeps the bounce of the solve's fast twin: bench that renderer.
   auto renderer = registry.create_renderer(
       PluginDefaults::renderer,
-      Properties::from_assignments(fast_renderer_settings(registry.renderer_traits(PluginDefaults::renderer), reference_renderer_settings({}, 1))));
+      Properties::from_assignments(fast_renderer_settings(registry.renderer_traits(PluginDefaults::renderer),
+                                                         reference_renderer_settings({"bounces=" + bounces}, 1))));
   renderer->set_scene(s.scene);
   const Bounds bounds = scene.light_bounds();
   const Target target = bind_target("vertices", scene.positions, std::vector<Rgb>(scene.positions.size(), Rgb(1.f)),
@@ -146,6 +147,8 @@ int run_bench_cache(const std::vector<std::string>& args, Registry& registry) {
   app.add_option("--probes", probes, "random light positions the bounce is compared at")->check(CLI::Range(1, 4096))->capture_default_str();
   app.add_option("--dir", dir, "scratch folder for the cache files")->capture_default_str();
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  std::string bounces = "1";
+  app.add_option("--bounces", bounces, "diffuse bounces the cache keeps, as hilight solve takes them")->check(BounceCount)->capture_default_str();
   if (auto code = parse_arguments(app, args)) return *code;
   set_thread_limit(threads);
   for (const auto& name : caches) {  // unknown names and settings fail before any work
@@ -160,7 +163,7 @@ int run_bench_cache(const std::vector<std::string>& args, Registry& registry) {
     else if (name == "real-room") s.scene = std::make_shared<const Scene>(finish_scene(builders::real_furnished_room(), {}));
     else if (name == "home") s.scene = std::make_shared<const Scene>(finish_scene(builders::furnished_home().scene, {builders::kHomeTestEdge}));
     else throw InputError("bench cache: unknown scene '" + name + "' (room, building, real-room, home)");
-    bench_scene(s, caches, probes, dir, registry);
+    bench_scene(s, caches, probes, dir, bounces, registry);
   }
   return 0;
 }

@@ -224,6 +224,19 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
     });
     if (bounced.empty()) std::vector<float>().swap(vertex_direct);
   }
+  // With further bounces and no patches of light, a hit's direct light and
+  // its light bounced again are read at the same hit with the same weights:
+  // one field of both, one walk over the hits (the same light, rounded
+  // once per hit rather than once per walk).
+  const bool merged = interpolated && !bounced.empty() &&
+                      std::none_of(hot.begin(), hot.end(), [](const HotSpots& h) { return !h.empty(); });
+  if (merged) {
+    tbb::parallel_for(size_t(0), 2 * v_count, [&](size_t entry) {
+      for (size_t j = 0; j < l_count; ++j) bounced[entry * l_count + j] += Rgb(direct_by_side[entry * l_count + j]);
+    });
+    std::vector<float>().swap(direct_by_side);
+    std::vector<float>().swap(vertex_direct);
+  }
   std::vector<const HotSpots*> hot_of(l_count, nullptr);
   for (size_t j = 0; j < hot.size(); ++j) hot_of[j] = &hot[j];
   tbb::combinable<std::vector<Rgb>> indirect_buffer, further_buffer;
@@ -239,7 +252,7 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
         for (size_t i = begin; i != end; ++i)
           gather->field_irradiance(i, BounceGather::kBothSides, bounced.data(), l_count, &further[(i - begin) * l_count]);
       }
-      if (interpolated) {
+      if (interpolated && !merged) {
         indirect.resize((end - begin) * l_count);
         for (size_t i = begin; i != end; ++i)
           for (size_t j0 = 0; j0 < l_count; j0 += BounceGather::kLightBlock)
@@ -256,7 +269,7 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
             const ShadingPoint& at = (*shading_owner)[i];
             const HotSpots* h = hot_of[j];
             if (interpolated) {
-              e += indirect[(i - begin) * l_count + j];
+              if (!merged) e += indirect[(i - begin) * l_count + j];
               // The patches' light without its shadow first: where it is 0
               // (the point behind or near every patch) no shadow ray can change it.
               if (h && !h->empty()) {
