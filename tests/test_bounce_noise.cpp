@@ -24,54 +24,16 @@ struct Speckle {
 
 /// Deviation of each vertex's value from the mean of its edge neighbours, on
 /// vertices whose neighbours all share its normal (flat regions) and whose
-/// neighbourhood is lit (mean above 1% of the scene's mean).
-Speckle neighbour_deviation(const Scene& scene, const std::vector<Rgb>& indirect) {
+/// neighbourhood is lit (mean above 1% of the scene's mean). With a
+/// `converged` field: the excess over that field's own deviation (its
+/// contact shadows and corners), |(x_v − mean x) − (r_v − mean r)| / mean x.
+Speckle neighbour_deviation(const Scene& scene, const std::vector<Rgb>& indirect, const std::vector<Rgb>* converged = nullptr) {
   std::vector<std::vector<uint32_t>> neighbours(scene.positions.size());
   for (const auto& t : scene.triangles)
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)
         if (a != b) neighbours[t[a]].push_back(t[b]);
-  double scene_mean = 0;
-  for (const auto& c : indirect) scene_mean += (c.r + c.g + c.b) / double(indirect.size());
-  std::vector<double> deviations;
-  for (size_t v = 0; v < neighbours.size(); ++v) {
-    auto& n = neighbours[v];
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-    if (n.size() < 3) continue;
-    // Flat, and open: a vertex with no indirect light at all (under a
-    // cabinet, inside a solid) or next to one is an enclosure's edge, not noise.
-    bool flat = true, open = indirect[v].r + indirect[v].g + indirect[v].b > 0.f;
-    double mean = 0;
-    for (uint32_t w : n) {
-      flat &= glm::dot(scene.normals[w], scene.normals[v]) > 0.999f;
-      open &= indirect[w].r + indirect[w].g + indirect[w].b > 0.f;
-      mean += (indirect[w].r + indirect[w].g + indirect[w].b) / double(n.size());
-    }
-    if (!flat || !open || mean < 0.01 * scene_mean) continue;
-    deviations.push_back(std::abs((indirect[v].r + indirect[v].g + indirect[v].b) - mean) / mean);
-  }
-  Speckle s;
-  s.vertices = deviations.size();
-  if (deviations.empty()) return s;
-  std::sort(deviations.begin(), deviations.end());
-  s.median = deviations[deviations.size() / 2];
-  s.p99 = deviations[std::min(deviations.size() - 1, size_t(0.99 * double(deviations.size())))];
-  return s;
-}
-
-/// The speckle of `indirect` less that of the converged field `reference`
-/// (its contact shadows and corners): per flat, open vertex of `indirect`,
-/// |(x_v − mean x) − (r_v − mean r)| / mean x over its neighbours.
-Speckle excess_deviation(const Scene& scene, const std::vector<Rgb>& indirect, const std::vector<Rgb>& reference) {
-  std::vector<Rgb> difference(indirect.size());
-  for (size_t v = 0; v < indirect.size(); ++v) difference[v] = indirect[v] - reference[v];
-  std::vector<std::vector<uint32_t>> neighbours(scene.positions.size());
-  for (const auto& t : scene.triangles)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        if (a != b) neighbours[t[a]].push_back(t[b]);
-  auto sum = [](const Rgb& c) { return double(c.r) + c.g + c.b; };
+  const auto sum = [](const Rgb& c) { return c.r + c.g + c.b; };
   double scene_mean = 0;
   for (const auto& c : indirect) scene_mean += sum(c) / double(indirect.size());
   std::vector<double> deviations;
@@ -80,16 +42,19 @@ Speckle excess_deviation(const Scene& scene, const std::vector<Rgb>& indirect, c
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
     if (n.size() < 3) continue;
-    bool flat = true, open = sum(indirect[v]) > 0;
-    double mean = 0, mean_difference = 0;
+    // Flat, and open: a vertex with no indirect light at all (under a
+    // cabinet, inside a solid) or next to one is an enclosure's edge, not noise.
+    bool flat = true, open = sum(indirect[v]) > 0.f;
+    double mean = 0, converged_mean = 0;
     for (uint32_t w : n) {
       flat &= glm::dot(scene.normals[w], scene.normals[v]) > 0.999f;
-      open &= sum(indirect[w]) > 0;
+      open &= sum(indirect[w]) > 0.f;
       mean += sum(indirect[w]) / double(n.size());
-      mean_difference += sum(difference[w]) / double(n.size());
+      if (converged) converged_mean += sum((*converged)[w]) / double(n.size());
     }
     if (!flat || !open || mean < 0.01 * scene_mean) continue;
-    deviations.push_back(std::abs(sum(difference[v]) - mean_difference) / mean);
+    const double own = converged ? sum((*converged)[v]) - converged_mean : 0.0;
+    deviations.push_back(std::abs((sum(indirect[v]) - mean) - own) / mean);
   }
   Speckle s;
   s.vertices = deviations.size();
@@ -174,7 +139,7 @@ TEST_CASE("bounce noise: the FZK house's speckle with one and with every bounce 
     const auto defaults = indirect({});
     const auto converged = indirect({"bounce_samples=4096", "transport_samples=256", "hot_spots=off"});
     const Speckle speckle = neighbour_deviation(*scene, defaults), own = neighbour_deviation(*scene, converged),
-                  excess = excess_deviation(*scene, defaults, converged);
+                  excess = neighbour_deviation(*scene, defaults, &converged);
     std::printf("FZK house, bounces %s, %zu vertices: speckle %.1f%% / %.0f%% (converged %.1f%% / %.0f%%), excess %.1f%% / %.0f%%, "
                 "bounce error per vertex D-bar %.1f%%\n",
                 bounces, speckle.vertices, 100 * speckle.median, 100 * speckle.p99, 100 * own.median, 100 * own.p99, 100 * excess.median,
