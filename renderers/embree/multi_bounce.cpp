@@ -4,7 +4,9 @@
 #include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -30,26 +32,44 @@ std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, si
   // together (light-major, each light was a cache miss of its own).
   // One step for every light: out_j(v, s) = (2/N) Σ ρ(y) in_j(y) over v's
   // hemisphere s; `value` interpolates the hit's light from its vertices.
+  // A hit whose three corners hold no light of any active light adds
+  // nothing and is passed by: `lit` says per (vertex, side) of the field
+  // read whether it holds any, and the step says it of the field it writes.
+  // (Half the hits in the bench building's cache build: a light's bounced
+  // light reaches the rooms beyond its own a step at a time.)
+  std::vector<uint8_t> lit(n), lit_next(n);
   auto step = [&](const auto* in, auto&& value, std::vector<Rgb>& out, const std::vector<char>& active) {
+    // Looked at only where a quarter of the field or more is dark: in a
+    // lit room the look is all cost (5% of the bundled room's cache build).
+    const bool sparse = size_t(std::count(lit.begin(), lit.end(), uint8_t(0))) * 4 >= n;
     tbb::parallel_for(tbb::blocked_range<size_t>(0, v_count, 256), [&](const tbb::blocked_range<size_t>& r) {
       std::vector<Rgb> acc(lights);
       for (size_t v = r.begin(); v != r.end(); ++v)
         for (int side = 0; side < 2; ++side) {
           std::fill(acc.begin(), acc.end(), Rgb(0.f));
           m_gather.for_each_hit(v, side, [&](const Rgb& albedo, const uint32_t* entry, const float* weight) {
+            if (sparse && !(lit[entry[0]] | lit[entry[1]] | lit[entry[2]])) return;
             const auto *a = in + entry[0] * lights, *b = in + entry[1] * lights, *c = in + entry[2] * lights;
             for (size_t j = 0; j < lights; ++j)
               if (active[j]) acc[j] += albedo * value(weight, a[j], b[j], c[j]);
           });
           Rgb* o = &out[(2 * v + side) * lights];
+          uint8_t any = 0;
           for (size_t j = 0; j < lights; ++j)
-            if (active[j]) o[j] = acc[j] * scale;
+            if (active[j]) {
+              o[j] = acc[j] * scale;
+              any |= uint8_t(o[j] != Rgb(0.f));
+            }
+          lit_next[2 * v + side] = any;
         }
     });
+    std::swap(lit, lit_next);
   };
   std::vector<float> direct_by_entry(direct.size());
   for (size_t j = 0; j < lights; ++j)
     for (size_t e = 0; e < n; ++e) direct_by_entry[e * lights + j] = direct[j * n + e];
+  for (size_t e = 0; e < n; ++e)
+    lit[e] = uint8_t(std::any_of(&direct_by_entry[e * lights], &direct_by_entry[e * lights] + lights, [](float x) { return x != 0.f; }));
   std::vector<Rgb> current(lights * n, Rgb(0.f)), next(lights * n, Rgb(0.f));
   BounceSeriesSum series(lights, n, m_bounces, kMaxSteps, BounceSeriesSum::Layout::EntryMajor, m_rest_share);
   // d₁ = T e₀ from the scalar direct light.
