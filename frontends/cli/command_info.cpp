@@ -70,7 +70,8 @@ int run_info(const std::vector<std::string>& args) {
       rooms.push_back({{"name", r.name}, {"number", r.number}, {"storey", r.storey}, {"box", room_box(r)}});
     if (ifc.rooms.empty()) {  // no names in the file: free space split at doors, as the text lists them
       const RayScene rays(scene);
-      for (const auto& r : RoomSplit(rays).list()) {
+      const RoomSplit split(rays);  // named: list() refers into it
+      for (const auto& r : split.list()) {
         const glm::dvec3 a = world(r.box.lo), c = world(r.box.hi);
         rooms.push_back({{"name", "room" + std::to_string(r.number)},
                          {"box", {{"min", {a.x, a.y, a.z}}, {"max", {c.x, c.y, c.z}}}},
