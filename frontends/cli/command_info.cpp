@@ -45,7 +45,7 @@ int run_info(const std::vector<std::string>& args) {
     std::fprintf(stderr, "hilight: warning: no room names: %s\n", e.what());
   }
   const std::string building = building_kind(scene, ifc_has_storeys(scene_path));
-  const auto room_box = [&](const NamedRoom& r) {
+  const auto room_box = [&](const auto& r) {  // a NamedRoom or a RoomSplit::Room
     const glm::dvec3 a = world(r.box.lo), c = world(r.box.hi);
     return nlohmann::json{{"min", {a.x, a.y, a.z}}, {"max", {c.x, c.y, c.z}}};
   };
@@ -71,12 +71,8 @@ int run_info(const std::vector<std::string>& args) {
     if (ifc.rooms.empty()) {  // no names in the file: free space split at doors, as the text lists them
       const RayScene rays(scene);
       const RoomSplit split(rays);  // named: list() refers into it
-      for (const auto& r : split.list()) {
-        const glm::dvec3 a = world(r.box.lo), c = world(r.box.hi);
-        rooms.push_back({{"name", "room" + std::to_string(r.number)},
-                         {"box", {{"min", {a.x, a.y, a.z}}, {"max", {c.x, c.y, c.z}}}},
-                         {"volume", r.volume}});
-      }
+      for (const auto& r : split.list())
+        rooms.push_back({{"name", "room" + std::to_string(r.number)}, {"box", room_box(r)}, {"volume", r.volume}});
     }
     j["rooms"] = rooms;
     std::printf("%s\n", j.dump(2).c_str());

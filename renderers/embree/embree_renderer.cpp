@@ -207,12 +207,23 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
   // at a vertex side together: vertex_direct turned to [vertex side][light].
   const bool interpolated = gather && m_settings.vertex_interpolated_bounce;
   const size_t l_count = prepared.size();
-  // And per vertex side and block, whether any of the block's lights reaches
-  // it (a hit on dark corners only is passed by).
+  // With further bounces and no patches of light, a hit's direct light and
+  // its light bounced again are read at the same hit with the same weights:
+  // one field of both, one walk over the hits (the same light, rounded
+  // once per hit rather than once per walk).
+  const bool merged = interpolated && !bounced.empty() &&
+                      std::none_of(hot.begin(), hot.end(), [](const HotSpots& h) { return !h.empty(); });
+  // Otherwise per vertex side and block, whether any of the block's lights
+  // reaches it (a hit on dark corners only is passed by).
   std::vector<float> direct_by_side;
   std::vector<uint8_t> lit;
   const size_t blocks = (l_count + BounceGather::kLightBlock - 1) / BounceGather::kLightBlock;
-  if (interpolated) {
+  if (merged) {
+    tbb::parallel_for(size_t(0), 2 * v_count, [&](size_t entry) {
+      for (size_t j = 0; j < l_count; ++j) bounced[entry * l_count + j] += Rgb(vertex_direct[j * 2 * v_count + entry]);
+    });
+    std::vector<float>().swap(vertex_direct);
+  } else if (interpolated) {
     direct_by_side.resize(vertex_direct.size());
     lit.assign(2 * v_count * blocks, 0);
     tbb::parallel_for(size_t(0), 2 * v_count, [&](size_t entry) {
@@ -223,19 +234,6 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
       }
     });
     if (bounced.empty()) std::vector<float>().swap(vertex_direct);
-  }
-  // With further bounces and no patches of light, a hit's direct light and
-  // its light bounced again are read at the same hit with the same weights:
-  // one field of both, one walk over the hits (the same light, rounded
-  // once per hit rather than once per walk).
-  const bool merged = interpolated && !bounced.empty() &&
-                      std::none_of(hot.begin(), hot.end(), [](const HotSpots& h) { return !h.empty(); });
-  if (merged) {
-    tbb::parallel_for(size_t(0), 2 * v_count, [&](size_t entry) {
-      for (size_t j = 0; j < l_count; ++j) bounced[entry * l_count + j] += Rgb(direct_by_side[entry * l_count + j]);
-    });
-    std::vector<float>().swap(direct_by_side);
-    std::vector<float>().swap(vertex_direct);
   }
   std::vector<const HotSpots*> hot_of(l_count, nullptr);
   for (size_t j = 0; j < hot.size(); ++j) hot_of[j] = &hot[j];

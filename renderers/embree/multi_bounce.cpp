@@ -67,9 +67,10 @@ std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, si
   };
   std::vector<float> direct_by_entry(direct.size());
   for (size_t j = 0; j < lights; ++j)
-    for (size_t e = 0; e < n; ++e) direct_by_entry[e * lights + j] = direct[j * n + e];
-  for (size_t e = 0; e < n; ++e)
-    lit[e] = uint8_t(std::any_of(&direct_by_entry[e * lights], &direct_by_entry[e * lights] + lights, [](float x) { return x != 0.f; }));
+    for (size_t e = 0; e < n; ++e) {
+      direct_by_entry[e * lights + j] = direct[j * n + e];
+      lit[e] |= uint8_t(direct[j * n + e] != 0.f);
+    }
   std::vector<Rgb> current(lights * n, Rgb(0.f)), next(lights * n, Rgb(0.f));
   BounceSeriesSum series(lights, n, m_bounces, kMaxSteps, BounceSeriesSum::Layout::EntryMajor, m_rest_share);
   // d₁ = T e₀ from the scalar direct light.
