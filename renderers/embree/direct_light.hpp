@@ -3,8 +3,10 @@
 /// two-sided cosine |n·ω| (docs/rendering-model.md), spot cone, shadow ray.
 #include "hilight/ray_scene.hpp"
 #include "hilight/lighting.hpp"
+#include "visibility_memo.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -64,6 +66,36 @@ struct PreparedLight {
   }
 };
 
+/// A shadow ray: from `origin` along unit `dir` up to `tfar`.
+struct ShadowRay {
+  Vec3 origin{0.f}, dir{0.f};
+  float tfar = 0.f;
+};
+
+/// What unit_direct_irradiance_on_side gives a point-like light (not
+/// extended) before its shadow ray: the unshadowed irradiance in `value`, and
+/// the shadow ray that decides it in `ray`. False when no ray is needed (the
+/// light is behind that side, or outside its cone): the irradiance is 0.
+inline bool unshadowed_point_irradiance_on_side(const RayScene& es, const ShadingPoint& at, const Vec3& n,
+                                                const Vec3& side_normal, const PreparedLight& light, float& value,
+                                                ShadowRay& ray) {
+  const Vec3& p = at.position;
+  Vec3 d = light.position - p;
+  float dist2 = glm::dot(d, d);
+  float eps = es.epsilon();
+  if (dist2 <= eps * eps) return false;
+  float dist = std::sqrt(dist2);
+  Vec3 w = d / dist;
+  if (glm::dot(side_normal, w) <= 0.f) return false;
+  float cos_n = std::abs(glm::dot(n, w));
+  if (cos_n == 0.f) return false;
+  float angular = light.angular(-w);
+  if (angular == 0.f) return false;
+  value = cos_n * angular / dist2;
+  ray = ShadowRay{at.ray_start(w, side_normal, eps), w, dist - 2.f * eps};
+  return true;
+}
+
 /// Irradiance on one side of a surface at `at` — the side `side_normal`
 /// points to — from `light` at unit intensity: |n·ω| · S / d² · V, zero for a
 /// light behind that side or in the point's own wedge (in_own_wedge). The
@@ -72,25 +104,16 @@ struct PreparedLight {
 inline float unit_direct_irradiance_on_side(const RayScene& es, const ShadingPoint& at, const Vec3& n,
                                             const Vec3& side_normal, const PreparedLight& light, uint64_t& rays) {
   if (light.area) return area_irradiance_on_side(es, at, n, side_normal, *light.area, rays);
-  const Vec3& p = at.position;
-  Vec3 d = light.position - p;
-  float dist2 = glm::dot(d, d);
-  float eps = es.epsilon();
-  if (dist2 <= eps * eps) return 0.f;
-  float dist = std::sqrt(dist2);
-  Vec3 w = d / dist;
-  if (glm::dot(side_normal, w) <= 0.f) return 0.f;
-  float cos_n = std::abs(glm::dot(n, w));
-  if (cos_n == 0.f) return 0.f;
-  float angular = light.angular(-w);
-  if (angular == 0.f) return 0.f;
+  float value = 0.f;
+  ShadowRay ray;
+  if (!unshadowed_point_irradiance_on_side(es, at, n, side_normal, light, value, ray)) return 0.f;
   ++rays;
-  if (es.occluded(at.ray_start(w, side_normal, eps), w, dist - 2.f * eps)) return 0.f;
+  if (es.occluded(ray.origin, ray.dir, ray.tfar)) return 0.f;
   // Through the smooth surface its own fan stands for. After the ray: most
   // rays that could lie in a wedge are blocked anyway (a solid's far side),
   // and the test looks the fan up.
-  if (in_own_wedge(es, at, n, w)) return 0.f;
-  return cos_n * angular / dist2;
+  if (in_own_wedge(es, at, n, ray.dir)) return 0.f;
+  return value;
 }
 
 /// Irradiance at a point summed over both sides (a light lies on one of
@@ -104,6 +127,25 @@ inline float unit_direct_irradiance(const RayScene& es, const ShadingPoint& at, 
            area_irradiance_on_side(es, at, n, -side_normal, *light.area, rays);
   Vec3 side = glm::dot(side_normal, light.position - at.position) >= 0.f ? side_normal : -side_normal;
   return unit_direct_irradiance_on_side(es, at, n, side, light, rays);
+}
+
+/// unit_direct_irradiance of a point-like light, its shadow ray's answer
+/// (and the wedge's) read from `memo` where an earlier light at the same
+/// place asked it, else cast and kept there (visibility_memo.hpp).
+inline float unit_direct_irradiance_memo(const RayScene& es, const ShadingPoint& at, const Vec3& n, const Vec3& side_normal,
+                                         const PreparedLight& light, uint64_t& rays, std::atomic<uint8_t>& memo) {
+  const Vec3 side = glm::dot(side_normal, light.position - at.position) >= 0.f ? side_normal : -side_normal;
+  float value = 0.f;
+  ShadowRay ray;
+  if (!unshadowed_point_irradiance_on_side(es, at, n, side, light, value, ray)) return 0.f;
+  uint8_t answer = memo.load(std::memory_order_relaxed);
+  if (answer == VisibilityMemo::kUnknown) {
+    ++rays;
+    const bool hidden = es.occluded(ray.origin, ray.dir, ray.tfar) || in_own_wedge(es, at, n, ray.dir);
+    answer = hidden ? VisibilityMemo::kHidden : VisibilityMemo::kSeen;
+    memo.store(answer, std::memory_order_relaxed);
+  }
+  return answer == VisibilityMemo::kSeen ? value : 0.f;
 }
 
 } // namespace hilight::embree

@@ -235,6 +235,13 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
     });
     if (bounced.empty()) std::vector<float>().swap(vertex_direct);
   }
+  // Which points see each point-like light's place, kept across calls.
+  std::vector<std::shared_ptr<VisibilityMemo::Answers>> sees(l_count);
+  if (want_direct) {
+    const uint64_t points_key = points.content_key();
+    for (size_t j = 0; j < l_count; ++j)
+      if (!prepared[j].extended()) sees[j] = m_visibility.get(points_key, points.size(), prepared[j].position);
+  }
   std::vector<const HotSpots*> hot_of(l_count, nullptr);
   for (size_t j = 0; j < hot.size(); ++j) hot_of[j] = &hot[j];
   tbb::combinable<std::vector<Rgb>> indirect_buffer, further_buffer;
@@ -262,7 +269,9 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
         const PreparedLight& light = prepared[j];
         for (size_t i = begin; i != end; ++i) {
           const Vec3& n = points.normals[i];
-          Rgb e(want_direct ? unit_direct_irradiance(*m_embree, (*shading_owner)[i], n, n, light, local_rays) : 0.f);
+          Rgb e(!want_direct ? 0.f
+                : sees[j]   ? unit_direct_irradiance_memo(*m_embree, (*shading_owner)[i], n, n, light, local_rays, (*sees[j])[i])
+                            : unit_direct_irradiance(*m_embree, (*shading_owner)[i], n, n, light, local_rays));
           if (gather) {
             const ShadingPoint& at = (*shading_owner)[i];
             const HotSpots* h = hot_of[j];

@@ -4,6 +4,7 @@
 #include "hilight/ray_scene.hpp"
 #include "first_bounce.hpp"
 #include "keyed_lru.hpp"
+#include "visibility_memo.hpp"
 #include "multi_bounce.hpp"
 #include "hilight/renderer.hpp"
 
@@ -92,6 +93,7 @@ public:
   void release_scratch() override {
     m_gathers.clear();
     m_shading_points.clear();
+    m_visibility.clear();
   }
   std::vector<std::pair<std::string, double>> baseline_figures(const SurfacePoints& points,
                                                                std::span<const Light> lights) override;
@@ -135,6 +137,7 @@ private:
   std::shared_ptr<const RayScene> m_embree;  ///< shared with every other user of the scene
   KeyedLru<BounceGather> m_gathers{4};
   KeyedLru<std::vector<ShadingPoint>> m_shading_points{4};
+  VisibilityMemo m_visibility;
   std::vector<ShadingPoint> m_vertex_shading;  ///< shading_point() of every scene vertex
   std::once_flag m_multi_once;
   std::unique_ptr<MultiBounce> m_multi;

@@ -112,6 +112,13 @@ private:
     float v() const { return float(v16) * (1.f / 65535.f); }
     bool valid() const { return triangle() != kNone; }
     uint32_t triangle() const { return packed & kNone; }
+    Hit hit() const {
+      Hit h;
+      h.triangle = triangle();
+      h.u = u();
+      h.v = v();
+      return h;
+    }
     /// +1: the side the face normal points to; -1: the other.
     float side() const { return packed >> kTriangleBits & 1u ? 1.f : -1.f; }
     /// Bit k: the seen side is the side vertex k's normal points to (so the
