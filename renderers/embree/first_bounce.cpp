@@ -93,25 +93,31 @@ BounceGather::BounceGather(const RayScene& es, const SurfacePoints& points, cons
 Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light, const HotSpots* hot, const Vec3& x,
                                            uint64_t& rays) const {
   const Scene& scene = m_es.scene();
-  const GatherHit* hits = &m_hits[i * m_samples];
-  if (light.extended()) {  // an area source integrates its own visibility
-    Rgb sum(0.f);
+  // Visits each hit the gather counts (not the patches'): its hit, where
+  // it is, and the normal of the side the point saw.
+  auto for_each_gathered = [&](auto&& visit) {
+    const GatherHit* hits = &m_hits[i * m_samples];
     for (int k = 0; k < m_samples; ++k) {
       const GatherHit& g = hits[k];
       if (!g.valid()) continue;
       const Hit hit = g.hit();
       const Vec3 y = m_es.hit_position(hit);
-      if (hot && hot->handles(x, y, m_es.face_normals()[hit.triangle])) continue;
-      const float e = unit_direct_irradiance_on_side(m_es, ShadingPoint{y, false}, m_es.hit_normal(hit),
-                                               g.side() * m_es.face_normals()[hit.triangle], light, rays);
-      if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
+      const Vec3& face_normal = m_es.face_normals()[hit.triangle];
+      if (hot && hot->handles(x, y, face_normal)) continue;
+      visit(hit, y, g.side() * face_normal);
     }
+  };
+  Rgb sum(0.f);
+  if (light.extended()) {  // an area source integrates its own visibility
+    for_each_gathered([&](const Hit& hit, const Vec3& y, const Vec3& side_normal) {
+      const float e = unit_direct_irradiance_on_side(m_es, ShadingPoint{y, false}, m_es.hit_normal(hit), side_normal, light, rays);
+      if (e > 0.f) sum += scene.triangle_albedo(hit.triangle) * e;
+    });
     return sum * (2.f / float(m_samples));
   }
   // A point-like light: the hits' shadow rays all end at the light, so they
   // go to Embree 16 at a time (ShadowPacket); each packet's lit hits are
   // added in hit order, as the one-ray form adds them (the same bits).
-  Rgb sum(0.f);
   ShadowPacket packet(m_es);
   float value[ShadowPacket::kLanes];
   uint32_t triangle[ShadowPacket::kLanes];
@@ -121,22 +127,16 @@ Rgb BounceGather::unit_indirect_irradiance(size_t i, const PreparedLight& light,
       if (!packet.blocked(lane) && value[lane] > 0.f) sum += scene.triangle_albedo(triangle[lane]) * value[lane];
     packet.clear();
   };
-  for (int k = 0; k < m_samples; ++k) {
-    const GatherHit& g = hits[k];
-    if (!g.valid()) continue;
-    const Hit hit = g.hit();
-    const Vec3 y = m_es.hit_position(hit);
-    if (hot && hot->handles(x, y, m_es.face_normals()[hit.triangle])) continue;
-    const Vec3 side_normal = g.side() * m_es.face_normals()[hit.triangle];
+  for_each_gathered([&](const Hit& hit, const Vec3& y, const Vec3& side_normal) {
     // A hit is no smooth point (it has no wedge): its light needs the shadow ray alone.
     ShadowRay ray;
     float e = 0.f;
-    if (!unshadowed_point_irradiance_on_side(m_es, ShadingPoint{y, false}, m_es.hit_normal(hit), side_normal, light, e, ray)) continue;
+    if (!unshadowed_point_irradiance_on_side(m_es, ShadingPoint{y, false}, m_es.hit_normal(hit), side_normal, light, e, ray)) return;
     value[packet.size()] = e;
     triangle[packet.size()] = hit.triangle;
     packet.add(ray);
     if (packet.full()) add_lit();
-  }
+  });
   if (packet.size() > 0) add_lit();
   return sum * (2.f / float(m_samples));
 }
