@@ -136,6 +136,38 @@ TEST_CASE("contract: every renderer gives the same values when asked twice, and 
   }
 }
 
+// A renderer may keep what it learnt of a place (Embree keeps which points
+// see a light's place: renderers/embree/visibility_memo.hpp). Another light
+// at the same place — a narrow spot after the bare lamp, the lamp after the
+// spot, another aim, another intensity — must still be lit as a renderer
+// that never saw the place lights it, to the bit.
+TEST_CASE("contract: a light at a place already lit renders as a fresh instance renders it", "[renderer][contract]") {
+  const Vec3 place{1.9f, 2.4f, 2.1f};
+  const Lighting sequence = {Light::spot(place, {0.f, -1.f, 0.f}, 20.f, Rgb(1.f), 5.f), Light::point(place, Rgb(2.f, 1.f, 0.5f)),
+                             Light::spot(place, {0.6f, -0.8f, 0.f}, 50.f, Rgb(0.3f, 1.f, 2.f), 10.f),
+                             Light::spot(place, {-0.3f, 0.9f, 0.3f}, 35.f, Rgb(1.f), 0.f)};
+  for (const std::string& name : renderer_names()) {
+    if (test::skip_without_renderer(name)) continue;
+    for (const char* bounces : {"bounces=0", "bounces=1"}) {
+      // POV-Ray is a new run every call, and its radiosity's values are its
+      // own each run (the determinism case holds it at bounces=0).
+      if (name == "povray" && std::string(bounces) != "bounces=0") continue;
+      INFO("renderer " << name << ", " << bounces);
+      const SurfacePoints points = some_points(*room());
+      auto seasoned = test::make_renderer(name, room(), {bounces});
+      for (size_t k = 0; k < sequence.size(); ++k) {
+        INFO("light " << k << " of the sequence");
+        const std::span<const Light> one(&sequence[k], 1);
+        const auto kept = seasoned->illuminate(points, one);
+        CHECK(largest(kept) > 0);
+        CHECK(kept == test::make_renderer(name, room(), {bounces})->illuminate(points, one));
+        CHECK(seasoned->unit_responses(points, one, Transport::DirectOnly) ==
+              test::make_renderer(name, room(), {bounces})->unit_responses(points, one, Transport::DirectOnly));
+      }
+    }
+  }
+}
+
 TEST_CASE("contract: every renderer refuses a setting it does not know, naming it", "[renderer][contract][bad-input]") {
   for (const std::string& name : renderer_names()) {
     if (test::skip_without_renderer(name)) continue;
