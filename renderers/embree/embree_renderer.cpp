@@ -152,14 +152,19 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
                                        Visit&& visit) {
   if (!m_embree) throw std::logic_error("EmbreeRenderer: set_scene was not called");
   // Each light's bounced field takes ~80 bytes a scene vertex while it is
-  // iterated: lights go in groups that keep that under 32 MB (at 512 MB a
-  // furnished flat of 258k vertices peaked at 1.36 GB in a solve; at 128 MB
-  // the bundled room's solve took 1.22× one bounce's memory, at 32 MB 1.18×
-  // in the same time). The work per light is the same in any group, and so
-  // are the bits (40 lights in the room, one group or two).
+  // iterated: lights go in groups that keep that under 128 MB (at 512 MB a
+  // furnished flat of 258k vertices peaked at 1.36 GB in a solve), and of
+  // at most 64 lights. A group's walks over the hits serve its lights
+  // together, so groups much smaller cost time (the bench building's cache
+  // build: 2 lights a group 16.5 s, 5 lights 14.1 s, 11 lights 12.8 s); a
+  // group larger than the walks' blocks of 16 lights gains nothing, while
+  // in a small scene 128 MB is more than the rest of a solve (the bundled
+  // room's every-bounce solve took 1.22× one bounce's memory; with at most
+  // 64 lights 1.18×). The bits are the same in any group (40 lights in the
+  // room, one group or two).
   size_t group = lights.size();
   if (m_settings.further_bounces() && transport != Transport::DirectOnly)
-    group = std::max<size_t>(1, size_t(32e6 / (80.0 * double(std::max<size_t>(1, m_scene->positions.size())))));
+    group = std::clamp<size_t>(size_t(128e6 / (80.0 * double(std::max<size_t>(1, m_scene->positions.size())))), 1, kMaxGroup);
   // The call's ray casts, for its progress: the gather (unless kept), the
   // further bounces' transport for each group, the points' own rays.
   const bool bounce = m_settings.bounces != 0 && transport != Transport::DirectOnly;

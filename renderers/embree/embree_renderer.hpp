@@ -111,6 +111,7 @@ private:
   std::shared_ptr<const std::vector<ShadingPoint>> shading_points(const SurfacePoints& points);
   /// Calls visit(i, j, unit RGB response) for every point i and light j, in
   /// parallel over points; lights in groups whose bounced fields fit in memory.
+  static constexpr size_t kMaxGroup = 64;  ///< lights transported together at most (for_each_response)
   template <class Visit>
   void for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Visit&& visit);
   template <class Visit>
