@@ -63,7 +63,8 @@ TEST_CASE("spot refinement: a spot started 60 cm off along its axis, cutoff wide
     const auto t0 = std::chrono::steady_clock::now();
     const std::vector<Rgb> bounce = stage.reference->unit_responses(samples.points, found, Transport::IndirectOnly);
     const auto t1 = std::chrono::steady_clock::now();
-    found = refine_spots(found, bounce, samples, *stage.space, *stage.reference, {}, 0, dbar);
+    const Fit refined = refine_spots(found, bounce, samples, *stage.space, *stage.reference, {}, 0);
+    found = refined.lights, dbar = refined.dbar;
     const auto t2 = std::chrono::steady_clock::now();
     std::printf("round %d: bounce %.3f s, LM %.3f s, D̄ %.5f, off %.4f\n", round, std::chrono::duration<double>(t1 - t0).count(),
                 std::chrono::duration<double>(t2 - t1).count(), dbar, glm::length(found[0].position - truth.position));
@@ -83,8 +84,9 @@ TEST_CASE("spot screening: two overlapping pools get two cones near their lamps"
       Light::spot(Vec3(-0.3f, 4.7f, -0.3f), glm::normalize(Vec3(0.4f, -0.9f, -0.2f)), 24.f, Rgb(60.f), 4.f),
       Light::spot(Vec3(1.5f, 4.6f, -0.7f), glm::normalize(Vec3(-0.73f, -0.68f, 0.04f)), 20.f, Rgb(100.f, 90.f, 80.f), 4.f)};
   const SampleSet samples = stage.samples_of(truth, "spot_screening_overlap");
-  double dbar = 1.0;
-  const Lighting found = propose_spots(samples, *stage.space, *stage.reference, *stage.reference, {}, dbar);
+  const Fit proposed = propose_spots(samples, *stage.space, *stage.reference, *stage.reference, {});
+  const Lighting& found = proposed.lights;
+  const double dbar = proposed.dbar;
   REQUIRE(found.size() == 2);
   for (const auto& l : found) CHECK(nearest(l, truth) < 0.1f);
   CHECK(dbar < 0.01);

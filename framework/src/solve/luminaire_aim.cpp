@@ -7,7 +7,7 @@
 
 namespace hilight {
 
-Lighting aim_luminaires(Renderer& reference, const SampleSet& samples, Lighting lights, double& dbar) {
+Fit aim_luminaires(Renderer& reference, const SampleSet& samples, Lighting lights) {
   const size_t m = samples.size(), n = lights.size();
   std::vector<std::vector<float>> spins(n);  // per light: the turns tried, from its own
   Lighting batch;
@@ -60,8 +60,8 @@ Lighting aim_luminaires(Renderer& reference, const SampleSet& samples, Lighting 
     lights[j] = batch[first[j] + choice[j]];
     lights[j].intensity = intensities[j];
   }
-  dbar = normalized_difference(combine(best_phi, intensities, m), samples);
-  return lights;
+  const double dbar = normalized_difference(combine(best_phi, intensities, m), samples);
+  return {std::move(lights), dbar};
 }
 
 } // namespace hilight

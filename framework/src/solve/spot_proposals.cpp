@@ -131,22 +131,24 @@ struct Model {
   /// `spots` refined with `base` held, their bounce taken where they stand,
   /// again and again where they went: the bounce follows the cone slowly, so
   /// the rounds converge (measured: the error along a spot's valley falls
-  /// ~2.5x a round). `bounce` (if given) gets the bounce where they end.
-  Lighting refine(Lighting spots, const std::vector<Rgb>& base_phi, size_t base_count, const Pass& pass, double& dbar,
-                  std::vector<Rgb>* bounce = nullptr) const {
+  /// ~2.5x a round). The Fit's D̄: the last round's, with the bounce it
+  /// held. `bounce` (if given) gets the bounce where they end.
+  Fit refine(Lighting spots, const std::vector<Rgb>& base_phi, size_t base_count, const Pass& pass,
+             std::vector<Rgb>* bounce = nullptr) const {
+    Fit fit{std::move(spots)};
     double previous = 1e300;
     SpotRefineSettings settings;
     settings.over_weight = pass.over_weight;
     settings.max_falloff_share = pass.falloff_share;
     settings.iterations = kRoundIterations;
     for (int round = 0; round < pass.rounds; ++round) {
-      const std::vector<Rgb> estimate = bounce_of(spots, pass.fast_bounce);
-      spots = refine_spots(spots, estimate, samples, space, renderer, base_phi, base_count, dbar, settings);
-      if (dbar > 0.98 * previous) break;  // the bounce no longer moves the spots
-      previous = dbar;
+      const std::vector<Rgb> estimate = bounce_of(fit.lights, pass.fast_bounce);
+      fit = refine_spots(fit.lights, estimate, samples, space, renderer, base_phi, base_count, settings);
+      if (fit.dbar > 0.98 * previous) break;  // the bounce no longer moves the spots
+      previous = fit.dbar;
     }
-    if (bounce) *bounce = bounce_of(spots);
-    return spots;
+    if (bounce) *bounce = bounce_of(fit.lights);
+    return fit;
   }
 
   /// D̄ of `lights` with `bounce` (theirs), intensities fitted.
@@ -163,9 +165,9 @@ struct Model {
   /// again from the best fit the samples without the bounce's spikes
   /// (without_spikes; not from the start: far from the answer a lamp's own
   /// hot spot is a spike, and fitted without it the rounds went nowhere, D̄
-  /// 0.6%). The best's intensities are those its D̄ was fitted with; `dbar`
-  /// gets that D̄ (with the bounce re-taken), `bounce` its bounce.
-  Lighting settle(Lighting lights, double& dbar, std::vector<Rgb>* bounce = nullptr, bool despike = false) const {
+  /// 0.6%). The best's intensities are those its D̄ was fitted with; the
+  /// Fit's D̄ is that D̄ (with the bounce re-taken), `bounce` gets its bounce.
+  Fit settle(Lighting lights, std::vector<Rgb>* bounce = nullptr, bool despike = false) const {
     SpotRefineSettings settings;
     settings.iterations = kRoundIterations;
     settings.simplex_evaluations = lights.size() <= kSimplexMaxLights ? kSettleSimplexEvaluations : 0;
@@ -199,14 +201,13 @@ struct Model {
       } else if (despiking) {
         despiked->weight = without_spikes(samples, residual);
       }
-      double held_dbar = 1.0;  // with the bounce held: not comparable across rounds
-      Lighting next = refine_spots(lights, estimate, despiked ? *despiked : samples, space, renderer, {}, 0, held_dbar, settings);
+      // (Its D̄, with the bounce held, is not comparable across rounds.)
+      Lighting next = refine_spots(lights, estimate, despiked ? *despiked : samples, space, renderer, {}, 0, settings).lights;
       moved = !same_geometry(next, lights);
       lights = std::move(next);
     }
-    dbar = best_dbar;
     if (bounce) *bounce = std::move(best_bounce);
-    return best;
+    return {std::move(best), best_dbar};
   }
 
   /// D̄ of lights with responses `phi` (n of them), intensities by NNLS
@@ -234,66 +235,59 @@ Lighting without(const Lighting& spots, const std::vector<Rgb>& bounce, size_t s
 }
 
 /// The best of the screening's candidates for what `base` (responses
-/// `base_phi`, with bounce) leaves, each refined with the base held; `dbar`
-/// its D̄ beside them. Nothing when the screening has no candidate.
-std::optional<Light> best_candidate(const Model& model, const SpotScreen& screen, const std::vector<Rgb>& base_phi, size_t base_count,
-                                    double& dbar) {
+/// `base_phi`, with bounce) leaves, each refined with the base held: one
+/// light and its D̄ beside them. No light when the screening has no candidate.
+Fit best_candidate(const Model& model, const SpotScreen& screen, const std::vector<Rgb>& base_phi, size_t base_count) {
   std::vector<Rgb> residual;
   model.fit(base_phi, base_count, &residual);
-  std::optional<Light> best;
-  dbar = 1e300;
+  Fit best{{}, 1e300};
   for (const Light& start : screen.candidates(residual, kStarts)) {
-    double d = 1.0;
-    const Lighting one = model.refine({start}, base_phi, base_count, kCandidate, d);
-    if (d < dbar) dbar = d, best = one[0];
+    const Fit one = model.refine({start}, base_phi, base_count, kCandidate);
+    if (one.dbar < best.dbar) best = {{one.lights[0]}, one.dbar};
   }
   return best;
 }
 
 /// Each of `spots` in turn replaced by the best candidate for what the
-/// others leave, all then refined together; kept where D̄ falls.
-void replace_each(const Model& model, const SpotScreen& screen, Lighting& spots, std::vector<Rgb>& bounce, double& dbar,
-                  const Judge& judge) {
-  for (size_t s = 0; s < spots.size() && judge.light_more_visible(dbar); ++s) {
+/// others leave, all then refined together; kept where D̄ falls (`bounce`,
+/// the spots' own, follows them).
+Fit replace_each(const Model& model, const SpotScreen& screen, Fit spots, std::vector<Rgb>& bounce, const Judge& judge) {
+  for (size_t s = 0; s < spots.lights.size() && judge.light_more_visible(spots.dbar); ++s) {
     std::vector<Rgb> trial_bounce;
-    Lighting trial = without(spots, bounce, s, model.samples.size(), trial_bounce);
-    double d = 1.0;
-    const auto other = best_candidate(model, screen, model.responses(trial, trial_bounce), trial.size(), d);
-    if (!other) continue;
-    trial.push_back(*other);
-    trial = model.refine(std::move(trial), {}, 0, kJoint, d, &trial_bounce);
-    if (!(d < dbar)) continue;
-    spots = std::move(trial), bounce = std::move(trial_bounce), dbar = d;
+    Lighting trial = without(spots.lights, bounce, s, model.samples.size(), trial_bounce);
+    const Fit other = best_candidate(model, screen, model.responses(trial, trial_bounce), trial.size());
+    if (other.lights.empty()) continue;
+    trial.push_back(other.lights[0]);
+    Fit refined = model.refine(std::move(trial), {}, 0, kJoint, &trial_bounce);
+    if (!(refined.dbar < spots.dbar)) continue;
+    spots = std::move(refined), bounce = std::move(trial_bounce);
   }
+  return spots;
 }
 
 /// `spots` with spot `s` in two: the best pair among the screening's
 /// candidates for what the others leave, each refined alone and then every
 /// pair together with the others held; then all refined together. A spot
 /// over two overlapping pools is the best single cone for both, so the two
-/// are looked for together. `dbar` gets the result's D̄.
-Lighting split(const Model& model, const SpotScreen& screen, const Lighting& spots, const std::vector<Rgb>& bounce, size_t s,
-               std::vector<Rgb>& split_bounce, double& dbar) {
+/// are looked for together. No lights when no pair was found.
+Fit split(const Model& model, const SpotScreen& screen, const Lighting& spots, const std::vector<Rgb>& bounce, size_t s,
+          std::vector<Rgb>& split_bounce) {
   Lighting others = without(spots, bounce, s, model.samples.size(), split_bounce);
   const std::vector<Rgb> base = model.responses(others, split_bounce);
   std::vector<Rgb> residual;
   model.fit(base, others.size(), &residual);
   Lighting alone;
-  for (const Light& start : screen.candidates(residual, kStarts)) {
-    double d = 1.0;
-    alone.push_back(model.refine({start}, base, others.size(), kCandidate, d)[0]);
-  }
-  Lighting best;
-  double best_dbar = 1e300;
+  for (const Light& start : screen.candidates(residual, kStarts))
+    alone.push_back(model.refine({start}, base, others.size(), kCandidate).lights[0]);
+  Fit best{{}, 1e300};
   for (size_t i = 0; i < alone.size(); ++i)
     for (size_t j = i + 1; j < alone.size(); ++j) {
-      double d = 1.0;
-      const Lighting pair = model.refine({alone[i], alone[j]}, base, others.size(), kPair, d);
-      if (d < best_dbar) best_dbar = d, best = pair;
+      Fit pair = model.refine({alone[i], alone[j]}, base, others.size(), kPair);
+      if (pair.dbar < best.dbar) best = std::move(pair);
     }
-  if (best.empty()) return {};
-  others.insert(others.end(), best.begin(), best.end());
-  return model.refine(std::move(others), {}, 0, kJoint, dbar, &split_bounce);
+  if (best.lights.empty()) return {{}, 1.0};
+  others.insert(others.end(), best.lights.begin(), best.lights.end());
+  return model.refine(std::move(others), {}, 0, kJoint, &split_bounce);
 }
 
 /// Each spot at least kWideSpotDeg wide tried as a point light, all then
@@ -301,17 +295,10 @@ Lighting split(const Model& model, const SpotScreen& screen, const Lighting& spo
 /// moves/wide_spots_as_points.cpp). Only once the set is built: while it
 /// is, a wide cone may be the first spot over two pools, and a point light,
 /// once there, is never a spot again.
-void wide_spots_as_points(const Model& model, const Judge& judge, Lighting& spots, std::vector<Rgb>& bounce, double& dbar) {
+Fit wide_spots_as_points(const Model& model, const Judge& judge, const Fit& spots, std::vector<Rgb>& bounce) {
   std::vector<Rgb> trial_bounce;
-  Fit fit = hilight::wide_spots_as_points(
-      judge, Fit{spots, dbar},
-      [&](const Lighting& trial) {
-        Fit settled;
-        settled.lights = model.settle(trial, settled.dbar, &trial_bounce);
-        return settled;
-      },
-      [&] { bounce = trial_bounce; });
-  spots = std::move(fit.lights), dbar = fit.dbar;
+  return hilight::wide_spots_as_points(
+      judge, spots, [&](const Lighting& trial) { return model.settle(trial, &trial_bounce); }, [&] { bounce = trial_bounce; });
 }
 
 } // namespace
@@ -321,82 +308,76 @@ Fit propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& r
   const size_t m = samples.size();
   const Model model{samples, space, renderer, reference};
   const SpotScreen screen(samples, space, renderer);
-  Lighting spots;
+  Fit spots;  // no light: all of Ψ is missing
   std::vector<Rgb> bounce;
-  double dbar = 1.0;  // no light: all of Ψ is missing
   // One spot a round for what the others leave (eq. 9 forward, as the point
   // lights' add-missing move): each of the screening's candidates refined
   // with the others held, the best kept, then all refined together.
   const Judge& judge = settings.judge;
-  while (spots.size() < judge.max_spots() && judge.light_more_visible(dbar)) {
-    double one_dbar = 1.0;
-    const auto best = best_candidate(model, screen, spots.empty() ? std::vector<Rgb>{} : model.responses(spots, bounce), spots.size(), one_dbar);
-    if (!best) break;
-    Lighting more = spots;
-    more.push_back(*best);
+  while (spots.lights.size() < judge.max_spots() && judge.light_more_visible(spots.dbar)) {
+    const Fit best = best_candidate(model, screen, spots.lights.empty() ? std::vector<Rgb>{} : model.responses(spots.lights, bounce),
+                                    spots.lights.size());
+    if (best.lights.empty()) break;
+    Lighting more_lights = spots.lights;
+    more_lights.push_back(best.lights[0]);
     std::vector<Rgb> more_bounce;
-    double more_dbar = one_dbar;
-    more = model.refine(std::move(more), {}, 0, kJoint, more_dbar, &more_bounce);
-    bool pays = judge.light_more_pays(dbar, more_dbar);
-    if (!pays && more.size() > 1) {
+    Fit more = model.refine(std::move(more_lights), {}, 0, kJoint, &more_bounce);
+    bool pays = judge.light_more_pays(spots.dbar, more.dbar);
+    if (!pays && more.lights.size() > 1) {
       // Re-placed given the others, each spot may do better: the first spot
       // over pools that overlap is one wide cone; once others hold some of
       // them, its best place is one pool. Then the spot more may pay.
-      replace_each(model, screen, more, more_bounce, more_dbar, judge);
-      pays = judge.light_more_pays(dbar, more_dbar);
+      more = replace_each(model, screen, std::move(more), more_bounce, judge);
+      pays = judge.light_more_pays(spots.dbar, more.dbar);
     }
     if (!pays) break;
-    spots = std::move(more), bounce = std::move(more_bounce), dbar = more_dbar;
+    spots = std::move(more), bounce = std::move(more_bounce);
   }
-  if (spots.empty()) return {spots, dbar};
+  if (spots.lights.empty()) return spots;
   // Poorly explained still: a spot may hold two pools that overlap. Each
   // spot tried as two, kept if the spot more pays (eq. 9).
-  for (size_t s = 0; judge.split_spots(dbar) && s < spots.size() && spots.size() < judge.max_spots(); ++s) {
+  for (size_t s = 0; judge.split_spots(spots.dbar) && s < spots.lights.size() && spots.lights.size() < judge.max_spots(); ++s) {
     std::vector<Rgb> split_bounce;
-    double split_dbar = 1.0;
-    Lighting two = split(model, screen, spots, bounce, s, split_bounce, split_dbar);
-    if (two.empty() || !judge.light_more_pays(dbar, split_dbar)) continue;
-    spots = std::move(two), bounce = std::move(split_bounce), dbar = split_dbar;
+    Fit two = split(model, screen, spots.lights, bounce, s, split_bounce);
+    if (two.lights.empty() || !judge.light_more_pays(spots.dbar, two.dbar)) continue;
+    spots = std::move(two), bounce = std::move(split_bounce);
   }
   // The set is built: every edge free, plain least squares.
-  spots = model.refine(std::move(spots), {}, 0, kFree, dbar, &bounce);
+  spots.lights = model.refine(std::move(spots.lights), {}, 0, kFree, &bounce).lights;
   // From here on each D̄ is with the bounce re-taken where the lights stand,
   // as the settling's is (the rounds' own is with the bounce they held).
-  dbar = model.dbar_with(spots, bounce);
-  wide_spots_as_points(model, judge, spots, bounce, dbar);
+  spots.dbar = model.dbar_with(spots.lights, bounce);
+  spots = wide_spots_as_points(model, judge, spots, bounce);
   // Eq. 9 backwards: the spot whose loss the others bear best (intensities
   // re-fitted) goes if, the others refined without it, the loss is less
   // than ε_impro (and less than ε_w of ‖Ψ‖), or invisible.
-  while (spots.size() > 1) {
-    const std::vector<Rgb> phi = model.responses(spots, bounce);
+  while (spots.lights.size() > 1) {
+    const Lighting& lights = spots.lights;
+    const std::vector<Rgb> phi = model.responses(lights, bounce);
     size_t weakest = 0;
     double least = 1e300;
-    for (size_t s = 0; s < spots.size(); ++s) {
+    for (size_t s = 0; s < lights.size(); ++s) {
       std::vector<Rgb> without;
-      for (size_t j = 0; j < spots.size(); ++j)
+      for (size_t j = 0; j < lights.size(); ++j)
         if (j != s) without.insert(without.end(), phi.begin() + std::ptrdiff_t(j * m), phi.begin() + std::ptrdiff_t((j + 1) * m));
-      if (const double d = model.fit(without, spots.size() - 1); d < least) least = d, weakest = s;
+      if (const double d = model.fit(without, lights.size() - 1); d < least) least = d, weakest = s;
     }
-    Lighting fewer = spots;
-    fewer.erase(fewer.begin() + std::ptrdiff_t(weakest));
+    Lighting fewer_lights = lights;
+    fewer_lights.erase(fewer_lights.begin() + std::ptrdiff_t(weakest));
     std::vector<Rgb> fewer_bounce;
-    double fewer_dbar = least;
-    fewer = model.refine(std::move(fewer), {}, 0, kFree, fewer_dbar, &fewer_bounce);
-    fewer_dbar = model.dbar_with(fewer, fewer_bounce);
-    if (judge.light_more_pays(fewer_dbar, dbar) && judge.light_more_visible(fewer_dbar)) break;  // the spot pays: it stays
-    spots = std::move(fewer), bounce = std::move(fewer_bounce), dbar = fewer_dbar;
+    Fit fewer = model.refine(std::move(fewer_lights), {}, 0, kFree, &fewer_bounce);
+    fewer.dbar = model.dbar_with(fewer.lights, fewer_bounce);
+    if (judge.light_more_pays(fewer.dbar, spots.dbar) && judge.light_more_visible(fewer.dbar)) break;  // the spot pays: it stays
+    spots = std::move(fewer), bounce = std::move(fewer_bounce);
   }
   // The last word: past the slopes' stop, a simplex over every light's
   // geometry (spot_refinement.hpp).
-  spots = model.settle(std::move(spots), dbar, &bounce, true);
-  return {std::move(spots), dbar};
+  return model.settle(std::move(spots.lights), &bounce, true);
 }
 
 Fit settle_lights(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference, Lighting lights) {
   const Model model{samples, space, renderer, reference};
-  Fit fit;
-  fit.lights = model.settle(std::move(lights), fit.dbar, nullptr, true);
-  return fit;
+  return model.settle(std::move(lights), nullptr, true);
 }
 
 } // namespace hilight

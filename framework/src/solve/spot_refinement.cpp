@@ -232,9 +232,8 @@ private:
 
 } // namespace
 
-Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, const SampleSet& samples, const LightSpace& space,
-                      Renderer& renderer, const std::vector<Rgb>& base_phi, size_t base_count, double& dbar,
-                      const SpotRefineSettings& settings) {
+Fit refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, const SampleSet& samples, const LightSpace& space,
+                 Renderer& renderer, const std::vector<Rgb>& base_phi, size_t base_count, const SpotRefineSettings& settings) {
   SpotSearch search(spots, bounce, samples, space, renderer, base_phi, base_count, settings);
   search.levenberg_marquardt();
   if (settings.simplex_evaluations > 0) {
@@ -252,8 +251,7 @@ Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, con
   Lighting found = search.lights();
   for (size_t s = 0; s < found.size(); ++s) found[s].intensity = search.evaluation().intensities[base_count + s];
   const double norm = samples.target_norm();
-  dbar = norm > 0 ? std::sqrt(search.evaluation().cost) / norm : 0.0;
-  return found;
+  return {std::move(found), norm > 0 ? std::sqrt(search.evaluation().cost) / norm : 0.0};
 }
 
 } // namespace hilight

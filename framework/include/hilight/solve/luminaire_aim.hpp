@@ -5,14 +5,14 @@
 /// stage then tries, light by light, every spin the profile's symmetry
 /// tells apart (distinct_spins), with the intensities re-fitted by NNLS
 /// (eq. 5) each time, and keeps a turn only where D̄ at the samples falls.
+#include "hilight/solve/fit.hpp"
 #include "hilight/solve/samples.hpp"
 #include "hilight/renderer.hpp"
 
 namespace hilight {
 
 /// `lights`: luminaires (others are left as they are). Returns them turned
-/// and re-fitted, or as given when no turn helps; `dbar` receives D̄ at the
-/// samples of what is returned.
-Lighting aim_luminaires(Renderer& reference, const SampleSet& samples, Lighting lights, double& dbar);
+/// and re-fitted, or as given when no turn helps, with D̄ at the samples.
+Fit aim_luminaires(Renderer& reference, const SampleSet& samples, Lighting lights);
 
 } // namespace hilight

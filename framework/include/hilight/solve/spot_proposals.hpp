@@ -29,14 +29,6 @@ struct SpotProposalSettings {
 /// taken where the answer stands. No lights when no spot helps.
 Fit propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference,
                   const SpotProposalSettings& settings);
-/// The same, D̄ apart (the lights' D̄ in `dbar`).
-inline Lighting propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference,
-                              const SpotProposalSettings& settings, double& dbar) {
-  Fit fit = propose_spots(samples, space, renderer, reference, settings);
-  dbar = fit.dbar;
-  return std::move(fit.lights);
-}
-
 /// `lights` (spots and point lights, intensities fitted) settled as
 /// propose_spots settles its answer: Levenberg–Marquardt and a simplex over
 /// every light's geometry, the bounce of `reference` held and re-taken where

@@ -8,6 +8,7 @@
 /// A simplex wanders in a spot's long valley (distance trades against cutoff
 /// and intensity); finite-difference Gauss–Newton follows it.
 #include "hilight/light_space.hpp"
+#include "hilight/solve/fit.hpp"
 #include "hilight/solve/samples.hpp"
 #include "hilight/renderer.hpp"
 
@@ -50,10 +51,9 @@ struct SpotRefineSettings {
 /// `spots` refined (never worse by the model below). The model at the
 /// samples: base lights (responses `base_phi`, `base_count` of them) plus
 /// each spot's traced direct light and its fixed unit `bounce` (light-major,
-/// one per spot; empty: none), every intensity by NNLS. `dbar` gets the
-/// model's D̄ at the result (with over_weight: its weighted form).
-Lighting refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, const SampleSet& samples, const LightSpace& space,
-                      Renderer& renderer, const std::vector<Rgb>& base_phi, size_t base_count, double& dbar,
-                      const SpotRefineSettings& settings = {});
+/// one per spot; empty: none), every intensity by NNLS. The Fit's D̄: the
+/// model's at the result (with over_weight: its weighted form).
+Fit refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, const SampleSet& samples, const LightSpace& space,
+                 Renderer& renderer, const std::vector<Rgb>& base_phi, size_t base_count, const SpotRefineSettings& settings = {});
 
 } // namespace hilight

@@ -20,9 +20,7 @@ public:
     return any ? std::string() : "no luminaire";
   }
   Fit run(SolveContext& ctx, const Fit& fit) override {
-    Fit aimed;
-    aimed.lights = aim_luminaires(ctx.reference, ctx.samples, fit.lights, aimed.dbar);
-    return aimed;
+    return aim_luminaires(ctx.reference, ctx.samples, fit.lights);
   }
 };
 
