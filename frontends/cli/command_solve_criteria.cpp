@@ -89,6 +89,13 @@ nlohmann::json luminaires_json(const CriteriaSolve& a, const DesignReport& r, co
   return out;
 }
 
+/// The design's plan as run: each step's name and seconds, in order.
+nlohmann::json steps_json(const DesignReport& r) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& [name, seconds] : r.steps) out.push_back({{"name", name}, {"seconds", seconds}});
+  return out;
+}
+
 nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& criteria, const DesignReport& r, const Lighting& lights,
                            const SceneFrame& frame) {
   nlohmann::json grids = nlohmann::json::array();
@@ -160,6 +167,7 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
           {"count_walk", walk},
           {"placement", a.placement.describe()},
           {"seconds", r.seconds},
+          {"steps", steps_json(r)},
           {"length_unit", frame.unit},
           {"units", a.units_name},
           {"renderer", a.renderer.name},

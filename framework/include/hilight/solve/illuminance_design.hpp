@@ -132,7 +132,8 @@ struct DesignReport {
   } cylindrical;
   std::vector<ObserverGlare> glare;  ///< per observer, the lights found
   double ugr = 0;                    ///< the largest (NaN: none in view or no luminous area)
-  std::map<std::string, double> seconds;
+  std::map<std::string, double> seconds;  ///< per step of the plan (its name), "set-up" and "total"
+  std::vector<std::pair<std::string, double>> steps;  ///< the plan's steps as run, in order, with their seconds
 };
 
 /// InputError for a maintenance factor outside (0, 1] or a margin outside
