@@ -240,6 +240,55 @@ TEST_CASE("an asymmetric luminaire is turned along the corridor it lights", "[lu
   REQUIRE(all_met(c, measure(scene, c, lights, report.maintenance_factor)));
 }
 
+// Issue 33: the criteria solve is a plan of steps (solve/design/design_plan.cpp),
+// decided from the settings: arrays only where the layout may be one, the
+// count step only with --lights N. The report lists the steps as they ran.
+TEST_CASE("the criteria solve runs the plan the settings call for, each step timed in the report", "[lux]") {
+  const auto dir = test::output_dir("lux_plan");
+  Light luminaire;
+  luminaire.type = LightType::Luminaire;
+  luminaire.profile = std::make_shared<const Photometry>(read_photometry(downlight(dir)));
+  auto scene = test::finish(builders::box_room(Vec3(3.f, 3.f, 4.f)), 0.3f);
+  const RayScene rays(*scene);
+  const Regions regions(rays);
+  IlluminanceCriteria c;
+  c.grids.push_back(make_work_plane(rays, regions, {}, 0.75f, 200, 0.4, 0.0, 0.3f));
+  PlacementRules rules;
+  rules.add("ceiling:0.1");
+  const LightSpace space(rays, rules);
+  auto renderer = test::make_renderer("embree", scene);
+  struct Case {
+    LayoutChoice layout;
+    size_t count;
+    std::vector<std::string> steps;
+  };
+  const std::vector<Case> cases = {
+      {LayoutChoice::Auto, 0, {"candidates", "program", "free layouts", "arrays", "choice", "measure"}},
+      {LayoutChoice::Free, 0, {"candidates", "program", "free layouts", "choice", "measure"}},
+      {LayoutChoice::Array, 2, {"candidates", "program", "free layouts", "count asked", "arrays", "choice", "measure"}}};
+  for (const Case& k : cases) {
+    DesignSettings settings;
+    settings.layout = k.layout;
+    settings.fixed_count = k.count;
+    DesignReport report;
+    const Lighting lights = design_for_illuminance(*renderer, space, luminaire, c, settings, report);
+    INFO("layout " << to_string(k.layout) << ", --lights " << k.count);
+    std::vector<std::string> ran;
+    double sum = 0;
+    for (const auto& [name, seconds] : report.steps) {
+      ran.push_back(name);
+      CHECK(seconds >= 0);
+      CHECK(report.seconds.at(name) == seconds);
+      sum += seconds;
+    }
+    CHECK(ran == k.steps);
+    CHECK(sum <= report.seconds.at("total"));
+    CHECK(report.chosen == (k.layout == LayoutChoice::Free ? "free" : k.layout == LayoutChoice::Array ? "array" : report.chosen));
+    if (k.count) CHECK(lights.size() == k.count);
+    CHECK(!lights.empty());
+  }
+}
+
 TEST_CASE("criteria no luminaire can meet: exit 3, the best lights written, said so", "[lux][cli]") {
   const auto dir = test::output_dir("lux_unmet");
   REQUIRE(test::run_hilight({"target", "workplane", kRoom, "-o", (dir / "c.json").string(), "--lux", "1000000"}).exit_code == 0);
