@@ -163,6 +163,8 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
           {"energy_tolerance", a.design.settings.energy_tolerance},
           {"electrical_power_w", watts ? nlohmann::json(r.power_w) : nlohmann::json(nullptr)},
           {"candidates", r.candidates},
+          {"tilt_max_deg", a.design.settings.tilt_max_deg},
+          {"tilted", r.tilted},
           {"shortfall_lux", r.shortfall_lux},
           {"count_walk", walk},
           {"placement", a.placement.describe()},
@@ -392,6 +394,9 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
         std::snprintf(text, sizeof(text), ", %.0f W", energy.power);
       power = text;
     }
+    if (a.design.settings.tilt_max_deg > 0)
+      std::fprintf(stderr, "hilight: %zu of them tilted from their aim (at most %.0f°), where that saved flux or luminaires\n", report.tilted,
+                   a.design.settings.tilt_max_deg);
     std::fprintf(stderr, "hilight: %zu luminaire%s (%s, %s, MF %.2f), %.0f lm%s (least possible %.0f lm), %s -> %s\n", lights.size(),
                  lights.size() == 1 ? "" : "s", name.c_str(), rules.describe().c_str(), report.maintenance_factor, report.flux_lm,
                  power.c_str(), report.least_flux_lm, command_time_summary(report.seconds["total"]).c_str(), a.output.c_str());

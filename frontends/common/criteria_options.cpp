@@ -37,7 +37,7 @@ std::vector<double> comma_numbers(const std::string& text, size_t count, const s
 const std::vector<std::string>& criteria_design_option_names() {
   static const std::vector<std::string> names = {"--maintenance-factor", "--margin",      "--layout",            "--ceiling-grid",
                                                  "--ceiling-grid-origin", "--min-spacing", "--max-spacing-ratio", "--ugr-max",
-                                                 "--posture", "--cylindrical-min"};
+                                                 "--posture", "--cylindrical-min", "--tilt-max"};
   return names;
 }
 
@@ -82,6 +82,10 @@ void add_criteria_design_options(CLI::App& app, CriteriaDesign& design, const st
          "with criteria: who the room is for (EN 12464-1): seated (the UGR observers' eyes and the cylindrical illuminance at "
          "1.2 m; default) or standing (1.6 m)")
       ->check(CLI::IsMember({"seated", "standing"}));
+  app.add_option("--tilt-max", s.tilt_max_deg,
+                 "with criteria: a free layout's luminaires may tilt up to this many degrees from their aim toward the room's "
+                 "sides, where that saves flux or luminaires (0: as the luminaire aims; at most 60)")
+      ->check(CLI::Range(0.0, 60.0));
   if (!group.empty())
     for (const std::string& name : criteria_design_option_names())
       if (CLI::Option* o = app.get_option_no_throw(name)) o->group(group);

@@ -24,6 +24,8 @@ void check_design_settings(const DesignSettings& s) {
     throw InputError("--maintenance-factor " + std::to_string(s.maintenance_factor) +
                      ": must be in (0, 1] (maintained = MF × new; 0.8 is a clean office's)");
   if (!(s.margin >= 0 && s.margin < 1)) throw InputError("--margin " + std::to_string(s.margin) + ": must be in [0, 1)");
+  if (!(s.tilt_max_deg >= 0 && s.tilt_max_deg <= 60))
+    throw InputError("--tilt-max " + std::to_string(s.tilt_max_deg) + ": must be in [0, 60] degrees");
 }
 
 Lighting design_for_illuminance(Renderer& reference, const LightSpace& space, const Light& luminaire,

@@ -77,6 +77,12 @@ struct DesignSettings {
   /// only).
   double cylindrical_min = 0;
   Posture posture = Posture::Seated;
+  /// A free layout's luminaires may tilt up to this many degrees from
+  /// their aim, toward the room's four sides (half and all of it), each
+  /// kept only where the layout then meets the criteria with less flux or
+  /// fewer luminaires (0: aims as the luminaire's; at most 60). Arrays keep
+  /// their aims.
+  double tilt_max_deg = 0;
   float eye_height() const { return posture == Posture::Standing ? 1.6f : 1.2f; }
 };
 const char* to_string(DesignSettings::Posture posture);
@@ -114,6 +120,7 @@ struct DesignReport {
   std::string chosen;  ///< "array" or "free"
   std::string why;     ///< why that one
   std::string unmet;   ///< when not met: why, in a line (empty: met, or the criteria cannot be met at all)
+  size_t tilted = 0;  ///< luminaires tilted from their aim (--tilt-max)
   size_t fewest_free = 0;  ///< the fewest free luminaires the walk found meeting the criteria (0: none)
   RoomFrame room;
   glm::vec2 luminaire_size{0.f};

@@ -93,6 +93,10 @@ DesignContext::DesignContext(Renderer& reference_, const LightSpace& space_, con
 Light DesignContext::light_at(const Place& c, double dimming) const {
   Light l = turned(luminaire, c.turn);
   l.position = c.position;
+  if (c.aim != Vec3(0.f)) {  // tilted: the aim, and an area source's length axis kept square to it
+    l.direction = c.aim;
+    if (is_area(l.type)) l.up = glm::normalize(l.up - glm::dot(l.up, c.aim) * c.aim);
+  }
   l.intensity = Rgb(float(dimming * peak / kLumensPerWatt));
   return l;
 }

@@ -39,6 +39,7 @@ struct Place {
   Vec3 position;
   float turn = 0.f;                 ///< degrees from the template, about its aim
   glm::ivec4 cell{-1, -1, -1, -1};  ///< lattice x, layer, z, spin index (arrays: none)
+  Vec3 aim{0.f};                    ///< a tilted aim (unit; zero: the luminaire's own)
 };
 
 /// Where every place's light is rendered: the criteria's points (grid after

@@ -9,6 +9,7 @@ std::vector<DesignStep> design_plan(const DesignSettings& settings) {
   if (settings.fixed_count) plan.push_back({"count asked", meet_count});  // --lights N
   if (settings.layout != LayoutChoice::Free) plan.push_back({"arrays", try_arrays});
   plan.push_back({"choice", choose_layout});
+  if (settings.tilt_max_deg > 0) plan.push_back({"tilts", tilt_aims});
   plan.push_back({"measure", measure_lights});
   return plan;
 }

@@ -109,6 +109,7 @@ void walk_free_layouts(DesignContext& ctx);  ///< design_free_layouts.cpp
 void meet_count(DesignContext& ctx);         ///< design_free_layouts.cpp: --lights N
 void try_arrays(DesignContext& ctx);         ///< design_arrays.cpp
 void choose_layout(DesignContext& ctx);      ///< design_choice.cpp
+void tilt_aims(DesignContext& ctx);          ///< design_tilts.cpp: --tilt-max
 void measure_lights(DesignContext& ctx);     ///< design_measure.cpp
 
 /// The steps for `settings`, in order (design_plan.cpp).
