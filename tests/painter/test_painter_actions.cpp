@@ -45,7 +45,7 @@ const std::map<std::string, std::string>& examples() {
       {"units", R"({"units": "photometric", "quantity": "illuminance"})"},
       {"criteria", R"({"path": "desks.json", "maintenance_factor": 0.7, "margin": 0.05, "layout": "array", "ceiling_grid": 0.6,
                        "ceiling_grid_origin": [0.5, -1.25], "min_spacing": 1.2, "max_spacing_ratio": 1.5, "ugr_max": 19,
-                       "posture": "standing", "cylindrical_min": 150})"}};
+                       "posture": "standing", "cylindrical_min": 150, "tilt_max": 20})"}};
   return table;
 }
 

@@ -489,7 +489,8 @@ Spec schema_of<CriteriaAction>() {
            {"max_spacing_ratio", Kind::NonNegative},
            {"ugr_max", Kind::NonNegative},
            {"posture", Kind::String},
-           {"cylindrical_min", Kind::NonNegative}},
+           {"cylindrical_min", Kind::NonNegative},
+           {"tilt_max", Kind::NonNegative}},
           {"path"}, {}, {}, false};
 }
 CriteriaAction read(const json& p, Is<CriteriaAction>) {
@@ -508,6 +509,7 @@ CriteriaAction read(const json& p, Is<CriteriaAction>) {
   s.ugr_max = p.value("ugr_max", s.ugr_max);
   s.posture = p.value("posture", std::string("seated")) == "standing" ? DesignSettings::Posture::Standing : DesignSettings::Posture::Seated;
   s.cylindrical_min = p.value("cylindrical_min", s.cylindrical_min);
+  s.tilt_max_deg = p.value("tilt_max", s.tilt_max_deg);
   return a;
 }
 json write(const CriteriaAction& a) {
@@ -521,7 +523,8 @@ json write(const CriteriaAction& a) {
             {"max_spacing_ratio", s.spacing.max_spacing_ratio},
             {"ugr_max", s.ugr_max},
             {"posture", s.posture == DesignSettings::Posture::Standing ? "standing" : "seated"},
-            {"cylindrical_min", s.cylindrical_min}};
+            {"cylindrical_min", s.cylindrical_min},
+            {"tilt_max", s.tilt_max_deg}};
   if (a.design.grid_origin_world) p["ceiling_grid_origin"] = {a.design.grid_origin_world->x, a.design.grid_origin_world->y};
   return p;
 }
@@ -723,6 +726,7 @@ void validate_action(const Action& action, const std::string& source, size_t ind
     if (p.contains("margin") && p["margin"].get<double>() >= 1) fail("criteria: 'margin' must be in [0, 1)");
     if (p.contains("ugr_max") && p["ugr_max"].get<double>() != 0 && !(p["ugr_max"].get<double>() >= 1 && p["ugr_max"].get<double>() <= 40))
       fail("criteria: 'ugr_max' must be 0 (none) or in [1, 40]");
+    if (p.contains("tilt_max") && !(p["tilt_max"].get<double>() <= 60)) fail("criteria: 'tilt_max' must be in [0, 60] degrees");
   }
   if (action.type == "view") {
     const std::string show = action.params["show"].get<std::string>();
