@@ -152,6 +152,35 @@ void check_against_brute_force(const std::string& scene_path, const Solved& s, c
   CHECK(flux <= 1.10 * best);
 }
 
+/// A box room of `size` with luminaires 0.1 m under its ceiling and the
+/// Embree reference: what a design_for_illuminance case needs beside its
+/// luminaire and criteria.
+struct BoxRoom {
+  std::shared_ptr<const Scene> scene;
+  RayScene rays;
+  Regions regions;
+  LightSpace space;
+  std::unique_ptr<Renderer> renderer;
+  explicit BoxRoom(const Vec3& size)
+      : scene(test::finish(builders::box_room(size), 0.3f)), rays(*scene), regions(rays), space(rays, ceiling()),
+        renderer(test::make_renderer("embree", scene)) {}
+  static PlacementRules ceiling() {
+    PlacementRules rules;
+    rules.add("ceiling:0.1");
+    return rules;
+  }
+  /// A work plane at 0.75 m, clear of the walls by 0.3 m, at EN 12464-1's spacing.
+  CriterionGrid work_plane(double lux, double u0) const { return make_work_plane(rays, regions, {}, 0.75f, lux, u0, 0.0, 0.3f); }
+};
+
+/// A luminaire of the profile at `path`.
+Light luminaire_of(const std::filesystem::path& path) {
+  Light luminaire;
+  luminaire.type = LightType::Luminaire;
+  luminaire.profile = std::make_shared<const Photometry>(read_photometry(path));
+  return luminaire;
+}
+
 } // namespace
 
 TEST_CASE("EN 12464-1's grid spacing", "[lux]") {
@@ -219,44 +248,27 @@ TEST_CASE("an asymmetric luminaire is turned along the corridor it lights", "[lu
   const auto dir = test::output_dir("lux_spin");
   const auto path = dir / "linear.ies";
   std::ofstream(path) << test::linear_ies();  // wide in C0–C180, narrow across it
-  Light luminaire;
-  luminaire.type = LightType::Luminaire;
-  luminaire.profile = std::make_shared<const Photometry>(read_photometry(path));
+  const Light luminaire = luminaire_of(path);
   REQUIRE(luminaire.profile->symmetry == Photometry::Symmetry::Quadrants);
-  auto scene = test::finish(builders::box_room(Vec3(2.4f, 3.f, 14.f)), 0.3f);
-  const RayScene rays(*scene);
-  const Regions regions(rays);
+  const BoxRoom room(Vec3(2.4f, 3.f, 14.f));
   IlluminanceCriteria c;
-  c.grids.push_back(make_work_plane(rays, regions, {}, 0.75f, 200, 0.4, 0.0, 0.3f));
-  PlacementRules rules;
-  rules.add("ceiling:0.1");
-  const LightSpace space(rays, rules);
-  auto renderer = test::make_renderer("embree", scene);
+  c.grids.push_back(room.work_plane(200, 0.4));
   DesignReport report;
-  const Lighting lights = design_for_illuminance(*renderer, space, luminaire, c, DesignSettings{}, report);
+  const Lighting lights = design_for_illuminance(*room.renderer, room.space, luminaire, c, DesignSettings{}, report);
   REQUIRE(report.met);
   REQUIRE(!lights.empty());
   for (const Light& l : lights) CHECK(std::fmod(std::abs(l.spin_deg), 180.f) == Approx(90.f));
-  REQUIRE(all_met(c, measure(scene, c, lights, report.maintenance_factor)));
+  REQUIRE(all_met(c, measure(room.scene, c, lights, report.maintenance_factor)));
 }
 
 // Issue 33: the criteria solve is a plan of steps (solve/design/design_plan.cpp),
 // decided from the settings: arrays only where the layout may be one, the
 // count step only with --lights N. The report lists the steps as they ran.
 TEST_CASE("the criteria solve runs the plan the settings call for, each step timed in the report", "[lux]") {
-  const auto dir = test::output_dir("lux_plan");
-  Light luminaire;
-  luminaire.type = LightType::Luminaire;
-  luminaire.profile = std::make_shared<const Photometry>(read_photometry(downlight(dir)));
-  auto scene = test::finish(builders::box_room(Vec3(3.f, 3.f, 4.f)), 0.3f);
-  const RayScene rays(*scene);
-  const Regions regions(rays);
+  const Light luminaire = luminaire_of(downlight(test::output_dir("lux_plan")));
+  const BoxRoom room(Vec3(3.f, 3.f, 4.f));
   IlluminanceCriteria c;
-  c.grids.push_back(make_work_plane(rays, regions, {}, 0.75f, 200, 0.4, 0.0, 0.3f));
-  PlacementRules rules;
-  rules.add("ceiling:0.1");
-  const LightSpace space(rays, rules);
-  auto renderer = test::make_renderer("embree", scene);
+  c.grids.push_back(room.work_plane(200, 0.4));
   struct Case {
     LayoutChoice layout;
     size_t count;
@@ -271,7 +283,7 @@ TEST_CASE("the criteria solve runs the plan the settings call for, each step tim
     settings.layout = k.layout;
     settings.fixed_count = k.count;
     DesignReport report;
-    const Lighting lights = design_for_illuminance(*renderer, space, luminaire, c, settings, report);
+    const Lighting lights = design_for_illuminance(*room.renderer, room.space, luminaire, c, settings, report);
     INFO("layout " << to_string(k.layout) << ", --lights " << k.count);
     std::vector<std::string> ran;
     double sum = 0;
@@ -300,26 +312,19 @@ TEST_CASE("with --tilt-max, luminaires tilt toward the walls the criteria ask to
   std::ofstream(path) << test::ies_text(test::angles(0, 90, 5), {0.0}, [](double, double g) {
     return 2000.0 * std::pow(std::max(0.0, std::cos(g * kPi / 180.0)), 12.0);
   }, 1, "TILT=NONE", 1, 1, 3000, 30);
-  Light luminaire;
-  luminaire.type = LightType::Luminaire;
-  luminaire.profile = std::make_shared<const Photometry>(read_photometry(path));
-  auto scene = test::finish(builders::box_room(Vec3(6.f, 3.f, 4.f)), 0.3f);
-  const RayScene rays(*scene);
-  const Regions regions(rays);
+  const Light luminaire = luminaire_of(path);
+  const BoxRoom room(Vec3(6.f, 3.f, 4.f));
   IlluminanceCriteria c;
-  const CriterionGrid plane = make_work_plane(rays, regions, {}, 0.75f, 100, 0.0, 0.0, 0.3f);
-  c.grids.push_back(make_surface_grid(rays, regions, {}, CriterionGrid::Kind::Walls, 100, 0.1, plane));
-  PlacementRules rules;
-  rules.add("ceiling:0.1");
-  const LightSpace space(rays, rules);
-  auto renderer = test::make_renderer("embree", scene);
+  c.grids.push_back(make_surface_grid(room.rays, room.regions, {}, CriterionGrid::Kind::Walls, 100, 0.1, room.work_plane(100, 0.0)));
+  Renderer& renderer = *room.renderer;
+  const LightSpace& space = room.space;
   DesignSettings straight;
   straight.layout = LayoutChoice::Free;
   DesignSettings tilting = straight;
   tilting.tilt_max_deg = 30;
   DesignReport down, tilted;
-  const Lighting as_aimed = design_for_illuminance(*renderer, space, luminaire, c, straight, down);
-  const Lighting lights = design_for_illuminance(*renderer, space, luminaire, c, tilting, tilted);
+  const Lighting as_aimed = design_for_illuminance(renderer, space, luminaire, c, straight, down);
+  const Lighting lights = design_for_illuminance(renderer, space, luminaire, c, tilting, tilted);
   std::cout << "walls by narrow downlights: straight down " << as_aimed.size() << " luminaires, " << down.flux_lm << " lm; tilted "
             << lights.size() << " luminaires (" << tilted.tilted << " tilted), " << tilted.flux_lm << " lm" << std::endl;
   REQUIRE(down.met);
@@ -334,12 +339,12 @@ TEST_CASE("with --tilt-max, luminaires tilt toward the walls the criteria ask to
   }
   CHECK(off_vertical == tilted.tilted);
   for (const Light& l : as_aimed) CHECK(glm::normalize(l.direction).y == Approx(-1.f));
-  REQUIRE(all_met(c, measure(scene, c, lights, tilted.maintenance_factor)));
+  REQUIRE(all_met(c, measure(room.scene, c, lights, tilted.maintenance_factor)));
   // Out of range: one line.
   DesignSettings too_far = tilting;
   too_far.tilt_max_deg = 75;
   DesignReport unused;
-  CHECK_THROWS_WITH(design_for_illuminance(*renderer, space, luminaire, c, too_far, unused), Catch::Contains("--tilt-max"));
+  CHECK_THROWS_WITH(design_for_illuminance(renderer, space, luminaire, c, too_far, unused), Catch::Contains("--tilt-max"));
 }
 
 TEST_CASE("criteria no luminaire can meet: exit 3, the best lights written, said so", "[lux][cli]") {
