@@ -394,7 +394,9 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
         std::snprintf(text, sizeof(text), ", %.0f W", energy.power);
       power = text;
     }
-    if (a.design.settings.tilt_max_deg > 0)
+    if (a.design.settings.tilt_max_deg > 0 && report.chosen == "array")
+      std::fprintf(stderr, "hilight: the array keeps its aims (--tilt-max tilts a free layout's luminaires)\n");
+    else if (a.design.settings.tilt_max_deg > 0)
       std::fprintf(stderr, "hilight: %zu of them tilted from their aim (at most %.0f°), where that saved flux or luminaires\n", report.tilted,
                    a.design.settings.tilt_max_deg);
     std::fprintf(stderr, "hilight: %zu luminaire%s (%s, %s, MF %.2f), %.0f lm%s (least possible %.0f lm), %s -> %s\n", lights.size(),
