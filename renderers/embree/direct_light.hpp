@@ -100,52 +100,41 @@ inline bool unshadowed_point_irradiance_on_side(const RayScene& es, const Shadin
 /// points to — from `light` at unit intensity: |n·ω| · S / d² · V, zero for a
 /// light behind that side or in the point's own wedge (in_own_wedge). The
 /// shadow ray starts as `at` says (ShadingPoint::ray_start). Counts the
-/// shadow ray it casts in `rays`.
+/// shadow ray it casts in `rays`. With `memo` (a point-like light's place,
+/// visibility_memo.hpp), V is read there where an earlier light at the same
+/// place asked it, else asked and kept there.
 inline float unit_direct_irradiance_on_side(const RayScene& es, const ShadingPoint& at, const Vec3& n,
-                                            const Vec3& side_normal, const PreparedLight& light, uint64_t& rays) {
+                                            const Vec3& side_normal, const PreparedLight& light, uint64_t& rays,
+                                            std::atomic<uint8_t>* memo = nullptr) {
   if (light.area) return area_irradiance_on_side(es, at, n, side_normal, *light.area, rays);
   float value = 0.f;
   ShadowRay ray;
   if (!unshadowed_point_irradiance_on_side(es, at, n, side_normal, light, value, ray)) return 0.f;
-  ++rays;
-  if (es.occluded(ray.origin, ray.dir, ray.tfar)) return 0.f;
-  // Through the smooth surface its own fan stands for. After the ray: most
-  // rays that could lie in a wedge are blocked anyway (a solid's far side),
-  // and the test looks the fan up.
-  if (in_own_wedge(es, at, n, ray.dir)) return 0.f;
-  return value;
+  uint8_t answer = memo ? memo->load(std::memory_order_relaxed) : uint8_t(VisibilityMemo::kUnknown);
+  if (answer == VisibilityMemo::kUnknown) {
+    ++rays;
+    // Through the smooth surface its own fan stands for. After the ray: most
+    // rays that could lie in a wedge are blocked anyway (a solid's far side),
+    // and the test looks the fan up.
+    const bool hidden = es.occluded(ray.origin, ray.dir, ray.tfar) || in_own_wedge(es, at, n, ray.dir);
+    answer = hidden ? VisibilityMemo::kHidden : VisibilityMemo::kSeen;
+    if (memo) memo->store(answer, std::memory_order_relaxed);
+  }
+  return answer == VisibilityMemo::kSeen ? value : 0.f;
 }
 
 /// Irradiance at a point summed over both sides (a light lies on one of
 /// them): the two-sided value of docs/rendering-model.md. `side_normal` (the
 /// shading normal for surface points, the geometric normal for a pixel's hit)
 /// tells the sides apart.
+/// `memo`: as unit_direct_irradiance_on_side's.
 inline float unit_direct_irradiance(const RayScene& es, const ShadingPoint& at, const Vec3& n, const Vec3& side_normal,
-                                    const PreparedLight& light, uint64_t& rays) {
+                                    const PreparedLight& light, uint64_t& rays, std::atomic<uint8_t>* memo = nullptr) {
   if (light.area)  // an extended source can light both sides
     return area_irradiance_on_side(es, at, n, side_normal, *light.area, rays) +
            area_irradiance_on_side(es, at, n, -side_normal, *light.area, rays);
   Vec3 side = glm::dot(side_normal, light.position - at.position) >= 0.f ? side_normal : -side_normal;
-  return unit_direct_irradiance_on_side(es, at, n, side, light, rays);
-}
-
-/// unit_direct_irradiance of a point-like light, its shadow ray's answer
-/// (and the wedge's) read from `memo` where an earlier light at the same
-/// place asked it, else cast and kept there (visibility_memo.hpp).
-inline float unit_direct_irradiance_memo(const RayScene& es, const ShadingPoint& at, const Vec3& n, const Vec3& side_normal,
-                                         const PreparedLight& light, uint64_t& rays, std::atomic<uint8_t>& memo) {
-  const Vec3 side = glm::dot(side_normal, light.position - at.position) >= 0.f ? side_normal : -side_normal;
-  float value = 0.f;
-  ShadowRay ray;
-  if (!unshadowed_point_irradiance_on_side(es, at, n, side, light, value, ray)) return 0.f;
-  uint8_t answer = memo.load(std::memory_order_relaxed);
-  if (answer == VisibilityMemo::kUnknown) {
-    ++rays;
-    const bool hidden = es.occluded(ray.origin, ray.dir, ray.tfar) || in_own_wedge(es, at, n, ray.dir);
-    answer = hidden ? VisibilityMemo::kHidden : VisibilityMemo::kSeen;
-    memo.store(answer, std::memory_order_relaxed);
-  }
-  return answer == VisibilityMemo::kSeen ? value : 0.f;
+  return unit_direct_irradiance_on_side(es, at, n, side, light, rays, memo);
 }
 
 } // namespace hilight::embree

@@ -276,9 +276,9 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
         const PreparedLight& light = prepared[j];
         for (size_t i = begin; i != end; ++i) {
           const Vec3& n = points.normals[i];
-          Rgb e(!want_direct ? 0.f
-                : sees[j]   ? unit_direct_irradiance_memo(*m_embree, (*shading_owner)[i], n, n, light, local_rays, (*sees[j])[i])
-                            : unit_direct_irradiance(*m_embree, (*shading_owner)[i], n, n, light, local_rays));
+          Rgb e(want_direct ? unit_direct_irradiance(*m_embree, (*shading_owner)[i], n, n, light, local_rays,
+                                                     sees[j] ? &(*sees[j])[i] : nullptr)
+                            : 0.f);
           if (gather) {
             const ShadingPoint& at = (*shading_owner)[i];
             const HotSpots* h = hot_of[j];

@@ -59,7 +59,6 @@ void tilt_aims(DesignContext& ctx) {
     if (!l.as_met_as(best) || !walker.feasible(l) || !ctx.ugr_ok(l.ugr) || !ctx.count_ok(l.lights.size())) return false;
     return l.lights.size() < best.lights.size() || (l.lights.size() == best.lights.size() && l.flux < best.flux * (1 - 1e-4));
   };
-  size_t tilted = 0;
   for (int pass = 0; pass < 2; ++pass) {
     bool changed = false;
     for (size_t j = 0; j < n; ++j) {
@@ -75,9 +74,8 @@ void tilt_aims(DesignContext& ctx) {
     }
     if (!changed) break;
   }
-  for (size_t j = 0; j < n; ++j) tilted += choice[j] != first[j];
   ctx.report.tilted = 0;
-  if (tilted == 0) return;
+  if (choice == first) return;  // no tilt paid
   // The program's layout: the lights it keeps lit, at its dimming.
   ctx.chosen_places.clear();
   ctx.chosen_dimming.clear();
