@@ -159,7 +159,7 @@ TEST_CASE("rooms: a region name the scene lacks is one line naming it, exit 2, n
   }
 }
 
-TEST_CASE("rooms: region:K of a region that is not a room of the building (outside it, the void under its slab) is refused", "[rooms][real][bad-input]") {
+TEST_CASE("rooms: region:K of a region that is not a room of the building (outside it, the void under its slab) is refused, in a solve and for criteria", "[rooms][real][bad-input]") {
   // Which regions are not rooms, as hilight info marks them.
   const auto info = test::run_hilight({"info", fzk_house().string()});
   REQUIRE(info.exit_code == 0);
@@ -183,6 +183,13 @@ TEST_CASE("rooms: region:K of a region that is not a room of the building (outsi
     CHECK(test::line_count(r.err) == 1);
     CHECK(r.err.find("--place " + rule + ": region " + std::to_string(k) + " is not a room") != std::string::npos);
     CHECK_FALSE(fs::exists(out));
+    // Nor are criteria laid out there.
+    const fs::path criteria = dir / "criteria.json";
+    const auto t = test::run_hilight({"target", "workplane", fzk_house().string(), "--region", std::to_string(k), "-o", criteria.string()});
+    CHECK(t.exit_code == 2);
+    CHECK(test::line_count(t.err) == 1);
+    CHECK(t.err.find("--region " + std::to_string(k) + ": region " + std::to_string(k) + " is not a room") != std::string::npos);
+    CHECK_FALSE(fs::exists(criteria));
   }
   // A room's number passes (the solve goes on to the target, missing here), and excluding an outside region is allowed.
   for (const std::string rule : {"region:" + std::to_string(rooms.front()), "not-region:" + std::to_string(not_rooms.front())}) {

@@ -9,6 +9,7 @@
 #include "ifc_spaces.hpp"
 #include "hilight/scene_origin.hpp"
 #include "progress_display.hpp"
+#include "solve_options.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -110,6 +111,8 @@ int run_target(const std::vector<std::string>& args) {
     try {
       named.add("region:" + region);
       named.resolve_room_names(scene_rooms(scene_path, named, rays));
+      // In a building, a region outside it (or too low to stand in) is no room to light.
+      refuse_regions_not_rooms(named, regions, building_kind(scene, ifc_has_storeys(scene_path)));
     } catch (const InputError& e) {
       const std::string what = e.what(), prefix = "--place region:";
       throw InputError("--region " + (what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what));
