@@ -259,6 +259,75 @@ TEST_CASE("lux: --margin 0.05 keeps Ē and U0 5% clear of their limits, U0 also 
   CHECK(s.report["grids"][0]["u0_whole_grid"].get<double>() >= 1.05 * 0.6 * (1 - 1e-3));
 }
 
+TEST_CASE("lux: --margin 0.05 holds on the walls too, between their points", "[lux][layout][cli]") {
+  const auto dir = test::output_dir("layout_margin_walls");
+  const auto criteria = criteria_file(dir, {"--walls", "150", "--surface-u0", "0.25"});
+  const Solved s = solve(dir, criteria, panel(dir), {"--margin", "0.05", "--layout", "free"});
+  INFO(s.run.err);
+  REQUIRE(s.run.exit_code == 0);
+  const IlluminanceCriteria c = read_criteria(criteria);
+  REQUIRE(c.grids.size() == 2);
+  const CriterionGrid& walls = c.grids[1];
+  REQUIRE(walls.kind == CriterionGrid::Kind::Walls);
+  // Measured here: the walls' points, and halfway between each two
+  // neighbours on the same wall where the wall runs on between them.
+  auto scene = std::make_shared<const Scene>(load_scene(kRoom, {}));
+  const RayScene rays(*scene);
+  SurfacePoints pts;
+  pts.positions = walls.points;
+  pts.normals = walls.normals;
+  for (size_t i = 0; i < walls.points.size(); ++i)
+    for (size_t j = i + 1; j < walls.points.size(); ++j) {
+      const Vec3 d = walls.points[j] - walls.points[i], n = walls.normals[i];
+      const float len = glm::length(d);
+      if (len > 1.5f * float(walls.spacing) || glm::dot(n, walls.normals[j]) < 0.999f || std::abs(glm::dot(n, d)) > 1e-3f) continue;
+      const Vec3 q = walls.points[i] + 0.5f * d;
+      if (rays.occluded(walls.points[i] + 1e-3f * n, d / len, len)) continue;
+      const Hit under = rays.intersect(q + 1e-3f * n, -n, 2e-3f);
+      if (!under.valid()) continue;  // a window or a doorway between them
+      pts.positions.push_back(q);
+      pts.normals.push_back(n);
+    }
+  REQUIRE(pts.positions.size() > walls.points.size());
+  pts.albedo.assign(pts.positions.size(), Rgb(1.f));
+  const std::vector<double> lux = measure(scene, pts, s.lights, 0.8);
+  double mean = 0, low = 1e30;
+  for (size_t i = 0; i < walls.points.size(); ++i) mean += lux[i];
+  mean /= double(walls.points.size());
+  for (double v : lux) low = std::min(low, v);
+  INFO("walls: Ē " << mean << ", Emin with the points between " << low << " over " << pts.positions.size() << " points");
+  CHECK(mean >= 1.05 * 150 * (1 - 2e-3));
+  CHECK(low / mean >= 1.05 * 0.25 * (1 - 1e-2));
+  CHECK(s.report["grids"][1]["u0_whole_grid"].get<double>() >= 1.05 * 0.25 * (1 - 1e-3));
+}
+
+TEST_CASE("an EULUMDAT body larger than its luminous opening keeps luminaires that far apart", "[lux][layout][cli]") {
+  const auto dir = test::output_dir("layout_ldt_body");
+  const auto criteria = criteria_file(dir);
+  // A downlight whose opening the file leaves at 0 (a point source) in a 600 × 600 mm body.
+  const std::vector<double> gammas = test::angles(0, 180, 10);
+  std::vector<double> plane;
+  for (double g : gammas) plane.push_back(g <= 90 ? 400.0 * std::cos(g * kPi / 180.0) : 0.0);
+  std::string text = test::ldt_text(1, {0}, gammas, {plane}, 3600, 36);
+  const std::string dated = "2026-11-24\n";
+  std::string dimensions;
+  for (int k = 0; k < 9; ++k) dimensions += "100\n";
+  text.replace(text.find(dated) + dated.size(), dimensions.size(), "600\n600\n80\n0\n0\n0\n0\n0\n0\n");
+  const auto ldt = dir / "body.ldt";
+  test::write_text(ldt, text);
+  const Photometry p = read_photometry(ldt);
+  CHECK(p.body_length == Approx(0.6));
+  CHECK(p.body_width == Approx(0.6));
+  CHECK(p.opening_length == 0.0);
+  const Solved s = solve(dir, criteria, ldt, {"--layout", "free"});
+  INFO(s.run.err);
+  REQUIRE(s.run.exit_code == 0);
+  REQUIRE(s.lights.size() >= 2);
+  CHECK(s.report["luminaire_size_m"][0] == Approx(0.6));
+  CHECK(s.report["luminaire_size_m"][1] == Approx(0.6));
+  check_no_overlap(s.lights, 0.6f);
+}
+
 TEST_CASE("the maintenance factor: maintained Ē = MF × new, stated, MF 0.8 needs 1/0.8 of the flux of MF 1", "[lux][layout][cli]") {
   const auto dir = test::output_dir("layout_mf");
   const auto criteria = criteria_file(dir);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -140,7 +141,7 @@ IfcWritten write_ifc_luminaires(const std::filesystem::path& source, const std::
   std::sort(storeys.begin(), storeys.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::pair<shared_ptr<IfcSpace>, Footprint>> footprints;
   for (const auto& s : spaces)
-    if (auto f = footprint(s)) footprints.push_back({s, *f});
+    if (auto f = footprint(s, true)) footprints.push_back({s, *f});  // a room under a roof too, as hilight reads rooms (ifc_spaces.cpp)
   shared_ptr<IfcGeometricRepresentationContext> context = model->getIfcGeometricRepresentationContext3D();
   if (!context)
     for (const auto& [id, e] : model->getMapIfcEntities())
@@ -153,17 +154,21 @@ IfcWritten write_ifc_luminaires(const std::filesystem::path& source, const std::
   for (size_t j = 0; j < luminaires.size(); ++j) {
     const IfcLuminaire& l = luminaires[j];
     const glm::dvec3 at = to_ifc(l.position) * per_metre;
-    // Where it stands: the space whose footprint holds it (a hair under the ceiling), else the storey below.
+    // Where it stands: the space whose footprint holds it (a hair under the ceiling), else the storey
+    // below. Uncut, a room under a roof reaches into the storey above: of the spaces that hold it, the
+    // one whose floor is highest.
     shared_ptr<IfcSpatialElement> where;
     std::string where_name;
-    for (const auto& [space, f] : footprints)
-      if (f.contains(at) || f.contains(at - glm::dvec3(0, 0, 0.05 * per_metre))) {
-        where = space;
-        const auto& label = space->m_LongName ? space->m_LongName : space->m_Name;
-        where_name = label ? narrow(label->m_value) : "IfcSpace";
-        ++written.in_spaces;
-        break;
-      }
+    double floor = -std::numeric_limits<double>::max();
+    for (const auto& [space, f] : footprints) {
+      if (!f.contains(at) && !f.contains(at - glm::dvec3(0, 0, 0.05 * per_metre))) continue;
+      const double z = (f.world * glm::dvec4(0.0, 0.0, f.z0, 1.0)).z;
+      if (where && !(z > floor)) continue;
+      where = space, floor = z;
+      const auto& label = space->m_LongName ? space->m_LongName : space->m_Name;
+      where_name = label ? narrow(label->m_value) : "IfcSpace";
+    }
+    if (where) ++written.in_spaces;
     if (!where && !storeys.empty()) {
       auto below = storeys.front();
       for (const auto& s : storeys)

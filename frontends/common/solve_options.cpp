@@ -113,7 +113,7 @@ std::optional<Light> SolveOptions::luminaire() const {
   }
   if (!luminaire_size.empty()) {
     if (!chosen) throw InputError("--luminaire-size needs --luminaire");
-    if (luminaire_size != "auto") {  // W,L: the file's opening replaced
+    if (luminaire_size != "auto") {  // W,L: the file's opening and body replaced
       const size_t comma = luminaire_size.find(',');
       char* end = nullptr;
       const double w = std::strtod(luminaire_size.c_str(), &end);
@@ -123,6 +123,7 @@ std::optional<Light> SolveOptions::luminaire() const {
         throw InputError("--luminaire-size " + luminaire_size + ": give auto, or W,L in metres (each in (0, 100]), e.g. 0.6,0.6");
       Photometry sized = *chosen->profile;
       sized.opening_width = w, sized.opening_length = l, sized.opening_round = false;
+      sized.body_width = w, sized.body_length = l, sized.body_round = false;
       chosen->profile = std::make_shared<const Photometry>(std::move(sized));
     }
     if (!with_luminous_opening(*chosen))

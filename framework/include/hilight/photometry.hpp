@@ -29,6 +29,10 @@ struct Photometry {
   /// C90–C270; 0 × 0 for a point source.
   double opening_length = 0, opening_width = 0;
   bool opening_round = false;
+  /// The luminaire's body, metres, as the opening's (EULUMDAT gives it; an
+  /// IES file gives only the opening): what must not overlap another's.
+  double body_length = 0, body_width = 0;
+  bool body_round = false;
   /// What the file names the luminaire (IES [MANUFAC] [LUMINAIRE]
   /// [LUMCAT]; EULUMDAT's company, name and number), printable text only,
   /// for schedules; empty when it names none.

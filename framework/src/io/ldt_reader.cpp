@@ -78,6 +78,9 @@ Photometry parse_ldt(const std::string& text, const std::string& source) {
   p.opening_round = dimension[4] == 0 && dimension[3] > 0;
   p.opening_length = std::abs(dimension[3]) * 1e-3;
   p.opening_width = p.opening_round ? p.opening_length : std::abs(dimension[4]) * 1e-3;
+  p.body_round = dimension[1] == 0 && dimension[0] > 0;
+  p.body_length = std::abs(dimension[0]) * 1e-3;
+  p.body_width = p.body_round ? p.body_length : std::abs(dimension[1]) * 1e-3;
   in.number("the downward flux fraction");
   in.number("the light output ratio");
   const double conversion = in.number("the conversion factor for luminous intensities");

@@ -50,7 +50,7 @@ std::optional<float> lowest_floor(const RayScene& rays, Vec3 p) {
 
 } // namespace
 
-glm::vec2 luminaire_size(const Light& light) {
+glm::vec2 luminous_opening(const Light& light) {
   switch (light.type) {
     case LightType::Rectangle: return {light.size[0], light.size[1]};
     case LightType::Disk: return {light.size[0], light.size[0]};
@@ -67,6 +67,16 @@ glm::vec2 luminaire_size(const Light& light) {
       return {0.f, 0.f};
     default: return {0.f, 0.f};
   }
+}
+
+glm::vec2 luminaire_size(const Light& light) {
+  const glm::vec2 opening = luminous_opening(light);
+  if (light.type != LightType::Luminaire || !light.profile) return opening;
+  const Photometry& p = *light.profile;
+  const float length = float(p.body_round ? std::max(p.body_length, p.body_width) : p.body_length);
+  const float width = float(p.body_round ? length : p.body_width);
+  // The body holds the opening: a file's smaller body (or none) leaves the opening.
+  return glm::max(opening, glm::vec2(length, width));
 }
 
 Vec3 length_axis(const Light& light) { return horizontal(is_area(light.type) ? light.up : LuminaireFrame::of(light).c0); }

@@ -123,7 +123,7 @@ struct DesignReport {
   size_t tilted = 0;  ///< luminaires tilted from their aim (--tilt-max)
   size_t fewest_free = 0;  ///< the fewest free luminaires the walk found meeting the criteria (0: none)
   RoomFrame room;
-  glm::vec2 luminaire_size{0.f};
+  glm::vec2 luminaire_size{0.f};  ///< its outline on the ceiling (luminaire_size: the body, or the opening)
   double luminous_area = 0;  ///< m², for luminance (0: the luminaire gives none; no UGR)
   /// EN 12464-1's cylindrical illuminance of the lights found, maintained:
   /// over the work planes' points at `height` over the floor, Ēz (the mean

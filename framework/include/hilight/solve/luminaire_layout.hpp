@@ -25,10 +25,14 @@ struct Footprint {
   float length = 0.f, width = 0.f;
 };
 
-/// The size a luminaire has on the ceiling, metres (length along its C0
-/// plane or `up`, width across): an area source's own; a point-like
-/// luminaire's file's luminous opening (a round one: its diameter both
-/// ways); 0 × 0 when the file gives none.
+/// The luminous opening, metres (length along its C0 plane or `up`, width
+/// across): an area source's own; a point-like luminaire's file's (a round
+/// one: its diameter both ways); 0 × 0 when the file gives none. Its area
+/// gives the luminance (UGR).
+glm::vec2 luminous_opening(const Light& light);
+/// The size a luminaire takes on the ceiling, the same way: the body where
+/// the file gives one larger than the opening (EULUMDAT), else the opening.
+/// Outlines, spacing and the fit in the room use it.
 glm::vec2 luminaire_size(const Light& light);
 /// Its outline where it stands (`size` from luminaire_size or the user's).
 Footprint footprint_of(const Light& light, glm::vec2 size);

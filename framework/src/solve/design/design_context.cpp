@@ -38,9 +38,10 @@ DesignContext::DesignContext(Renderer& reference_, const LightSpace& space_, con
   report.room = room;
   size = luminaire_size(luminaire);
   report.luminaire_size = size;
+  const glm::vec2 opening = luminous_opening(luminaire);
   luminous_area = luminaire.type == LightType::Disk || (luminaire.type == LightType::Luminaire && profile.opening_round)
-                      ? kPi / 4 * double(size[0]) * double(size[0])
-                      : double(size[0]) * double(size[1]);
+                      ? kPi / 4 * double(opening[0]) * double(opening[0])
+                      : double(opening[0]) * double(opening[1]);
   report.luminous_area = luminous_area;
 
   // What cannot fit the room.

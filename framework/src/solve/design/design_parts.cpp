@@ -14,8 +14,56 @@ std::vector<Vec3> cylinder_places(const RayScene& rays, const IlluminanceCriteri
   return out;
 }
 
+namespace {
+
+/// A wall or ceiling grid's points are one per cell where the surfaces lie
+/// (make_surface_grid), not a lattice: between each pair of neighbours on
+/// the same plane, the midpoint, where the surface runs on between them
+/// (not across a window or past a corner) and nothing stands in between.
+void add_between_on_surfaces(const RayScene& rays, const CriterionGrid& g, SurfacePoints& out) {
+  const float reach = 1.5f * float(g.spacing), eps = rays.epsilon();
+  if (!(reach > 0.f)) return;
+  const auto cell_of = [&](const Vec3& p) { return glm::ivec3(glm::floor(p / reach)); };
+  const auto key = [](glm::ivec3 c) {
+    return (uint64_t(uint32_t(c.x) & 0x1FFFFF) << 42) | (uint64_t(uint32_t(c.y) & 0x1FFFFF) << 21) | uint64_t(uint32_t(c.z) & 0x1FFFFF);
+  };
+  std::unordered_map<uint64_t, std::vector<size_t>> cells;
+  for (size_t i = 0; i < g.points.size(); ++i) cells[key(cell_of(g.points[i]))].push_back(i);
+  std::unordered_set<uint64_t> taken;  // midpoints already added, on a fine lattice
+  const float fine = 1e-3f * reach;
+  for (size_t i = 0; i < g.points.size(); ++i) {
+    const Vec3 &p = g.points[i], &n = g.normals[i];
+    const glm::ivec3 c = cell_of(p);
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find(key(c + glm::ivec3(dx, dy, dz)));
+          if (it == cells.end()) continue;
+          for (size_t j : it->second) {
+            if (j <= i || glm::dot(n, g.normals[j]) < 0.999f) continue;
+            const Vec3 d = g.points[j] - p;
+            const float len = glm::length(d);
+            if (len > reach || len < fine || std::abs(glm::dot(n, d)) > 2.f * eps) continue;
+            const Vec3 q = p + 0.5f * d;
+            const uint64_t k = key(glm::ivec3(glm::round(q / fine)));
+            if (taken.count(k)) continue;
+            const Vec3 lift = 4.f * eps * n;
+            if (rays.occluded(p + lift, d / len, len)) continue;
+            const Hit under = rays.intersect(q + lift, -n, 8.f * eps);
+            if (!under.valid() || glm::dot(rays.face_normals()[under.triangle], n) < 0.999f) continue;
+            taken.insert(k);
+            out.positions.push_back(q);
+            out.normals.push_back(n);
+          }
+        }
+  }
+}
+
+} // namespace
+
 void add_between(const RayScene& rays, const CriterionGrid& g, SurfacePoints& out) {
-  if (g.kind != CriterionGrid::Kind::WorkPlane || g.points.size() < 2) return;
+  if (g.points.size() < 2) return;
+  if (g.kind != CriterionGrid::Kind::WorkPlane) return add_between_on_surfaces(rays, g, out);
   // The cells: the smallest steps between points of a row and of a column.
   const auto step = [&](int along, int across) {
     std::vector<std::pair<float, float>> v;

@@ -16,6 +16,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -60,9 +61,11 @@ struct Points {
 std::vector<Vec3> cylinder_places(const RayScene& rays, const IlluminanceCriteria& criteria, float floor_y, float height);
 inline const Vec3 kCylinderNormals[4] = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)};
 
-/// A work plane's points halfway between its points and on its cells'
-/// corners: where its illuminance dips between the calculation points.
-/// Only those the plane reaches from its point unobstructed, out of solids.
+/// A grid's points between its calculation points, where its illuminance
+/// may dip: a work plane's halfway between its points and on its cells'
+/// corners (those the plane reaches from its point unobstructed, out of
+/// solids); a wall or ceiling grid's halfway between neighbours on the same
+/// surface.
 void add_between(const RayScene& rays, const CriterionGrid& g, SurfacePoints& out);
 
 /// What one place's luminaire gives at full output.
