@@ -621,6 +621,9 @@ TEST_CASE("energy: W/m² and LENI (EN 15193-1) from the power, the floor and the
   CHECK(e["power_density_w_m2"].get<double>() == Approx(p / a));
   CHECK(e["leni_kwh_m2_a"].get<double>() == Approx((p * 0.9 * (2000 * 1 * 0.8 + 500 * 1) + 5 * (8760 - 2500)) / 1000 / a));
   CHECK(e["installed_power_w"].get<double>() == Approx(36.0 * double(s.lights.size())));
+  // EN 15193-1's Pn: every luminaire installed at full power.
+  CHECK(e["installed_leni_kwh_m2_a"].get<double>() ==
+        Approx((36.0 * double(s.lights.size()) * 0.9 * (2000 * 1 * 0.8 + 500 * 1) + 5 * (8760 - 2500)) / 1000 / a));
   CHECK(s.run.err.find("W/m²") != std::string::npos);
   CHECK(s.run.err.find("LENI") != std::string::npos);
   // Cylindrical illuminance at 1.2 m and the modelling, measured again here at one point.

@@ -50,9 +50,11 @@ nlohmann::json summary_json(const LayoutSummary& s) {
   return j;
 }
 
-/// Energy per EN 15193-1 (LENI) from the design's power and floor.
+/// Energy per EN 15193-1 (LENI) from the floor and the power: as designed
+/// (each luminaire at its dimming, set once at commissioning) and installed
+/// (every luminaire at full power, the standard's Pn).
 struct Energy {
-  double area = 0, power = 0, installed = 0, density = 0, installed_density = 0, leni = 0;
+  double area = 0, power = 0, installed = 0, density = 0, installed_density = 0, leni = 0, installed_leni = 0;
 };
 Energy energy_of(const CriteriaSolve& a, const DesignReport& r, size_t count) {
   Energy e;
@@ -63,9 +65,10 @@ Energy energy_of(const CriteriaSolve& a, const DesignReport& r, size_t count) {
     e.density = e.power / e.area;
     e.installed_density = e.installed / e.area;
     const EnergyInputs& in = a.energy;
-    const double lighting = e.power * in.fc * (in.day_hours * in.fo * in.fd + in.night_hours * in.fo) / 1000.0;
+    const double hours = in.fc * (in.day_hours * in.fo * in.fd + in.night_hours * in.fo) / 1000.0;  // kWh per W
     const double parasitic = in.parasitic_w * std::max(0.0, 8760.0 - in.day_hours - in.night_hours) / 1000.0;
-    e.leni = (lighting + parasitic) / e.area;
+    e.leni = (e.power * hours + parasitic) / e.area;
+    e.installed_leni = (e.installed * hours + parasitic) / e.area;
   }
   return e;
 }
@@ -156,6 +159,7 @@ nlohmann::json report_json(const CriteriaSolve& a, const IlluminanceCriteria& cr
                       {"power_density_w_m2", watts && e.area > 0 ? nlohmann::json(e.density) : nlohmann::json(nullptr)},
                       {"installed_power_density_w_m2", watts && e.area > 0 ? nlohmann::json(e.installed_density) : nlohmann::json(nullptr)},
                       {"leni_kwh_m2_a", watts && e.area > 0 ? nlohmann::json(e.leni) : nlohmann::json(nullptr)},
+                      {"installed_leni_kwh_m2_a", watts && e.area > 0 ? nlohmann::json(e.installed_leni) : nlohmann::json(nullptr)},
                       {"hours_day", a.energy.day_hours}, {"hours_night", a.energy.night_hours}, {"fc", a.energy.fc},
                       {"fo", a.energy.fo}, {"fd", a.energy.fd}, {"parasitic_w", a.energy.parasitic_w}}},
           {"total_luminous_flux_lm", r.flux_lm},
@@ -389,7 +393,8 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
     if (a.luminaire->profile->input_watts > 0) {
       char text[160];
       if (energy.area > 0)
-        std::snprintf(text, sizeof(text), ", %.0f W, %.2f W/m², LENI %.1f kWh/(m²·a)", energy.power, energy.density, energy.leni);
+        std::snprintf(text, sizeof(text), ", %.0f W, %.2f W/m², LENI %.1f kWh/(m²·a) (installed at full power: %.1f)", energy.power,
+                      energy.density, energy.leni, energy.installed_leni);
       else
         std::snprintf(text, sizeof(text), ", %.0f W", energy.power);
       power = text;
