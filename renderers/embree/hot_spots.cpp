@@ -1,4 +1,5 @@
 #include "hot_spots.hpp"
+#include "shadow_packet.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -188,17 +189,29 @@ Rgb HotSpots::irradiance_seen(const ShadingPoint& at, const Vec3& n, bool sees) 
 }
 
 Rgb HotSpots::irradiance(const RayScene& rays, const ShadingPoint& at, const Vec3& n, uint64_t& cast) const {
+  // The point's shadow rays to its patches leave from one place: Embree
+  // takes them 16 at a time (ShadowPacket). The seen patches' light is
+  // summed in the patches' order, as one ray at a time would sum it.
   Rgb e(0.f);
   const float eps = rays.epsilon();
+  ShadowPacket packet(rays);
+  Rgb lane_light[ShadowPacket::kLanes];
+  const auto add_seen = [&] {
+    packet.trace(cast);
+    for (int k = 0; k < packet.size(); ++k)
+      if (!packet.blocked(k)) e += lane_light[k];
+    packet.clear();
+  };
   for (const Patch& p : m_patches) {
     Vec3 dir;
     float r, cos_point;
     const float f = patch_factor(p, at, n, dir, r, cos_point);
     if (!(f > 0.f)) continue;
-    ++cast;
-    if (rays.occluded(at.ray_start(dir, cos_point > 0.f ? n : -n, eps), dir, r - 2.f * eps)) continue;
-    e += p.flux * f;
+    lane_light[packet.size()] = p.flux * f;
+    packet.add(ShadowRay{at.ray_start(dir, cos_point > 0.f ? n : -n, eps), dir, r - 2.f * eps});
+    if (packet.full()) add_seen();
   }
+  add_seen();
   return e;
 }
 
