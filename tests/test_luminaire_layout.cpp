@@ -130,6 +130,15 @@ std::vector<double> measure(const std::shared_ptr<const Scene>& scene, const Sur
   return lux;
 }
 
+/// Ē over a grid's `points` (the first of `lux`) and Emin over all of `lux`
+/// (the points and those between them).
+std::pair<double, double> mean_and_low(const std::vector<double>& lux, size_t points) {
+  double mean = 0, low = 1e30;
+  for (size_t i = 0; i < points; ++i) mean += lux[i];
+  for (double v : lux) low = std::min(low, v);
+  return {mean / double(points), low};
+}
+
 } // namespace
 
 TEST_CASE("the position index and UGR follow CIE 117's formula", "[lux][ugr]") {
@@ -248,11 +257,7 @@ TEST_CASE("lux: --margin 0.05 keeps Ē and U0 5% clear of their limits, U0 also 
       }
   pts.normals.assign(pts.positions.size(), Vec3(0.f, 1.f, 0.f));
   pts.albedo.assign(pts.positions.size(), Rgb(1.f));
-  const std::vector<double> lux = measure(scene, pts, s.lights, 0.8);
-  double mean = 0, low = 1e30;
-  for (size_t i = 0; i < g.points.size(); ++i) mean += lux[i];
-  mean /= double(g.points.size());
-  for (double v : lux) low = std::min(low, v);
+  const auto [mean, low] = mean_and_low(measure(scene, pts, s.lights, 0.8), g.points.size());
   INFO("Ē " << mean << ", Emin over the whole grid " << low);
   CHECK(mean >= 1.05 * 500 * (1 - 2e-3));
   CHECK(low / mean >= 1.05 * 0.6 * (1 - 1e-2));
@@ -290,11 +295,7 @@ TEST_CASE("lux: --margin 0.05 holds on the walls too, between their points", "[l
     }
   REQUIRE(pts.positions.size() > walls.points.size());
   pts.albedo.assign(pts.positions.size(), Rgb(1.f));
-  const std::vector<double> lux = measure(scene, pts, s.lights, 0.8);
-  double mean = 0, low = 1e30;
-  for (size_t i = 0; i < walls.points.size(); ++i) mean += lux[i];
-  mean /= double(walls.points.size());
-  for (double v : lux) low = std::min(low, v);
+  const auto [mean, low] = mean_and_low(measure(scene, pts, s.lights, 0.8), walls.points.size());
   INFO("walls: Ē " << mean << ", Emin with the points between " << low << " over " << pts.positions.size() << " points");
   CHECK(mean >= 1.05 * 150 * (1 - 2e-3));
   CHECK(low / mean >= 1.05 * 0.25 * (1 - 1e-2));
