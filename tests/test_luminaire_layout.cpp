@@ -472,6 +472,20 @@ TEST_CASE("a target made from a 3 × 4 array of panels comes back as that array"
     INFO(report.array.shape << ", U0 wanted " << c.grids.front().u0);
     check_gives_back(made, lights, report);
   }
+  // With the default (--layout auto) the array set beside the free layout
+  // is that one too. The free layout that auto keeps meets the same
+  // criteria with fewer luminaires: an array that costs more is not kept.
+  DesignSettings settings;
+  settings.maintenance_factor = 1;
+  DesignReport report;
+  const Lighting lights = design_for_illuminance(*renderer, space, luminaire, c, settings, report);
+  INFO(report.array.shape << "; free " << report.free.count << "; kept " << report.chosen << " (" << report.why << ")");
+  CHECK(report.array.tried);
+  CHECK(report.array.met);
+  CHECK(report.array.count == 12);
+  CHECK((report.array.shape.rfind("3 × 4", 0) == 0 || report.array.shape.rfind("4 × 3", 0) == 0));
+  CHECK(report.met);
+  CHECK(lights.size() <= 12);
 }
 
 namespace {
