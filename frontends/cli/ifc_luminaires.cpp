@@ -159,12 +159,12 @@ IfcWritten write_ifc_luminaires(const std::filesystem::path& source, const std::
     // one whose floor is highest.
     shared_ptr<IfcSpatialElement> where;
     std::string where_name;
-    double floor = -std::numeric_limits<double>::max();
+    double highest_floor = -std::numeric_limits<double>::max();
     for (const auto& [space, f] : footprints) {
       if (!f.contains(at) && !f.contains(at - glm::dvec3(0, 0, 0.05 * per_metre))) continue;
       const double z = (f.world * glm::dvec4(0.0, 0.0, f.z0, 1.0)).z;
-      if (where && !(z > floor)) continue;
-      where = space, floor = z;
+      if (where && !(z > highest_floor)) continue;
+      where = space, highest_floor = z;
       const auto& label = space->m_LongName ? space->m_LongName : space->m_Name;
       where_name = label ? narrow(label->m_value) : "IfcSpace";
     }
