@@ -191,6 +191,13 @@ TEST_CASE("luminaires keep their size and spacing: no two overlap, --min-spacing
   REQUIRE(sized.run.exit_code == 0);
   CHECK(sized.report["luminaire_size_m"][0] == Approx(0.3));  // along C0: L
   CHECK(sized.report["luminaire_size_m"][1] == Approx(1.2));
+  CHECK(sized.run.err.find("gives the luminaire no size") == std::string::npos);
+  // A file that gives no size, and none given: said, once.
+  const Solved sizeless = solve(dir, criteria, point_panel(dir), {"--layout", "free"});
+  INFO(sizeless.run.err);
+  REQUIRE(sizeless.run.exit_code == 0);
+  REQUIRE(sizeless.lights.size() >= 2);
+  CHECK(sizeless.run.err.find("hilight: warning: point.ies gives the luminaire no size") != std::string::npos);
 }
 
 TEST_CASE("lux: --lights N with criteria is honoured: exactly N, or exit 3 with the fewest that can", "[lux][layout][cli]") {

@@ -333,6 +333,13 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   stop_command_progress();  // the bar's line is cleared before the summary
   const std::string name = std::filesystem::path(a.luminaire->profile_path).filename().string();
   const Energy energy = energy_of(a, report, lights.size());
+  // A luminaire without a size (an IES file with no opening, nothing else
+  // given) keeps no distance from its neighbours but the lattice's.
+  if (report.luminaire_size == glm::vec2(0.f) && !(a.design.settings.spacing.min_spacing > 0) && lights.size() > 1)
+    std::fprintf(stderr,
+                 "hilight: warning: %s gives the luminaire no size (no luminous opening or body): luminaires may stand as close as "
+                 "the lattice of places; give --luminaire-size W,L or --min-spacing\n",
+                 name.c_str());
   if (!a.quiet) {
     for (size_t g = 0; g < criteria.grids.size(); ++g) {
       const auto& c = criteria.grids[g];
