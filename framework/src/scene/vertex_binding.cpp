@@ -1,5 +1,7 @@
 #include "hilight/vertex_binding.hpp"
 
+#include "hilight/point_grid.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <tbb/parallel_for.h>
@@ -12,24 +14,17 @@ namespace {
 /// Vertices on a uniform hash grid whose cells are the match tolerance wide.
 class VertexGrid {
 public:
-  VertexGrid(const Scene& scene, float cell) : m_scene(scene), m_cell(cell) {
-    for (uint32_t v = 0; v < scene.positions.size(); ++v) m_cells[key(coord(scene.positions[v]))].push_back(v);
+  VertexGrid(const Scene& scene, float cell) : m_scene(scene), m_grid(cell) {
+    for (uint32_t v = 0; v < scene.positions.size(); ++v) m_grid.add(scene.positions[v], v);
   }
 
   /// Vertices within `tolerance` of p, nearest first, then in vertex order.
   std::vector<uint32_t> near(const Vec3& p, float tolerance) const {
     std::vector<std::pair<float, uint32_t>> found;
-    const glm::ivec3 c = coord(p);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          auto it = m_cells.find(key(c + glm::ivec3(dx, dy, dz)));
-          if (it == m_cells.end()) continue;
-          for (uint32_t v : it->second) {
-            float d = glm::length(m_scene.positions[v] - p);
-            if (d <= tolerance) found.emplace_back(d, v);
-          }
-        }
+    m_grid.for_each_near(p, [&](uint32_t v) {
+      const float d = glm::length(m_scene.positions[v] - p);
+      if (d <= tolerance) found.emplace_back(d, v);
+    });
     std::sort(found.begin(), found.end());
     // Vertices at the same place (split at a crease) count as equally near.
     std::vector<uint32_t> out;
@@ -40,13 +35,8 @@ public:
   }
 
 private:
-  glm::ivec3 coord(const Vec3& p) const { return glm::ivec3(glm::floor(p / m_cell)); }
-  static uint64_t key(const glm::ivec3& c) {
-    return (uint64_t(uint32_t(c.x) & 0x1FFFFF) << 42) | (uint64_t(uint32_t(c.y) & 0x1FFFFF) << 21) | uint64_t(uint32_t(c.z) & 0x1FFFFF);
-  }
   const Scene& m_scene;
-  float m_cell;
-  std::unordered_map<uint64_t, std::vector<uint32_t>> m_cells;
+  PointGrid m_grid;
 };
 
 /// The file starts with the scene's vertices in order (a render; a refined

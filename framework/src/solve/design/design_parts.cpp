@@ -1,6 +1,8 @@
 // The illuminance design's parts (design_parts.hpp).
 #include "design_parts.hpp"
 
+#include "hilight/point_grid.hpp"
+
 namespace hilight::design {
 
 std::vector<Vec3> cylinder_places(const RayScene& rays, const IlluminanceCriteria& criteria, float floor_y, float height) {
@@ -23,40 +25,29 @@ namespace {
 void add_between_on_surfaces(const RayScene& rays, const CriterionGrid& g, SurfacePoints& out) {
   const float reach = 1.5f * float(g.spacing), eps = rays.epsilon();
   if (!(reach > 0.f)) return;
-  const auto cell_of = [&](const Vec3& p) { return glm::ivec3(glm::floor(p / reach)); };
-  const auto key = [](glm::ivec3 c) {
-    return (uint64_t(uint32_t(c.x) & 0x1FFFFF) << 42) | (uint64_t(uint32_t(c.y) & 0x1FFFFF) << 21) | uint64_t(uint32_t(c.z) & 0x1FFFFF);
-  };
-  std::unordered_map<uint64_t, std::vector<size_t>> cells;
-  for (size_t i = 0; i < g.points.size(); ++i) cells[key(cell_of(g.points[i]))].push_back(i);
+  PointGrid grid(reach);
+  for (size_t i = 0; i < g.points.size(); ++i) grid.add(g.points[i], uint32_t(i));
   std::unordered_set<uint64_t> taken;  // midpoints already added, on a fine lattice
   const float fine = 1e-3f * reach;
-  for (size_t i = 0; i < g.points.size(); ++i) {
+  // The midpoint of i and a later neighbour j on the same surface, once.
+  const auto between = [&](size_t i, size_t j) {
     const Vec3 &p = g.points[i], &n = g.normals[i];
-    const glm::ivec3 c = cell_of(p);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto it = cells.find(key(c + glm::ivec3(dx, dy, dz)));
-          if (it == cells.end()) continue;
-          for (size_t j : it->second) {
-            if (j <= i || glm::dot(n, g.normals[j]) < 0.999f) continue;
-            const Vec3 d = g.points[j] - p;
-            const float len = glm::length(d);
-            if (len > reach || len < fine || std::abs(glm::dot(n, d)) > 2.f * eps) continue;
-            const Vec3 q = p + 0.5f * d;
-            const uint64_t k = key(glm::ivec3(glm::round(q / fine)));
-            if (taken.count(k)) continue;
-            const Vec3 lift = 4.f * eps * n;
-            if (rays.occluded(p + lift, d / len, len)) continue;
-            const Hit under = rays.intersect(q + lift, -n, 8.f * eps);
-            if (!under.valid() || glm::dot(rays.face_normals()[under.triangle], n) < 0.999f) continue;
-            taken.insert(k);
-            out.positions.push_back(q);
-            out.normals.push_back(n);
-          }
-        }
-  }
+    if (j <= i || glm::dot(n, g.normals[j]) < 0.999f) return;
+    const Vec3 d = g.points[j] - p;
+    const float len = glm::length(d);
+    if (len > reach || len < fine || std::abs(glm::dot(n, d)) > 2.f * eps) return;
+    const Vec3 q = p + 0.5f * d;
+    const uint64_t k = PointGrid::key(glm::ivec3(glm::round(q / fine)));
+    if (taken.count(k)) return;
+    const Vec3 lift = 4.f * eps * n;
+    if (rays.occluded(p + lift, d / len, len)) return;
+    const Hit under = rays.intersect(q + lift, -n, 8.f * eps);
+    if (!under.valid() || glm::dot(rays.face_normals()[under.triangle], n) < 0.999f) return;
+    taken.insert(k);
+    out.positions.push_back(q);
+    out.normals.push_back(n);
+  };
+  for (size_t i = 0; i < g.points.size(); ++i) grid.for_each_near(g.points[i], [&](uint32_t j) { between(i, j); });
 }
 
 } // namespace
