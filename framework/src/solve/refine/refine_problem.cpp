@@ -2,6 +2,7 @@
 
 #include "hilight/solve/fit.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace hilight {
@@ -14,14 +15,19 @@ std::string geometry_key(const Light& l) {
   if (l.type != LightType::Spot) std::fill(data + 4, data + 10, 0.f);
   return std::string(reinterpret_cast<const char*>(data), sizeof(data));
 }
-constexpr size_t kMaxStoredResponses = 4096;
+// The responses kept for lights already asked about, at most this many
+// bytes: a refinement revisits its recent lights, not the whole walk, and two
+// cuts refined at once each keep their own (4,096 responses over the bench
+// building's samples held 220 MB each).
+constexpr size_t kMaxStoredBytes = size_t(48) << 20;
+size_t max_stored_responses(size_t samples) { return std::max<size_t>(64, kMaxStoredBytes / (sizeof(Rgb) * std::max<size_t>(1, samples))); }
 } // namespace
 
 const std::vector<Rgb>& SampleRefineProblem::phi_of(const Light& light) {
   std::string key = geometry_key(light);
   auto it = m_phi.find(key);
   if (it != m_phi.end()) return it->second;
-  if (m_phi.size() >= kMaxStoredResponses) m_phi.clear();
+  if (m_phi.size() >= max_stored_responses(m_model.samples().size())) m_phi.clear();
   return m_phi.emplace(key, m_model.responses(std::span<const Light>(&light, 1))).first->second;
 }
 
@@ -39,7 +45,7 @@ std::vector<Rgb> SampleRefineProblem::responses_as(std::span<const Light> lights
   for (const auto& l : lights)
     if (!m_phi.count(geometry_key(l))) missing.push_back(l);
   if (!missing.empty()) {
-    if (m_phi.size() + missing.size() > kMaxStoredResponses) m_phi.clear();
+    if (m_phi.size() + missing.size() > max_stored_responses(m)) m_phi.clear();
     std::vector<Rgb> phi = m_model.responses(missing);
     for (size_t q = 0; q < missing.size(); ++q)
       m_phi[geometry_key(missing[q])].assign(phi.begin() + std::ptrdiff_t(q * m), phi.begin() + std::ptrdiff_t((q + 1) * m));
