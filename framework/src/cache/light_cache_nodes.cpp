@@ -37,6 +37,12 @@ Block pack_block(float scale, const uint16_t* h, size_t count) {
     block.halves.insert(block.halves.end(), h + 3 * start, h + 3 * v);
   }
   block.run_offset.push_back(uint32_t(block.halves.size() / 3));
+  // Grown a run at a time, the vectors hold up to twice what they keep: a
+  // cache of every bounce is lit nearly everywhere (the bench building's
+  // nodes took 176 MB in memory for 120 MB of data).
+  block.run_start.shrink_to_fit();
+  block.run_offset.shrink_to_fit();
+  block.halves.shrink_to_fit();
   return block;
 }
 
