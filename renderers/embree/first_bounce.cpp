@@ -1,5 +1,6 @@
 #include "first_bounce.hpp"
 
+#include "field_sums.hpp"
 #include "sampling.hpp"
 #include "shadow_packet.hpp"
 #include "hilight/error.hpp"
@@ -189,8 +190,7 @@ void BounceGather::interpolated_indirect_irradiance(size_t i, const float* verte
 void BounceGather::field_irradiance(size_t i, int side, const Rgb* field, size_t lights, Rgb* out) const {
   std::fill(out, out + lights, Rgb(0.f));
   for_each_hit(i, side, [&](const Rgb& albedo, const uint32_t* entry, const float* weight) {
-    const Rgb *a = field + entry[0] * lights, *b = field + entry[1] * lights, *c = field + entry[2] * lights;
-    for (size_t j = 0; j < lights; ++j) out[j] += albedo * (weight[0] * a[j] + weight[1] * b[j] + weight[2] * c[j]);
+    add_interpolated(albedo, weight, field + entry[0] * lights, field + entry[1] * lights, field + entry[2] * lights, lights, out);
   });
   const float scale = 2.f / float(m_samples);
   for (size_t j = 0; j < lights; ++j) out[j] = out[j] * scale;

@@ -1,5 +1,6 @@
 #include "multi_bounce.hpp"
 
+#include "field_sums.hpp"
 #include "hilight/bounce_series.hpp"
 #include "hilight/bounces.hpp"
 #include "hilight/error.hpp"
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <type_traits>
 
 namespace hilight::embree {
 
@@ -50,8 +52,11 @@ std::vector<Rgb> MultiBounce::bounced_field(const std::vector<float>& direct, si
           m_gather.for_each_hit(v, side, [&](const Rgb& albedo, const uint32_t* entry, const float* weight) {
             if (sparse && !(lit[entry[0]] | lit[entry[1]] | lit[entry[2]])) return;
             const auto *a = in + entry[0] * lights, *b = in + entry[1] * lights, *c = in + entry[2] * lights;
-            for (size_t j = 0; j < lights; ++j)
-              if (active[j]) acc[j] += albedo * value(weight, a[j], b[j], c[j]);
+            if constexpr (std::is_same_v<std::remove_cvref_t<decltype(*in)>, Rgb>)
+              add_interpolated(albedo, weight, a, b, c, lights, acc.data());  // every light: the ended ones are not written
+            else
+              for (size_t j = 0; j < lights; ++j)
+                if (active[j]) acc[j] += albedo * value(weight, a[j], b[j], c[j]);
           });
           Rgb* o = &out[(2 * v + side) * lights];
           uint8_t any = 0;
