@@ -64,12 +64,33 @@ double mean_position_error(const Lighting& truth, const Lighting& found) {
 /// removed first: only those, since --cache-dir may name a folder with other things in it).
 /// The solve as `hilight solve` assembles it, its light cache kept in `cache_root`.
 /// `bounces`: as `hilight solve --bounces` takes it.
+/// Settings for the optimizer plugin (--opt KEY=VALUE), as `hilight solve --opt` takes them.
+std::vector<std::string> g_optimizer_settings;
+
 SolveSpec bench_spec(const std::string& cache_root, const std::string& bounces, const std::string& optimizer = PluginDefaults::optimizer) {
   SolveSpec spec;
   spec.optimizer = optimizer;
+  spec.optimizer_settings = g_optimizer_settings;
   spec.renderer_settings = {"bounces=" + bounces};
   spec.settings.cache_dir = cache_root;
   return spec;
+}
+
+/// The report's log of moves, in the order they ran: what each cost and did.
+nlohmann::json moves_json(const SolveReport& report) {
+  nlohmann::json moves = nlohmann::json::array();
+  for (const StageRecord& s : report.stages)
+    moves.push_back({{"move", s.name}, {"seconds", s.seconds}, {"dbar_before", s.dbar_before}, {"dbar_after", s.dbar_after},
+                     {"kept", s.kept}, {"skipped", s.skipped}});
+  return moves;
+}
+
+/// The cuts the count walk looked at: each one's D̄ from the hierarchy and, where refined, after.
+nlohmann::json cuts_json(const SolveReport& report) {
+  nlohmann::json cuts = nlohmann::json::array();
+  for (const CutRecord& c : report.cuts)
+    cuts.push_back({{"lights", c.lights}, {"dbar_initial", c.dbar_initial}, {"refined", c.refined}, {"dbar_refined", c.dbar_refined}});
+  return cuts;
 }
 
 /// A solve that builds the light cache anew: its seconds, and each stage's
@@ -100,6 +121,7 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
   std::map<std::string, std::vector<double>> stages, cold_stages;
   size_t found_count = 0;
   double cache_mb = 0;
+  nlohmann::json last_moves = nlohmann::json::array(), last_cuts = nlohmann::json::array();
   for (int r = 0; r < repeat; ++r) {
     cold.push_back(cold_solve_seconds(session, target, cache_root, cold_stages));
     uint64_t bytes = 0;
@@ -112,6 +134,8 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
     dbar.push_back(report.dbar);
     pos_err.push_back(mean_position_error(truth, found) / scene->diagonal());
     found_count = found.size();
+    last_moves = moves_json(report);
+    last_cuts = cuts_json(report);
   }
   nlohmann::json j = {{"figure", "solve_scene"}, {"scene", built.name}, {"bounces", bounces}, {"vertices", scene->positions.size()},
                             {"true_lights", truth.size()}, {"found_lights", found_count}, {"repeat", repeat},
@@ -120,6 +144,8 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
                             {"light_cache_mb", cache_mb}, {"peak_rss_mb_so_far", peak_rss_mb()}};
   for (const auto& [stage, v] : stages) j["warm_stage_seconds_median"][stage] = median(v);
   for (const auto& [stage, v] : cold_stages) j["cold_stage_seconds_median"][stage] = median(v);
+  j["last_warm_moves"] = last_moves;
+  j["last_warm_cuts"] = last_cuts;
   std::printf("%s\n", j.dump().c_str());
   std::fflush(stdout);
 }
@@ -154,6 +180,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
       ->capture_default_str();
   app.add_option("--home-edge", home_edge, "tessellation of the home (0.2: about 260k vertices)")->check(FiniteNonNegative)->capture_default_str();
   app.add_flag("--skip-no-cache", no_cache_figure, "skip the comparison solve without the light cache");
+  app.add_option("--opt", g_optimizer_settings, "an optimizer setting KEY=VALUE (repeatable), as hilight solve --opt takes it");
   if (auto code = parse_arguments(app, args)) return *code;
   set_thread_limit(threads);
   const BenchCacheFolder cache_folder(cache_root);
