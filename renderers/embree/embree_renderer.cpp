@@ -1,5 +1,7 @@
 #include "embree_renderer.hpp"
 
+#include "shared_gathers.hpp"
+
 #include "hilight/bounces.hpp"
 
 #include <algorithm>
@@ -50,12 +52,16 @@ double EmbreeRenderer::further_rays(size_t lights, bool bounce) const {
 
 std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoints& points, CallProgress* progress) {
   auto origins = shading_points(points);
-  return m_gathers.get(points.content_key(), [&] {
+  const uint64_t key = points.content_key();
+  return m_gathers.get(key, [&]() -> std::shared_ptr<const BounceGather> {
+    const SharedGathers::Key shared{m_embree.get(), key, m_settings.bounce_samples, m_settings.seed};
+    if (auto other = SharedGathers::find(shared)) return other;  // the same rays, cast by another renderer
     CallProgress::Phase phase(progress, "gathering the first bounce", double(points.size()),
                               double(points.size()) * m_settings.bounce_samples);
     auto gather = std::make_shared<const BounceGather>(*m_embree, points, *origins, m_settings.bounce_samples, m_settings.seed,
                                                        phase.stage());
     m_rays += gather->rays_cast();
+    SharedGathers::add(shared, gather);
     return gather;
   });
 }

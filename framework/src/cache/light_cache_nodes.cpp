@@ -67,6 +67,8 @@ bool block_from_runs(const std::vector<uint32_t>& runs, std::vector<uint16_t> ha
   size_t v = 0, lit = 0;
   block.run_start.clear();
   block.run_offset.clear();
+  block.run_start.reserve(runs.size() / 2);  // exactly, as pack_block keeps them
+  block.run_offset.reserve(runs.size() / 2 + 1);
   for (size_t r = 0; r < runs.size(); r += 2) {
     if (runs[r] > count - v) return false;
     v += runs[r];

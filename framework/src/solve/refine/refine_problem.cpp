@@ -16,10 +16,11 @@ std::string geometry_key(const Light& l) {
   return std::string(reinterpret_cast<const char*>(data), sizeof(data));
 }
 // The responses kept for lights already asked about, at most this many
-// bytes: a refinement revisits its recent lights, not the whole walk, and two
-// cuts refined at once each keep their own (4,096 responses over the bench
-// building's samples held 220 MB each).
-constexpr size_t kMaxStoredBytes = size_t(48) << 20;
+// bytes: a refinement revisits its current and recent lights, not the whole
+// walk (a simplex run is 20 evaluations), and two cuts refined at once each
+// keep their own (4,096 responses over the bench building's samples held
+// 220 MB each).
+constexpr size_t kMaxStoredBytes = size_t(16) << 20;
 size_t max_stored_responses(size_t samples) { return std::max<size_t>(64, kMaxStoredBytes / (sizeof(Rgb) * std::max<size_t>(1, samples))); }
 } // namespace
 
