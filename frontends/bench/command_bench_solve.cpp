@@ -206,6 +206,8 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   for (const auto& name : optimizers) {
     SolveSession session(registry, bench_spec(cache_root, bounces, name), scene, rays);
     std::vector<double> cold, warm, fine, dbar, pos_err;
+    nlohmann::json last_fine_tune = nlohmann::json::array();
+    std::map<std::string, std::vector<double>> fine_stages;
     std::map<std::string, std::vector<double>> stages, cold_stages;
     size_t count = 0;
     for (int r = 0; r < repeat; ++r) {
@@ -221,14 +223,17 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
       SolveReport tune;
       solver->fine_tune(edited, found, tune);
       fine.push_back(tune.seconds["total"]);
+      last_fine_tune = moves_json(tune);
+      for (const auto& [stage, seconds] : tune.seconds) fine_stages[stage].push_back(seconds);
     }
     nlohmann::json j = {{"figure", "solve"}, {"optimizer", name}, {"bounces", bounces}, {"vertices", scene->positions.size()},
                         {"true_lights", truth.size()}, {"found_lights", count}, {"repeat", repeat},
                         {"dbar_median", median(dbar)}, {"position_error_over_diagonal_median", median(pos_err)},
                         {"cold_seconds_median", median(cold)}, {"warm_seconds_median", median(warm)},
-                        {"fine_tune_seconds_median", median(fine)}};
+                        {"fine_tune_seconds_median", median(fine)}, {"last_fine_tune_moves", last_fine_tune}};
     for (const auto& [stage, v] : stages) j["warm_stage_seconds_median"][stage] = median(v);
     for (const auto& [stage, v] : cold_stages) j["cold_stage_seconds_median"][stage] = median(v);
+    for (const auto& [stage, v] : fine_stages) j["fine_tune_stage_seconds_median"][stage] = median(v);
     std::printf("%s\n", j.dump().c_str());
     std::fflush(stdout);
   }
