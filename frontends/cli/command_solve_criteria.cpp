@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include "hilight/solve/criteria_in_scene.hpp"
+#include "hilight/solve/solve_session.hpp"
 
 namespace hilight::cli {
 
@@ -270,7 +271,15 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   std::optional<ProgressStage> stage(std::in_place, "loading the scene");
   auto scene = std::make_shared<const Scene>(load_scene(a.scene_path, a.scene_options));
   auto rays = RayScene::shared(scene);
-  const auto reference = a.renderer.create(registry, scene);
+  // The renderer as every solve assembles it (SolveSession: the user's
+  // settings and the solve's seed); the design needs its reference alone.
+  SolveSpec spec;
+  spec.renderer = a.renderer.name;
+  spec.renderer_settings = a.renderer.assignments(&registry);
+  spec.cache = PluginDefaults::no_cache;
+  SolveSession session(registry, spec, scene, rays);
+  a.renderer.note_bounces(registry);
+  Renderer* const reference = &session.reference();
   PlacementRules rules = rules_to_local(a.placement, scene->frame);
   rules.resolve_room_names(scene_rooms(a.scene_path, rules, *rays));
   DesignReport report;

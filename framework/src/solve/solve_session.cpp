@@ -34,7 +34,6 @@ SolveSession::SolveSession(const Registry& registry, SolveSpec spec, std::shared
   if (m_spec.cache != PluginDefaults::no_cache && bounced)
     m_cache = registry.create_cache(m_spec.cache, Properties::from_assignments(m_spec.cache_settings));
   m_reference = make_renderer(m_reference_settings);
-  m_fast = make_renderer(m_fast_settings);
   if (!m_rays) m_rays = RayScene::shared(m_scene);
 }
 
@@ -61,8 +60,13 @@ std::vector<std::string> SolveSession::preview_settings() const {
   return settings;
 }
 
+Renderer& SolveSession::fast() const {
+  std::call_once(m_fast_once, [&] { m_fast = make_renderer(m_fast_settings); });
+  return *m_fast;
+}
+
 std::unique_ptr<Solver> SolveSession::make_solver(const SolveSettings& settings, ProgressFn progress) const {
-  return std::make_unique<Solver>(m_scene, m_rays, *m_fast, *m_reference, *m_sampler, *m_optimizer, m_cache.get(), settings,
+  return std::make_unique<Solver>(m_scene, m_rays, fast(), *m_reference, *m_sampler, *m_optimizer, m_cache.get(), settings,
                                   std::move(progress));
 }
 

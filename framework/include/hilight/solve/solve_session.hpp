@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -55,7 +56,10 @@ public:
   const std::shared_ptr<const Scene>& scene() const { return m_scene; }
   const std::shared_ptr<const RayScene>& rays() const { return m_rays; }
   Renderer& reference() { return *m_reference; }
-  Renderer& fast() { return *m_fast; }
+  /// The fast twin, made on first use: a criteria solve or a render needs
+  /// the reference alone (a second GPU context, a second pass over the
+  /// vertices, for nothing).
+  Renderer& fast() const;
 
 private:
   const Registry& m_registry;
@@ -63,7 +67,9 @@ private:
   std::shared_ptr<const Scene> m_scene;
   std::shared_ptr<const RayScene> m_rays;
   std::vector<std::string> m_reference_settings, m_fast_settings;
-  std::unique_ptr<Renderer> m_reference, m_fast;
+  std::unique_ptr<Renderer> m_reference;
+  mutable std::once_flag m_fast_once;
+  mutable std::unique_ptr<Renderer> m_fast;
   std::unique_ptr<Sampler> m_sampler;
   std::unique_ptr<Optimizer> m_optimizer;
   std::unique_ptr<LightCacheBuilder> m_cache;  ///< null: no light cache
