@@ -60,19 +60,20 @@ double mean_position_error(const Lighting& truth, const Lighting& found) {
   return truth.empty() ? 0.0 : sum / double(truth.size());
 }
 
-/// Seconds of a solve that builds the light cache (the folder's light caches
-/// removed first: only those, since --cache-dir may name a folder with other things in it).
-/// The solve as `hilight solve` assembles it, its light cache kept in `cache_root`.
-/// `bounces`: as `hilight solve --bounces` takes it.
-/// Settings for the optimizer plugin (--opt KEY=VALUE), as `hilight solve --opt` takes them.
-std::vector<std::string> g_optimizer_settings;
+/// What every solve of a `bench solve` run shares.
+struct BenchRun {
+  std::string cache_root;                       ///< where the light caches go
+  std::string bounces;                          ///< as `hilight solve --bounces` takes it
+  std::vector<std::string> optimizer_settings;  ///< --opt KEY=VALUE, as `hilight solve --opt` takes them
+};
 
-SolveSpec bench_spec(const std::string& cache_root, const std::string& bounces, const std::string& optimizer = PluginDefaults::optimizer) {
+/// The solve as `hilight solve` assembles it, its light cache kept in the run's folder.
+SolveSpec bench_spec(const BenchRun& run, const std::string& optimizer = PluginDefaults::optimizer) {
   SolveSpec spec;
   spec.optimizer = optimizer;
-  spec.optimizer_settings = g_optimizer_settings;
-  spec.renderer_settings = {"bounces=" + bounces};
-  spec.settings.cache_dir = cache_root;
+  spec.optimizer_settings = run.optimizer_settings;
+  spec.renderer_settings = {"bounces=" + run.bounces};
+  spec.settings.cache_dir = run.cache_root;
   return spec;
 }
 
@@ -106,15 +107,14 @@ double cold_solve_seconds(const SolveSession& session, const Target& target, con
 
 /// A built scene (issue 10) with one seeded random configuration of `lights`
 /// lights: cold and warm solve, D̄, position error, the light cache's size.
-void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights, int repeat, const std::string& cache_root,
-                       const std::string& bounces, Registry& registry) {
+void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights, int repeat, const BenchRun& run, Registry& registry) {
   auto scene = std::make_shared<const Scene>(finish_scene(built.scene, {max_edge}));
   auto rays = RayScene::shared(scene);
   std::mt19937_64 rng(7);
   builders::RandomLightRules rules;
   rules.min_count = rules.max_count = lights;
   const Lighting truth = builders::random_lights(built, *rays, rng, rules);
-  SolveSession session(registry, bench_spec(cache_root, bounces), scene, rays);
+  SolveSession session(registry, bench_spec(run), scene, rays);
   const std::vector<Rgb> values = session.reference().illuminate(SurfacePoints::from_vertices(*scene), truth);
   const Target target = bind_target("bench", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
   std::vector<double> cold, warm, dbar, pos_err;
@@ -123,9 +123,9 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
   double cache_mb = 0;
   nlohmann::json last_moves = nlohmann::json::array(), last_cuts = nlohmann::json::array();
   for (int r = 0; r < repeat; ++r) {
-    cold.push_back(cold_solve_seconds(session, target, cache_root, cold_stages));
+    cold.push_back(cold_solve_seconds(session, target, run.cache_root, cold_stages));
     uint64_t bytes = 0;
-    for (const auto& f : list_cache(cache_root)) bytes += f.bytes;
+    for (const auto& f : list_cache(run.cache_root)) bytes += f.bytes;
     cache_mb = double(bytes) / (1024.0 * 1024.0);
     SolveReport report;
     const Lighting found = session.make_solver()->solve(target, report);  // a new Solver: the cache from disk
@@ -137,7 +137,7 @@ void bench_built_scene(builders::BuiltScene built, float max_edge, size_t lights
     last_moves = moves_json(report);
     last_cuts = cuts_json(report);
   }
-  nlohmann::json j = {{"figure", "solve_scene"}, {"scene", built.name}, {"bounces", bounces}, {"vertices", scene->positions.size()},
+  nlohmann::json j = {{"figure", "solve_scene"}, {"scene", built.name}, {"bounces", run.bounces}, {"vertices", scene->positions.size()},
                             {"true_lights", truth.size()}, {"found_lights", found_count}, {"repeat", repeat},
                             {"dbar_median", median(dbar)}, {"position_error_over_diagonal_median", median(pos_err)},
                             {"cold_seconds_median", median(cold)}, {"warm_seconds_median", median(warm)},
@@ -157,16 +157,16 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   std::vector<std::string> optimizers = {"varpro", "nelder-mead"};
   int repeat = 3, threads = 0;
   float max_edge = 0.15f;
-  std::string cache_root;
+  BenchRun run;
+  run.bounces = "all";
   app.add_option("--optimizers", optimizers, "optimizer plugins to compare")->capture_default_str();
   app.add_option("--repeat", repeat, "runs per figure (median reported)")->check(CLI::Range(1, 50))->capture_default_str();
   app.add_option("--max-edge", max_edge, "tessellation of the room (0.15: about 25k vertices)")->check(FiniteNonNegative)->capture_default_str();
-  app.add_option("--cache-dir", cache_root,
+  app.add_option("--cache-dir", run.cache_root,
                  "folder for the light caches (default: a new temporary one, removed after); only its light cache files are removed");
   app.add_option("--threads", threads, "worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   bool no_cache_figure = false;
-  std::string bounces = "all";
-  app.add_option("--bounces", bounces, "diffuse bounces of the targets and the solve, as hilight solve takes them")
+  app.add_option("--bounces", run.bounces, "diffuse bounces of the targets and the solve, as hilight solve takes them")
       ->check(BounceCount)
       ->capture_default_str();
   std::vector<std::string> scenes = {"room", "building", "product"};
@@ -180,14 +180,14 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
       ->capture_default_str();
   app.add_option("--home-edge", home_edge, "tessellation of the home (0.2: about 260k vertices)")->check(FiniteNonNegative)->capture_default_str();
   app.add_flag("--skip-no-cache", no_cache_figure, "skip the comparison solve without the light cache");
-  app.add_option("--opt", g_optimizer_settings, "an optimizer setting KEY=VALUE (repeatable), as hilight solve --opt takes it");
+  app.add_option("--opt", run.optimizer_settings, "an optimizer setting KEY=VALUE (repeatable), as hilight solve --opt takes it");
   if (auto code = parse_arguments(app, args)) return *code;
   set_thread_limit(threads);
-  const BenchCacheFolder cache_folder(cache_root);
+  const BenchCacheFolder cache_folder(run.cache_root);
   auto wants = [&](const char* s) { return std::find(scenes.begin(), scenes.end(), s) != scenes.end(); };
-  if (wants("building")) bench_built_scene(builders::two_storey_building(), building_edge, 6, repeat, cache_root, bounces, registry);
-  if (wants("product")) bench_built_scene(builders::product_on_turntable(), 0.f, 3, repeat, cache_root, bounces, registry);
-  if (wants("home")) bench_built_scene(builders::furnished_home(), home_edge, 5, repeat, cache_root, bounces, registry);
+  if (wants("building")) bench_built_scene(builders::two_storey_building(), building_edge, 6, repeat, run, registry);
+  if (wants("product")) bench_built_scene(builders::product_on_turntable(), 0.f, 3, repeat, run, registry);
+  if (wants("home")) bench_built_scene(builders::furnished_home(), home_edge, 5, repeat, run, registry);
   if (!wants("room")) return 0;
 
   auto scene = std::make_shared<const Scene>(finish_scene(builders::furnished_room(), {max_edge}));
@@ -196,7 +196,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
                           Light::point({2.3f, 1.6f, 3.9f}, Rgb(1.6f, 1.7f, 2.f)), Light::point({4.8f, 2.2f, 3.8f}, Rgb(1.8f))};
   // The target comes from the solve's reference renderer, as `hilight
   // render` would make it; the solve evaluates with its fast twin.
-  std::vector<Rgb> values = SolveSession(registry, bench_spec(cache_root, bounces), scene, rays).reference().illuminate(SurfacePoints::from_vertices(*scene), truth);
+  std::vector<Rgb> values = SolveSession(registry, bench_spec(run), scene, rays).reference().illuminate(SurfacePoints::from_vertices(*scene), truth);
   Target target = bind_target("bench", scene->positions, values, std::vector<float>(values.size(), 1.f), *scene, *rays, scene->normals);
   // A small edit for fine-tune: 10% brighter on the floor's left half.
   Target edited = target;
@@ -204,14 +204,14 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
     if (edited.points.positions[i].y < 0.01f && edited.points.positions[i].x < 3.f) edited.value[i] *= 1.1f;
 
   for (const auto& name : optimizers) {
-    SolveSession session(registry, bench_spec(cache_root, bounces, name), scene, rays);
+    SolveSession session(registry, bench_spec(run, name), scene, rays);
     std::vector<double> cold, warm, fine, dbar, pos_err;
     nlohmann::json last_fine_tune = nlohmann::json::array();
     std::map<std::string, std::vector<double>> fine_stages;
     std::map<std::string, std::vector<double>> stages, cold_stages;
     size_t count = 0;
     for (int r = 0; r < repeat; ++r) {
-      cold.push_back(cold_solve_seconds(session, target, cache_root, cold_stages));
+      cold.push_back(cold_solve_seconds(session, target, run.cache_root, cold_stages));
       const auto solver = session.make_solver();  // a new Solver: the cache from disk
       SolveReport report;
       Lighting found = solver->solve(target, report);
@@ -226,7 +226,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
       last_fine_tune = moves_json(tune);
       for (const auto& [stage, seconds] : tune.seconds) fine_stages[stage].push_back(seconds);
     }
-    nlohmann::json j = {{"figure", "solve"}, {"optimizer", name}, {"bounces", bounces}, {"vertices", scene->positions.size()},
+    nlohmann::json j = {{"figure", "solve"}, {"optimizer", name}, {"bounces", run.bounces}, {"vertices", scene->positions.size()},
                         {"true_lights", truth.size()}, {"found_lights", count}, {"repeat", repeat},
                         {"dbar_median", median(dbar)}, {"position_error_over_diagonal_median", median(pos_err)},
                         {"cold_seconds_median", median(cold)}, {"warm_seconds_median", median(warm)},
@@ -239,7 +239,7 @@ int run_bench_solve(const std::vector<std::string>& args, Registry& registry) {
   }
   // Does the light cache pay? The same solve with every φ from the renderer.
   if (!no_cache_figure) {
-    SolveSpec spec = bench_spec(cache_root, bounces, optimizers.front());
+    SolveSpec spec = bench_spec(run, optimizers.front());
     spec.cache = PluginDefaults::no_cache;
     SolveReport report;
     Lighting found = SolveSession(registry, spec, scene, rays).make_solver()->solve(target, report);

@@ -279,12 +279,12 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
   spec.cache = PluginDefaults::no_cache;
   SolveSession session(registry, spec, scene, rays);
   a.renderer.note_bounces(registry);
-  Renderer* const reference = &session.reference();
+  Renderer& reference = session.reference();
   PlacementRules rules = rules_to_local(a.placement, scene->frame);
   rules.resolve_room_names(scene_rooms(a.scene_path, rules, *rays));
   DesignReport report;
   stage.emplace("placing the luminaires");
-  const Lighting lights = design_in_scene(*reference, *scene, *rays, criteria, rules, *a.luminaire, a.design, report);
+  const Lighting lights = design_in_scene(reference, *scene, *rays, criteria, rules, *a.luminaire, a.design, report);
 
   stage.emplace("writing " + std::filesystem::path(a.output).filename().string());
   const Units units = parse_units(a.units_name);
@@ -330,7 +330,7 @@ int solve_for_criteria(const CriteriaSolve& a, Registry& registry) {
     page.scene = scene.get();
     page.rays = rays.get();
     page.title = a.scene_path + " — criteria " + a.target_path;
-    page.result = reference->illuminate(SurfacePoints::from_vertices(*scene), lights);
+    page.result = reference.illuminate(SurfacePoints::from_vertices(*scene), lights);
     page.lights = lights;
     page.report.seconds = report.seconds;
     page.units = a.units_name;

@@ -14,29 +14,19 @@
 // spot cannot take every sample.
 #include "hilight/error.hpp"
 #include "hilight/plugin.hpp"
+#include "hilight/point_grid.hpp"
 #include "hilight/version.hpp"
 #include "hilight/registry.hpp"
 #include "hilight/sampler.hpp"
 
 #include <cmath>
 #include <tbb/parallel_for.h>
-#include <unordered_map>
 
 namespace {
 
 using namespace hilight;
 
 float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
-/// Uniform hash grid over points, for neighbourhood means.
-struct PointGrid {
-  float cell;
-  std::unordered_map<uint64_t, std::vector<uint32_t>> cells;
-  static uint64_t key(int x, int y, int z) {
-    return (uint64_t(uint32_t(x) & 0x1FFFFF) << 42) | (uint64_t(uint32_t(y) & 0x1FFFFF) << 21) | uint64_t(uint32_t(z) & 0x1FFFFF);
-  }
-  glm::ivec3 coord(const Vec3& p) const { return glm::ivec3(glm::floor(p / cell)); }
-};
 
 class ImportanceSampler final : public Sampler {
 public:
@@ -51,11 +41,8 @@ public:
 private:
   std::vector<double> importance(const Target& target, float radius) const {
     const size_t n = target.size();
-    PointGrid grid{std::max(radius, 1e-6f), {}};
-    for (uint32_t i = 0; i < n; ++i) {
-      glm::ivec3 c = grid.coord(target.points.positions[i]);
-      grid.cells[PointGrid::key(c.x, c.y, c.z)].push_back(i);
-    }
+    PointGrid grid(std::max(radius, 1e-6f));
+    for (uint32_t i = 0; i < n; ++i) grid.add(target.points.positions[i], i);
     double mean_lum = 0, mean_square = 0;
     for (const auto& v : target.value) mean_lum += luminance(v), mean_square += double(luminance(v)) * luminance(v);
     mean_lum = std::max(1e-12, mean_lum / double(n));
@@ -66,24 +53,17 @@ private:
     // once into a flat list (in the order a point would visit them, so the
     // sums are the same to the bit). Each cell writes only its own points'
     // entries: parallel-safe and the same whatever the thread count.
-    std::vector<std::pair<glm::ivec3, const std::vector<uint32_t>*>> cells;
-    cells.reserve(grid.cells.size());
-    for (const auto& [key, members] : grid.cells) cells.emplace_back(grid.coord(target.points.positions[members.front()]), &members);
+    std::vector<const std::vector<uint32_t>*> cells;
+    cells.reserve(grid.cell_count());
+    grid.for_each_cell([&](const std::vector<uint32_t>& members) { cells.push_back(&members); });
     tbb::parallel_for(size_t(0), cells.size(), [&](size_t k) {
-      const glm::ivec3 c = cells[k].first;
       std::vector<Vec3> near_position;
       std::vector<float> near_luminance;
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            auto it = grid.cells.find(PointGrid::key(c.x + dx, c.y + dy, c.z + dz));
-            if (it == grid.cells.end()) continue;
-            for (uint32_t j : it->second) {
-              near_position.push_back(target.points.positions[j]);
-              near_luminance.push_back(luminance(target.value[j]));
-            }
-          }
-      for (uint32_t i : *cells[k].second) {
+      grid.for_each_near(target.points.positions[cells[k]->front()], [&](uint32_t j) {
+        near_position.push_back(target.points.positions[j]);
+        near_luminance.push_back(luminance(target.value[j]));
+      });
+      for (uint32_t i : *cells[k]) {
         const Vec3& p = target.points.positions[i];
         double sum = 0;
         int count = 0;

@@ -34,6 +34,12 @@ public:
         }
   }
 
+  /// f(indices) for each cell that holds points (in no particular order).
+  template <class F> void for_each_cell(F&& f) const {
+    for (const auto& [key, members] : m_cells) f(members);
+  }
+  size_t cell_count() const { return m_cells.size(); }
+
 private:
   float m_cell;
   std::unordered_map<uint64_t, std::vector<uint32_t>> m_cells;
