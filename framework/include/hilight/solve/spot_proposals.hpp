@@ -32,8 +32,10 @@ Fit propose_spots(const SampleSet& samples, const LightSpace& space, Renderer& r
 /// `lights` (spots and point lights, intensities fitted) settled as
 /// propose_spots settles its answer: Levenberg–Marquardt and a simplex over
 /// every light's geometry, the bounce of `reference` held and re-taken where
-/// they went, the best round kept (never worse than `lights`), and rounds
-/// without the bounce's spikes once they stall. The Fit's D̄: the best's at
+/// they went, the best round kept (never worse than `lights`), a round's
+/// lights carried on where the rounds head when that fits better
+/// (round_extrapolation.hpp), and rounds without the bounce's spikes once
+/// they stall. The Fit's D̄: the best's at
 /// the samples by that model, its bounce re-taken where it stands.
 Fit settle_lights(const SampleSet& samples, const LightSpace& space, Renderer& renderer, Renderer& reference, Lighting lights);
 
