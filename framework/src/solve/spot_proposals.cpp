@@ -54,8 +54,8 @@ constexpr int kSettleRounds = 12, kSettleSimplexEvaluations = 600;
 constexpr int kSettlePatience = 3;
 /// A D̄ the settling stops at: float renders of the same lights differ by
 /// ~10⁻⁷ of the target, so no round can show a gain below this (measured:
-/// the curved models' spot at 4.7·10⁻⁷ stood 10⁻⁷ of the size from the
-/// lamp, and four more rounds moved it by nothing).
+/// the curved models' spot at D̄ 4.7·10⁻⁷ stood 2·10⁻⁷ of the size from
+/// the lamp, and four more rounds moved it by nothing).
 constexpr double kSettledDbar = 1e-6;
 /// The simplex settles up to this many lights together. With more, its
 /// dimensions (7 a spot, 3 a point light) outgrow what
