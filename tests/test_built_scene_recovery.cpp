@@ -185,11 +185,11 @@ TEST_CASE("recovery: random key, fill and rim lights around a product, outside i
 }
 
 TEST_CASE("recovery: random key, fill and rim lights around a real product (the glTF engine), outside its bounds",
-          "[solve][built][recovery][real]") {
+          "[solve][built][recovery][real][slow]") {
   check_rate(recovery_trials(builders::engine_product, 700, 1, 3));
 }
 
-TEST_CASE("recovery: random spotlights over a stage, no hints", "[solve][built][recovery][spot]") {
+TEST_CASE("recovery: random spotlights over a stage, no hints", "[solve][built][recovery][spot][slow]") {
   check_rate(recovery_trials(builders::stage, 600, 2, 3));
 }
 
@@ -265,7 +265,7 @@ TEST_CASE("recovery sweep: 20 configurations a built scene (bench)", "[.][built-
   }
 }
 
-TEST_CASE("recovery: two lamps 0.44 m apart in one room of the building are found as two", "[solve][built][recovery][split]") {
+TEST_CASE("recovery: two lamps 0.44 m apart in one room of the building are found as two", "[solve][built][recovery][split][slow]") {
   // Seed 328 of the close-lamp sweep: 8 lamps, two of them 2.7% of the
   // diagonal apart; found as one (7 lights, D̄ 3.1%) until a poor fit tried
   // splitting its worst-explained light (Solver::split_lamps).

@@ -181,7 +181,7 @@ TEST_CASE("a solve exported as glTF opens in Blender with its lights where the s
   }
 }
 
-TEST_CASE("hilight finds the lights whose direct light Blender baked into vertex colours", "[gltf][blender][solve]") {
+TEST_CASE("hilight finds the lights whose direct light Blender baked into vertex colours", "[gltf][blender][solve][slow]") {
   if (!have_blender()) return;
   const auto dir = test::output_dir("gltf_blender_bake");
   for (uint64_t seed : {3, 4}) {

@@ -254,7 +254,7 @@ std::vector<glm::dmat3> seeded_turns(std::vector<uint64_t> any_axis) {
 } // namespace
 
 TEST_CASE("rotation: real models turned about the vertical or any axis solve and fine-tune to the same lights, turned",
-          "[invariance][rotation][solve][cli][real]") {
+          "[invariance][rotation][solve][cli][real][slow]") {
   if (skip_without_models()) return;
   const std::vector<glm::dmat3> turns = seeded_turns({19, 37});
   std::vector<Lighting> found, tuned;
@@ -275,7 +275,7 @@ TEST_CASE("rotation: real models turned about the vertical or any axis solve and
 }
 
 TEST_CASE("rotation and scale: with the bounce, real models turned at random and scaled by 1000 solve and fine-tune to the lights that made the target",
-          "[invariance][rotation][scale][solve][bounce][cli][real]") {
+          "[invariance][rotation][scale][solve][bounce][cli][real][slow]") {
   if (skip_without_models()) return;
   // The defaults (bounce, samples), on a seeded random turn, in millimetres
   // as a metre model exported in them would be (decimals: each coordinate

@@ -52,33 +52,36 @@ TEST_CASE("round extrapolation: steady rounds are carried to their fixed point",
   }
 }
 
+namespace {
+
+/// The guess after two plain rounds a → b → c, from a fresh RoundExtrapolation.
+std::optional<Lighting> guess_after(const Lighting& a, const Lighting& b, const Lighting& c) {
+  RoundExtrapolation extrapolation(10.f);
+  extrapolation.ahead(a, b);
+  return extrapolation.ahead(b, c);
+}
+
+} // namespace
+
 TEST_CASE("round extrapolation: rounds that turn, grow or change their lights are left alone", "[solve][extrapolation]") {
   const Lighting a = spot_and_lamp({1.f, 2.9f, 1.f}, {0.f, -1.f, 0.f}, 30.f, {3.f, 2.8f, 2.f});
   Lighting b = a, c = a;
   b[1].position.x += 0.1f;
   SECTION("a turn") {
     c = b, c[1].position.z += 0.1f;  // at right angles to the last step
-    RoundExtrapolation extrapolation(10.f);
-    extrapolation.ahead(a, b);
-    CHECK_FALSE(extrapolation.ahead(b, c));
+    CHECK_FALSE(guess_after(a, b, c));
   }
   SECTION("a step that grows") {
     c = b, c[1].position.x += 0.2f;
-    RoundExtrapolation extrapolation(10.f);
-    extrapolation.ahead(a, b);
-    CHECK_FALSE(extrapolation.ahead(b, c));
+    CHECK_FALSE(guess_after(a, b, c));
   }
   SECTION("a step back") {
     c = b, c[1].position.x -= 0.05f;
-    RoundExtrapolation extrapolation(10.f);
-    extrapolation.ahead(a, b);
-    CHECK_FALSE(extrapolation.ahead(b, c));
+    CHECK_FALSE(guess_after(a, b, c));
   }
   SECTION("other lights") {
     c = b, c[0].type = LightType::Point;
-    RoundExtrapolation extrapolation(10.f);
-    extrapolation.ahead(a, b);
-    CHECK_FALSE(extrapolation.ahead(b, c));
+    CHECK_FALSE(guess_after(a, b, c));
   }
   SECTION("a restart forgets the last step") {
     c = b, c[1].position.x += 0.05f;
@@ -92,9 +95,7 @@ TEST_CASE("round extrapolation: rounds that turn, grow or change their lights ar
   }
   SECTION("the furthest guess is ten steps") {
     c = b, c[1].position.x += 0.099f;  // r = 0.99
-    RoundExtrapolation extrapolation(10.f);
-    extrapolation.ahead(a, b);
-    const std::optional<Lighting> guess = extrapolation.ahead(b, c);
+    const std::optional<Lighting> guess = guess_after(a, b, c);
     REQUIRE(guess);
     CHECK(guess->at(1).position.x == Approx(b[1].position.x + 10 * 0.099f).epsilon(1e-5));
   }

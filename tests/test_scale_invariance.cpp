@@ -118,7 +118,7 @@ TEST_CASE("scale: real models scaled by 10^-3 to 10^3 render the same per-vertex
 // length or intensity in the solve: the lights are the same bit for bit.
 // At 10^3 the files' rounding (a different float for some coordinates)
 // sends the non-convex search to another local optimum: not asserted.
-TEST_CASE("scale: real models scaled by 2^10 and 2^-10 solve and fine-tune to the same lights, scaled", "[invariance][scale][solve][cli][real]") {
+TEST_CASE("scale: real models scaled by 2^10 and 2^-10 solve and fine-tune to the same lights, scaled", "[invariance][scale][solve][cli][real][slow]") {
   if (skip_without_models()) return;
   const fs::path dir = test::output_dir("scale_solve");
   const double scales[] = {1.0, 1024.0, 1.0 / 1024.0};

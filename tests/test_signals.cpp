@@ -66,7 +66,7 @@ TEST_CASE("Ctrl-C or TERM during a render leaves each output whole or absent, an
   interrupt_across("signal_render_term", args, {"out.ply", "out.png", "out.exr"}, SIGTERM, 4);
 }
 
-TEST_CASE("Ctrl-C during a solve and its light cache build leaves the lights, report and cache whole or absent", "[signals][cli]") {
+TEST_CASE("Ctrl-C during a solve and its light cache build leaves the lights, report and cache whole or absent", "[signals][cli][slow]") {
   const std::string room = std::string(HILIGHT_SOURCE_DIR) + "/scenes/room.obj";
   const fs::path target = test::output_dir("signal_solve_target") / "target.ply";
   REQUIRE(test::run_hilight({"render", room, "--lights", std::string(HILIGHT_SOURCE_DIR) + "/scenes/room-4lights.json", "-o",

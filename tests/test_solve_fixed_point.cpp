@@ -145,7 +145,7 @@ void check_fixed_points(const RealCase& c, const std::string& renderer, std::ini
 
 } // namespace
 
-TEST_CASE("fixed point: the IFC house's random ceiling lamps stay put under fine-tune (embree)", "[solve][fixed-point][real]") {
+TEST_CASE("fixed point: the IFC house's random ceiling lamps stay put under fine-tune (embree)", "[solve][fixed-point][real][slow]") {
   check_fixed_points(house_case(18), "embree");
 }
 
@@ -158,7 +158,7 @@ TEST_CASE("fixed point: the real furnished room's ceiling lamps stay put under f
 }
 
 TEST_CASE("fixed point with every bounce: the IFC house's lamps and the curved models' lights stay put (embree)",
-          "[solve][fixed-point][real][bounce]") {
+          "[solve][fixed-point][real][bounce][slow]") {
   // One with the light cache (its all-bounce responses), one without: both
   // pairs were measured at D̄ 0%; the four together take 2.7 min, the
   // house's cache build most of it, so the cache is checked on the curved models.

@@ -406,7 +406,7 @@ double embree_dbar(const Case& c, const fs::path& lights, const fs::path& dir) {
   return test::dbar(read_points(rendered).colour, read_points(c.target).colour);
 }
 
-TEST_CASE("a solve with --renderer ism-vulkan recovers the open scene's 2 lights", "[solve][recovery][ism]") {
+TEST_CASE("a solve with --renderer ism-vulkan recovers the open scene's 2 lights", "[solve][recovery][ism][slow]") {
   if (test::skip_without_renderer("ism-vulkan")) return;
   auto dir = test::output_dir("solve_recovery_ism_two_objects");
   Case c = make_case(dir, two_objects_scene().write(dir, "two-objects"), kTwoObjectsLights);
@@ -421,7 +421,7 @@ TEST_CASE("a solve with --renderer ism-vulkan recovers the open scene's 2 lights
   CHECK(mean_position_error(c.truth, s.lights) / c.diagonal <= kPositionTolerance);
 }
 
-TEST_CASE("a solve with --renderer ism-vulkan and a spot hint recovers the spot room's lights", "[solve][recovery][ism][spot]") {
+TEST_CASE("a solve with --renderer ism-vulkan and a spot hint recovers the spot room's lights", "[solve][recovery][ism][spot][slow]") {
   if (test::skip_without_renderer("ism-vulkan")) return;
   auto dir = test::output_dir("solve_recovery_ism_spot");
   // Direct light: the spot's cone and the point lamp as ism-vulkan draws
