@@ -34,11 +34,10 @@ namespace {
 constexpr double kReadsPerRay = 20.0;
 } // namespace
 
-double EmbreeRenderer::gather_rays(const SurfacePoints& points, bool bounce) {
+double EmbreeRenderer::gather_rays(const SurfacePoints& points, uint64_t key, bool bounce) {
   if (!bounce) return 0.0;
   const double rays = double(points.size()) * m_settings.bounce_samples;
-  // Only a call that may be long pays for the key (a hash of the points).
-  return rays < CallProgress::kReported / 4 || m_gathers.contains(points.content_key()) ? 0.0 : rays;
+  return rays < CallProgress::kReported / 4 || m_gathers.contains(key) ? 0.0 : rays;
 }
 
 double EmbreeRenderer::further_rays(size_t lights, bool bounce) const {
@@ -50,9 +49,8 @@ double EmbreeRenderer::further_rays(size_t lights, bool bounce) const {
   return build + 2.0 * v * double(lights) + double(steps) * double(lights) * 2.0 * v * m_settings.transport_samples / kReadsPerRay;
 }
 
-std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoints& points, CallProgress* progress) {
-  auto origins = shading_points(points);
-  const uint64_t key = points.content_key();
+std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoints& points, uint64_t key, CallProgress* progress) {
+  auto origins = shading_points(points, key);
   return m_gathers.get(key, [&]() -> std::shared_ptr<const BounceGather> {
     const SharedGathers::Key shared{m_embree.get(), key, m_settings.bounce_samples, m_settings.seed};
     if (auto other = SharedGathers::find(shared)) return other;  // the same rays, cast by another renderer
@@ -66,8 +64,8 @@ std::shared_ptr<const BounceGather> EmbreeRenderer::gather_for(const SurfacePoin
   });
 }
 
-std::shared_ptr<const std::vector<ShadingPoint>> EmbreeRenderer::shading_points(const SurfacePoints& points) {
-  return m_shading_points.get(points.content_key(), [&] {
+std::shared_ptr<const std::vector<ShadingPoint>> EmbreeRenderer::shading_points(const SurfacePoints& points, uint64_t key) {
+  return m_shading_points.get(key, [&] {
     auto out = std::make_shared<std::vector<ShadingPoint>>(points.size());
     tbb::parallel_for(size_t(0), points.size(),
                       [&](size_t i) { (*out)[i] = shading_point(*m_embree, points.positions[i], points.normals[i]); });
@@ -174,11 +172,14 @@ void EmbreeRenderer::for_each_response(const SurfacePoints& points, std::span<co
   // The call's ray casts, for its progress: the gather (unless kept), the
   // further bounces' transport for each group, the points' own rays.
   const bool bounce = m_settings.bounces != 0 && transport != Transport::DirectOnly;
-  double rays = gather_rays(points, bounce) + double(points.size()) * double(lights.size()) * point_rays(transport);
+  // The point set's key (a hash of its contents) once a call: it finds the
+  // gather, the shading points and the visibility memo kept for it.
+  const uint64_t key = points.content_key();
+  double rays = gather_rays(points, key, bounce) + double(points.size()) * double(lights.size()) * point_rays(transport);
   for (size_t j0 = 0; j0 < lights.size(); j0 += group) rays += further_rays(std::min(group, lights.size() - j0), bounce);
   CallProgress progress(rays);
   for (size_t j0 = 0; j0 < lights.size(); j0 += group)
-    for_each_response_group(points, lights.subspan(j0, std::min(group, lights.size() - j0)), transport,
+    for_each_response_group(points, key, lights.subspan(j0, std::min(group, lights.size() - j0)), transport,
                             [&](size_t i, size_t j, const Rgb& r) { visit(i, j0 + j, r); }, &progress);
 }
 
@@ -189,12 +190,12 @@ double EmbreeRenderer::point_rays(Transport transport) const {
 }
 
 template <class Visit>
-void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::span<const Light> lights, Transport transport,
+void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, uint64_t key, std::span<const Light> lights, Transport transport,
                                              Visit&& visit, CallProgress* progress) {
   std::vector<PreparedLight> prepared(lights.begin(), lights.end());
   const bool want_direct = transport != Transport::IndirectOnly;
   std::shared_ptr<const BounceGather> gather_owner;
-  if (m_settings.bounces != 0 && transport != Transport::DirectOnly) gather_owner = gather_for(points, progress);
+  if (m_settings.bounces != 0 && transport != Transport::DirectOnly) gather_owner = gather_for(points, key, progress);
   const BounceGather* gather = gather_owner.get();
   std::vector<float> vertex_direct;
   std::vector<Rgb> bounced;  // the light bounced once or more, at the vertices (more than one bounce)
@@ -204,7 +205,7 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
     if (bounced.empty() && m_settings.vertex_interpolated_bounce) vertex_direct = vertex_direct_irradiance(prepared, direct_read);
   }
   const size_t v_count = m_scene->positions.size();
-  auto shading_owner = want_direct || gather ? shading_points(points) : nullptr;
+  auto shading_owner = want_direct || gather ? shading_points(points, key) : nullptr;
   const std::vector<HotSpots> hot = gather ? hot_spots_of(prepared) : std::vector<HotSpots>();
   tbb::combinable<uint64_t> rays([] { return uint64_t(0); });
   // Points in chunks, lights inside: neighbouring points' rays toward one
@@ -251,9 +252,8 @@ void EmbreeRenderer::for_each_response_group(const SurfacePoints& points, std::s
   // Which points see each point-like light's place, kept across calls.
   std::vector<std::shared_ptr<VisibilityMemo::Answers>> sees(l_count);
   if (want_direct) {
-    const uint64_t points_key = points.content_key();
     for (size_t j = 0; j < l_count; ++j)
-      if (!prepared[j].extended()) sees[j] = m_visibility.get(points_key, points.size(), prepared[j].position);
+      if (!prepared[j].extended()) sees[j] = m_visibility.get(key, points.size(), prepared[j].position);
   }
   std::vector<const HotSpots*> hot_of(l_count, nullptr);
   for (size_t j = 0; j < hot.size(); ++j) hot_of[j] = &hot[j];
@@ -340,10 +340,11 @@ Image EmbreeRenderer::render_image(const Camera& camera, std::span<const Light> 
   const SurfacePoints vertices = bounce ? SurfacePoints::from_vertices(scene) : SurfacePoints();
   const double light_count = double(prepared.size()), pixel_rays = double(width) * height * (1.0 + light_count),
                vertex_rays = bounce ? double(vertices.size()) * light_count * m_settings.bounce_samples : 0.0;
+  const uint64_t vertices_key = bounce ? vertices.content_key() : 0;
   CallProgress progress(
-                        gather_rays(vertices, bounce) + further_rays(prepared.size(), bounce) + vertex_rays + pixel_rays);
+                        gather_rays(vertices, vertices_key, bounce) + further_rays(prepared.size(), bounce) + vertex_rays + pixel_rays);
   if (bounce) {
-    auto gather_owner = gather_for(vertices, &progress);
+    auto gather_owner = gather_for(vertices, vertices_key, &progress);
     const BounceGather& gather = *gather_owner;
     const std::vector<HotSpots> hot = hot_spots_of(prepared);
     std::vector<float> unused;
@@ -415,7 +416,7 @@ std::vector<std::pair<std::string, double>> EmbreeRenderer::baseline_figures(con
   std::vector<Segment> segments;
   segments.reserve(points.size() * lights.size());
   const float eps = m_embree->epsilon();
-  const auto shading = shading_points(points);  // where unit_responses starts its rays
+  const auto shading = shading_points(points, points.content_key());  // where unit_responses starts its rays
   for (size_t i0 = 0; i0 < points.size(); i0 += 32)
     for (const auto& light : prepared)
       for (size_t i = i0; i < std::min(points.size(), i0 + 32); ++i) {

@@ -99,23 +99,23 @@ public:
                                                                std::span<const Light> lights) override;
 
 private:
-  /// The gather for `points`, reused while the same point set comes back.
-  std::shared_ptr<const BounceGather> gather_for(const SurfacePoints& points, CallProgress* progress = nullptr);
+  /// The gather for `points` (`key`: their content_key()), reused while the same point set comes back.
+  std::shared_ptr<const BounceGather> gather_for(const SurfacePoints& points, uint64_t key, CallProgress* progress = nullptr);
   /// Ray casts of the phases of a call over `points` (a light cache's
   /// blocks, a whole scene's vertices): what its progress is measured in.
-  double gather_rays(const SurfacePoints& points, bool bounce) ;
+  double gather_rays(const SurfacePoints& points, uint64_t key, bool bounce);
   double further_rays(size_t lights, bool bounce) const;
   /// Ray casts per point and light of the final loop.
   double point_rays(Transport transport) const;
   /// Where each point is shaded (hilight::shading_point), per point set.
-  std::shared_ptr<const std::vector<ShadingPoint>> shading_points(const SurfacePoints& points);
+  std::shared_ptr<const std::vector<ShadingPoint>> shading_points(const SurfacePoints& points, uint64_t key);
   /// Calls visit(i, j, unit RGB response) for every point i and light j, in
   /// parallel over points; lights in groups whose bounced fields fit in memory.
   static constexpr size_t kMaxGroup = 64;  ///< lights transported together at most (for_each_response)
   template <class Visit>
   void for_each_response(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Visit&& visit);
   template <class Visit>
-  void for_each_response_group(const SurfacePoints& points, std::span<const Light> lights, Transport transport, Visit&& visit,
+  void for_each_response_group(const SurfacePoints& points, uint64_t key, std::span<const Light> lights, Transport transport, Visit&& visit,
                                CallProgress* progress);
   /// The operator of the bounces after the first (null at 0 or 1 bounce), built once.
   const MultiBounce* multi_bounce(CallProgress* progress = nullptr);
