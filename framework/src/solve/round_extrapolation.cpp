@@ -13,7 +13,7 @@ namespace {
 /// The steps must agree this well in direction (cosine) to be one
 /// iteration's shrinking steps and not a turn or noise.
 constexpr double kSameWay = 0.5;
-/// The furthest guess, in steps: r = 0.9 is ten steps on; a steadier ratio
+/// The furthest guess, in steps (r = 0.9 is ten steps on): a ratio nearer 1
 /// is more likely the bounce's roughness than a slow valley.
 constexpr double kMostSteps = 10.0;
 
@@ -74,7 +74,7 @@ std::optional<Lighting> RoundExtrapolation::ahead(const Lighting& from, const Li
   if (last.size() != step.size()) return std::nullopt;
   const double ll = dot(last, last), ss = dot(step, step), ls = dot(last, step);
   if (!(ll > 0.0) || !(ss > 0.0) || ls < kSameWay * std::sqrt(ll * ss)) return std::nullopt;
-  const double r = ls / ll;
+  const double r = ls / ll;  // the step along the last one, as a share of it
   if (!(r < 1.0)) return std::nullopt;
   const double factor = std::min(1.0 / (1.0 - r), kMostSteps);
   if (!(factor > 1.0 + 1e-6)) return std::nullopt;
