@@ -224,7 +224,7 @@ struct Model {
       Lighting next = refine_spots(lights, estimate, despiked ? *despiked : samples, space, renderer, {}, 0, settings).lights;
       moved = !same_geometry(next, lights);
       if (moved)
-        if (std::optional<Lighting> guess = extrapolation.ahead(lights, next); guess && placed(*guess)) {
+        if (std::optional<Lighting> guess = extrapolation.ahead(lights, next); guess && place_within_bounds(space, *guess)) {
           plain = std::move(next), next = std::move(*guess);
           extrapolation.restart();  // the next step starts from the guess or the plain round, not from `next`
         }
@@ -232,18 +232,6 @@ struct Model {
     }
     if (bounce) *bounce = std::move(best_bounce);
     return {std::move(best), best_dbar};
-  }
-
-  /// `lights` where the placement rules put them; false if one may not stand there.
-  bool placed(Lighting& lights) const {
-    const Bounds& box = space.light_bounds();
-    const Vec3 inset = 1e-4f * box.extent();
-    for (Light& l : lights) {
-      const std::optional<Vec3> at = space.place(glm::clamp(l.position, box.lo + inset, box.hi - inset));
-      if (!at || !space.admissible(*at)) return false;
-      l.position = *at;
-    }
-    return true;
   }
 
   /// D̄ of lights with responses `phi` (n of them), intensities by NNLS

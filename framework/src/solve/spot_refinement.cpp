@@ -197,18 +197,7 @@ private:
   std::vector<Rgb> direct_of(const Lighting& lights) const {
     return m_renderer.unit_responses(m_samples.points, lights, Transport::DirectOnly);
   }
-  /// A step out of the light bounds is clamped back (the spot slides along
-  /// the bound instead of stopping there), then placed by the rules.
-  bool place(Lighting& lights) const {
-    const Bounds& box = m_space.light_bounds();
-    const Vec3 inset = 1e-4f * box.extent();
-    for (auto& l : lights) {
-      const auto at = m_space.place(glm::clamp(l.position, box.lo + inset, box.hi - inset));
-      if (!at || !m_space.admissible(*at)) return false;
-      l.position = *at;
-    }
-    return true;
-  }
+  bool place(Lighting& lights) const { return place_within_bounds(m_space, lights); }
   /// Moves to `trial` if it is placeable and better.
   bool try_move(Lighting trial) {
     if (!place(trial)) return false;
@@ -231,6 +220,17 @@ private:
 };
 
 } // namespace
+
+bool place_within_bounds(const LightSpace& space, Lighting& lights) {
+  const Bounds& box = space.light_bounds();
+  const Vec3 inset = 1e-4f * box.extent();
+  for (auto& l : lights) {
+    const auto at = space.place(glm::clamp(l.position, box.lo + inset, box.hi - inset));
+    if (!at || !space.admissible(*at)) return false;
+    l.position = *at;
+  }
+  return true;
+}
 
 Fit refine_spots(const Lighting& spots, const std::vector<Rgb>& bounce, const SampleSet& samples, const LightSpace& space,
                  Renderer& renderer, const std::vector<Rgb>& base_phi, size_t base_count, const SpotRefineSettings& settings) {

@@ -48,6 +48,12 @@ struct SpotRefineSettings {
   double simplex_step = 10.0;
 };
 
+/// `lights` where a spot refinement's steps may put them: a step out of the
+/// light bounds clamped back a hair inside (the spot slides along the bound
+/// instead of stopping there), then placed by the rules; false if one may
+/// not stand there.
+bool place_within_bounds(const LightSpace& space, Lighting& lights);
+
 /// `spots` refined (never worse by the model below). The model at the
 /// samples: base lights (responses `base_phi`, `base_count` of them) plus
 /// each spot's traced direct light and its fixed unit `bounce` (light-major,
